@@ -1,0 +1,53 @@
+#pragma once
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+#include <initializer_list>
+
+namespace tt::cli {
+
+/// Thrown after `--help` was printed; the dispatcher exits 0.
+struct HelpShown {};
+
+/// QCommandLineParser for one sub-command, with the common `--json` and `--help` options and
+/// range-checked typed accessors. Every problem is a UsageError naming the option.
+class CommandParser {
+public:
+    CommandParser(const QString& command, const QString& description);
+
+    void addOption(const QString& name, const QString& description, const QString& valueName = QString(),
+                   const QString& defaultValue = QString());
+    void addPositional(const QString& name, const QString& description);
+
+    /// Parses the arguments after the command name; prints help and throws HelpShown on --help.
+    void parse(const QStringList& arguments);
+
+    bool isSet(const QString& name) const;
+    bool json() const { return isSet(QStringLiteral("json")); }
+    QString value(const QString& name) const;
+    /// The value, which must be given.
+    QString required(const QString& name) const;
+    /// Integer in [minValue, maxValue].
+    long long integer(const QString& name, long long minValue, long long maxValue) const;
+    /// Finite number in [minValue, maxValue].
+    double number(const QString& name, double minValue, double maxValue) const;
+    /// One of `choices`.
+    QString choice(const QString& name, const QStringList& choices) const;
+    /// The positional arguments; exactly `count` of them are required.
+    QStringList positionals(int count) const;
+
+private:
+    QString m_command;
+    QCommandLineParser m_parser;
+    QStringList m_positionalNames;
+};
+
+/// Writes `object` as indented JSON on stdout.
+void printJson(const QJsonObject& object);
+/// Writes a line on stdout.
+void printLine(const QString& line);
+
+}  // namespace tt::cli

@@ -1,0 +1,81 @@
+#include "app/gui.h"
+
+#include <trueturn/version.h>
+#include <QApplication>
+#include <QDir>
+#include <QTimer>
+#include <cstdio>
+
+#include "app/gui_options.h"
+#include "core/storage/database_location.h"
+#include "ui/app_state.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/prompt.h"
+#include "ui/style.h"
+
+namespace tt::app {
+
+namespace {
+
+bool haveDisplay() {
+    return !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY") ||
+           !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+}
+
+/// Grabs every page of the window into `dir` as <page>.png; returns the number written.
+int saveScreenshots(ui::MainWindow& window, const QString& dir) {
+    QDir().mkpath(dir);
+    int written = 0;
+    for (ui::Page* page : window.pages()) {
+        window.showPage(page->id());
+        QCoreApplication::processEvents();
+        const QString file = QDir(dir).filePath(ui::pageKey(page->id()) + QStringLiteral(".png"));
+        if (window.grab().save(file)) ++written;
+    }
+    return written;
+}
+
+}  // namespace
+
+int runGui(int argc, char** argv) {
+    const GuiParse parsed = parseGuiOptions(argc, argv);
+    if (!parsed.options) return parsed.exitCode;
+    const GuiOptions& options = *parsed.options;
+    if (!haveDisplay()) {
+        std::fprintf(stderr,
+                     "trueturn: no display (DISPLAY is not set). Run a headless command such as "
+                     "'trueturn simulate', or set QT_QPA_PLATFORM=offscreen.\n");
+        return 1;
+    }
+    QApplication app(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("TrueTurn"));
+    QApplication::setApplicationName(QStringLiteral("TrueTurn"));
+    QApplication::setApplicationVersion(QString::fromLatin1(tt::kVersion));
+    ui::applyOperatorStyle(app);
+
+    ui::LanguageSwitcher language;
+    if (options.language.isEmpty())
+        language.applySaved();
+    else
+        language.apply(options.language);
+
+    ui::AppState state;
+    ui::DialogPrompt prompt;
+    ui::AppContext context{&prompt, &state, &language,
+                           options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath};
+    ui::MainWindow window(context);
+    for (ui::PageId id : ui::kAllPages)
+        if (ui::pageKey(id) == options.page) window.showPage(id);
+    window.show();
+
+    if (!options.screenshotDir.isEmpty()) {
+        const int written = saveScreenshots(window, options.screenshotDir);
+        std::printf("trueturn: %d page screenshots written to %s\n", written, qPrintable(options.screenshotDir));
+        return written == static_cast<int>(window.pages().size()) ? 0 : 1;
+    }
+    if (options.quitAfterMs >= 0) QTimer::singleShot(options.quitAfterMs, &app, &QCoreApplication::quit);
+    return QApplication::exec();
+}
+
+}  // namespace tt::app

@@ -1,0 +1,3 @@
+# Sources of core/calibration, compiled into trueturn_core.
+target_sources(trueturn_core PRIVATE
+)

@@ -1,0 +1,4 @@
+# Sources of core/common, compiled into trueturn_core.
+target_sources(trueturn_core PRIVATE
+    common/crc16.cpp
+)

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Installs the Debian packages TrueTurn needs to build, test and run.
+# Used by ./run.sh and ./test.sh; safe to run repeatedly (installs only what is missing).
+# Usage: scripts/install-deps.sh [--with-test-tools]
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build pkg-config ccache
+    qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
+    libqt6sql6-sqlite libqt6sql6-psql qt6-serialport-dev qt6-serialbus-dev libqt6svg6
+    qt6-qpa-plugins libgl-dev fonts-dejavu-core
+    libeigen3-dev libqcustomplot-dev libboost-dev
+)
+test_packages=(
+    googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
+    clang libclang-rt-14-dev postgresql
+)
+if [[ "${1:-}" == "--with-test-tools" ]]; then
+    packages+=("${test_packages[@]}")
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+    [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+    echo "install-deps: all ${#packages[@]} packages present"
+    exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+if [[ $(id -u) -eq 0 ]]; then
+    sudo_cmd=()
+elif command -v sudo >/dev/null; then
+    sudo_cmd=(sudo)
+else
+    echo "install-deps: missing packages (${missing[*]}) and neither root nor sudo is available" >&2
+    exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

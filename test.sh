@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds everything (Release, warnings as errors) and runs every test
+# with the offscreen Qt platform. Exits non-zero on any failure.
+set -euo pipefail
+cd "$(dirname "$0")"
+started=$(date +%s)
+
+scripts/install-deps.sh --with-test-tools
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DTRUETURN_BUILD_TESTS=ON -DTRUETURN_BUILD_BENCHMARKS=ON -DTRUETURN_WERROR=ON
+cmake --build build -j "$(nproc)"
+
+export QT_QPA_PLATFORM=offscreen
+ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600
+
+echo "test.sh: all tests passed in $(( $(date +%s) - started )) s"

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QString>
+#include <QStringList>
+
+namespace tt::test {
+
+/// What a run of the `trueturn` binary produced.
+struct CliResult {
+    int exitCode = -1;
+    QString out;
+    QString err;
+
+    /// stdout parsed as a JSON object (empty when it is not one).
+    QJsonObject json() const { return QJsonDocument::fromJson(out.toUtf8()).object(); }
+};
+
+/// Runs `trueturn args...` headless (no display) and waits up to `timeoutMs`.
+inline CliResult runTrueturn(const QStringList& args, int timeoutMs = 120000) {
+    QProcess process;
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.remove(QStringLiteral("DISPLAY"));
+    env.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    process.setProcessEnvironment(env);
+    process.start(QStringLiteral(TRUETURN_EXE), args);
+    process.waitForFinished(timeoutMs);
+    CliResult r;
+    r.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    r.out = QString::fromUtf8(process.readAllStandardOutput());
+    r.err = QString::fromUtf8(process.readAllStandardError());
+    return r;
+}
+
+}  // namespace tt::test

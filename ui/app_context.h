@@ -1,0 +1,20 @@
+#pragma once
+
+#include <QString>
+
+namespace tt::ui {
+
+class AppState;
+class Prompt;
+class LanguageSwitcher;
+
+/// The services every page receives from the application (wired in app/main.cpp or a test):
+/// the prompt for dialogs, the shared machine state, and where history is stored.
+struct AppContext {
+    Prompt* prompt = nullptr;
+    AppState* state = nullptr;
+    LanguageSwitcher* language = nullptr;
+    QString databasePath;  ///< SQLite file (or PostgreSQL connection name) of the run history
+};
+
+}  // namespace tt::ui

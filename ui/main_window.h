@@ -1,0 +1,66 @@
+#pragma once
+
+#include <QList>
+#include <QMainWindow>
+
+#include "ui/app_context.h"
+#include "ui/page.h"
+
+class QAction;
+class QButtonGroup;
+class QLabel;
+class QMenu;
+class QStackedWidget;
+class QToolButton;
+
+namespace tt::ui {
+
+/// The operator terminal's main window: a navigation rail of large buttons on the left, a header
+/// with the page title and the loop and device badges, the pages, and a status bar.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(AppContext& context, QWidget* parent = nullptr);
+
+    void showPage(PageId id);
+    PageId currentPage() const;
+    Page* page(PageId id) const;
+    const QList<Page*>& pages() const { return m_pages; }
+
+    /// The About box (version, what TrueTurn does), through the prompt.
+    void showAbout();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    QWidget* buildNavigation();
+    QWidget* buildHeader();
+    void buildStatusBar();
+    void buildMenus();
+    void retranslate();
+    void updateLoopState();
+    void updateDeviceState();
+    void updateDatabase();
+
+    AppContext& m_context;
+    QList<Page*> m_pages;
+    QList<QToolButton*> m_navButtons;
+    QButtonGroup* m_navGroup = nullptr;
+    QStackedWidget* m_stack = nullptr;
+    QLabel* m_pageTitle = nullptr;
+    QLabel* m_loopBadge = nullptr;
+    QLabel* m_deviceBadge = nullptr;
+    QLabel* m_statusLoop = nullptr;
+    QLabel* m_statusDevices = nullptr;
+    QLabel* m_statusDatabase = nullptr;
+    QMenu* m_fileMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QMenu* m_languageMenu = nullptr;
+    QMenu* m_helpMenu = nullptr;
+    QAction* m_quitAction = nullptr;
+    QAction* m_aboutAction = nullptr;
+    QList<QAction*> m_languageActions;
+};
+
+}  // namespace tt::ui

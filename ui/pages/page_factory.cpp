@@ -1,0 +1,17 @@
+#include "ui/pages/page_factory.h"
+
+#include "ui/pages/planned_page.h"
+#include "ui/pages/settings_page.h"
+
+namespace tt::ui {
+
+Page* createPage(PageId id, AppContext& context, QWidget* parent) {
+    switch (id) {
+        case PageId::Settings:
+            return new SettingsPage(context, parent);
+        default:
+            return new PlannedPage(id, context, parent);
+    }
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <QWidget>
+#include <vector>
+
+class QCustomPlot;
+
+namespace tt::ui {
+
+/// A technical x-y chart for the operator pages. All plotting goes through this class so the
+/// plotting library (QCustomPlot today) stays behind ui/plot and can be replaced.
+class Chart : public QWidget {
+    Q_OBJECT
+public:
+    /// How a series is drawn.
+    enum class Style { Line, Points, LineAndPoints, Steps };
+
+    explicit Chart(QWidget* parent = nullptr);
+
+    void setTitle(const QString& title);
+    void setAxisTitles(const QString& x, const QString& y);
+
+    /// Creates or replaces the series `key` (legend shows `label`). xs and ys have equal length.
+    void setSeries(const QString& key, const QString& label, const std::vector<double>& xs,
+                   const std::vector<double>& ys, const QColor& color, Style style = Style::Line);
+    /// A shaded band between `lower` and `upper` (tolerance band, prediction band).
+    void setBand(const QString& key, const QString& label, const std::vector<double>& xs,
+                 const std::vector<double>& lower, const std::vector<double>& upper, const QColor& color);
+    void removeSeries(const QString& key);
+    void clear();
+
+    /// Number of data points of series `key` (0 when absent); for tests and empty-state logic.
+    int pointCount(const QString& key) const;
+    /// Fits the axes to the data with a small margin; `includeZeroY` keeps y = 0 visible.
+    void rescale(bool includeZeroY = true);
+    void setXRange(double lower, double upper);
+    void setYRange(double lower, double upper);
+    /// Redraws (queued; cheap to call often).
+    void refresh();
+    /// Writes the chart as PNG; false when the file cannot be written.
+    bool savePng(const QString& path, int width = 0, int height = 0);
+
+private:
+    int graphIndex(const QString& key) const;
+
+    QCustomPlot* m_plot;
+};
+
+}  // namespace tt::ui
