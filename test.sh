@@ -8,8 +8,12 @@ started=$(date +%s)
 scripts/install-deps.sh --with-test-tools
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DTRUETURN_BUILD_TESTS=ON -DTRUETURN_BUILD_BENCHMARKS=ON -DTRUETURN_WERROR=ON
+    -DTRUETURN_BUILD_TESTS=ON -DTRUETURN_BUILD_BENCHMARKS=ON -DTRUETURN_WERROR=ON -DTRUETURN_POSTGRES_TESTS=ON
 cmake --build build -j "$(nproc)"
+
+# A real PostgreSQL server for the storage tests, on 127.0.0.1 only, stopped on exit.
+eval "$(scripts/start-test-postgres.sh build/pg 55432)"
+trap 'scripts/start-test-postgres.sh --stop build/pg' EXIT
 
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600

@@ -1,0 +1,212 @@
+#include "core/storage/database.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+#include <QSqlError>
+#include <QUrl>
+#include <QUuid>
+
+namespace tt::storage {
+
+namespace {
+
+QString sqlError(const QSqlError& error) {
+    const QString text = error.databaseText().isEmpty() ? error.text() : error.databaseText();
+    return text.trimmed();
+}
+
+}  // namespace
+
+DatabaseConfig DatabaseConfig::sqlite(const QString& path) {
+    DatabaseConfig c;
+    c.kind = Kind::Sqlite;
+    c.sqlitePath = path;
+    return c;
+}
+
+DatabaseConfig DatabaseConfig::postgresUrl(const QString& url) {
+    const QUrl u(url, QUrl::StrictMode);
+    if (!u.isValid() || (u.scheme() != u"postgresql" && u.scheme() != u"postgres") || u.path().size() < 2)
+        throw StorageError("'" + url.toStdString() + "' is not a PostgreSQL address like postgresql://user@host/db");
+    DatabaseConfig c;
+    c.kind = Kind::Postgres;
+    c.host = u.host();
+    c.port = u.port(5432);
+    c.databaseName = u.path().mid(1);
+    c.user = u.userName();
+    c.password = u.password();
+    return c;
+}
+
+QString DatabaseConfig::describe() const {
+    if (kind == Kind::Sqlite) return QStringLiteral("SQLite %1").arg(sqlitePath);
+    return QStringLiteral("PostgreSQL %1@%2:%3/%4").arg(user, host).arg(port).arg(databaseName);
+}
+
+Database::Database(const DatabaseConfig& config)
+    : m_config(config), m_connectionName(QStringLiteral("trueturn-") + QUuid::createUuid().toString()) {
+    if (config.kind == DatabaseConfig::Kind::Sqlite)
+        openSqlite();
+    else
+        openPostgres();
+    ensureVersionTable();
+}
+
+Database::~Database() {
+    {
+        QSqlDatabase db = QSqlDatabase::database(m_connectionName, false);
+        if (db.isOpen()) db.close();
+    }
+    QSqlDatabase::removeDatabase(m_connectionName);
+}
+
+QSqlDatabase Database::connection() const {
+    return QSqlDatabase::database(m_connectionName, false);
+}
+
+void Database::openSqlite() {
+    if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QSQLITE")))
+        throw StorageError("the SQLite driver of Qt is not installed (package libqt6sql6-sqlite)");
+    const QFileInfo file(m_config.sqlitePath);
+    if (file.exists() && !file.isWritable())
+        throw StorageError("the history file '" + m_config.sqlitePath.toStdString() + "' is read-only");
+    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_connectionName);
+    db.setDatabaseName(m_config.sqlitePath);
+    if (!db.open())
+        throw StorageError("cannot open the history file '" + m_config.sqlitePath.toStdString() +
+                           "': " + sqlError(db.lastError()).toStdString());
+    configureSqlite();
+}
+
+void Database::configureSqlite() {
+    // The first statements read the file header: a damaged or foreign file fails here, before
+    // anything is written to it.
+    QSqlQuery check(connection());
+    if (!check.exec(QStringLiteral("PRAGMA quick_check")) || !check.next() || check.value(0).toString() != u"ok") {
+        const QString why = check.lastError().isValid() ? sqlError(check.lastError()) : check.value(0).toString();
+        throw StorageError("the history file '" + m_config.sqlitePath.toStdString() +
+                           "' is damaged or not a TrueTurn database (" + why.toStdString() +
+                           "); it was left untouched");
+    }
+    check.finish();  // an active statement holds a read transaction; WAL cannot be switched on inside one
+    for (const char* pragma : {"PRAGMA journal_mode=WAL", "PRAGMA foreign_keys=ON", "PRAGMA synchronous=NORMAL",
+                               "PRAGMA busy_timeout=5000"}) {
+        QSqlQuery q(connection());
+        if (!q.exec(QString::fromLatin1(pragma)))
+            throw StorageError("cannot configure the history file: " + sqlError(q.lastError()).toStdString());
+    }
+}
+
+void Database::openPostgres() {
+    if (!QSqlDatabase::isDriverAvailable(QStringLiteral("QPSQL")))
+        throw StorageError("the PostgreSQL driver of Qt is not installed (package libqt6sql6-psql)");
+    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QPSQL"), m_connectionName);
+    db.setHostName(m_config.host);
+    db.setPort(m_config.port);
+    db.setDatabaseName(m_config.databaseName);
+    db.setUserName(m_config.user);
+    db.setPassword(m_config.password);
+    db.setConnectOptions(QStringLiteral("connect_timeout=5"));
+    if (!db.open())
+        throw StorageError("cannot connect to " + m_config.describe().toStdString() + ": " +
+                           sqlError(db.lastError()).toStdString());
+}
+
+void Database::ensureVersionTable() {
+    exec(
+        QStringLiteral("CREATE TABLE IF NOT EXISTS schema_versions ("
+                       " module TEXT NOT NULL, version INTEGER NOT NULL, description TEXT NOT NULL,"
+                       " applied_at TEXT NOT NULL, PRIMARY KEY (module, version))"));
+}
+
+QString Database::dialectSql(const QString& sql) const {
+    QString out = sql;
+    if (isPostgres()) {
+        out.replace(QStringLiteral("{pk}"), QStringLiteral("BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY"));
+        out.replace(QStringLiteral("{real}"), QStringLiteral("DOUBLE PRECISION"));
+        out.replace(QStringLiteral("{blob}"), QStringLiteral("BYTEA"));
+    } else {
+        out.replace(QStringLiteral("{pk}"), QStringLiteral("INTEGER PRIMARY KEY AUTOINCREMENT"));
+        out.replace(QStringLiteral("{real}"), QStringLiteral("REAL"));
+        out.replace(QStringLiteral("{blob}"), QStringLiteral("BLOB"));
+    }
+    out.replace(QStringLiteral("{bigint}"), QStringLiteral("BIGINT"));
+    return out;
+}
+
+QSqlQuery Database::exec(const QString& sql, const QVariantList& bindings) {
+    QSqlQuery query(connection());
+    const QString statement = dialectSql(sql);
+    // PostgreSQL cannot PREPARE DDL: statements without bindings run directly.
+    bool ok = false;
+    if (bindings.isEmpty()) {
+        ok = query.exec(statement);
+    } else if (query.prepare(statement)) {
+        for (const QVariant& value : bindings)
+            query.addBindValue(value);
+        ok = query.exec();
+    }
+    if (!ok)
+        throw StorageError("database statement failed: " + sqlError(query.lastError()).toStdString() + " [" +
+                           statement.left(80).toStdString() + "]");
+    return query;
+}
+
+qint64 Database::lastInsertId(QSqlQuery& query) {
+    if (isPostgres()) {
+        QSqlQuery q = exec(QStringLiteral("SELECT lastval()"));
+        if (q.next()) return q.value(0).toLongLong();
+        throw StorageError("the database did not report the new row's id");
+    }
+    const QVariant id = query.lastInsertId();
+    if (!id.isValid()) throw StorageError("the database did not report the new row's id");
+    return id.toLongLong();
+}
+
+void Database::transaction(const std::function<void()>& work) {
+    if (m_transactionDepth > 0) {
+        work();
+        return;
+    }
+    QSqlDatabase db = connection();
+    if (!db.transaction()) throw StorageError("cannot start a transaction: " + sqlError(db.lastError()).toStdString());
+    ++m_transactionDepth;
+    try {
+        work();
+    } catch (...) {
+        --m_transactionDepth;
+        db.rollback();
+        throw;
+    }
+    --m_transactionDepth;
+    if (!db.commit()) {
+        const QString why = sqlError(db.lastError());
+        db.rollback();
+        throw StorageError("cannot save to the database: " + why.toStdString());
+    }
+}
+
+int Database::schemaVersion(const QString& module) {
+    QSqlQuery q = exec(QStringLiteral("SELECT MAX(version) FROM schema_versions WHERE module = ?"), {module});
+    return q.next() && !q.value(0).isNull() ? q.value(0).toInt() : 0;
+}
+
+void Database::migrate(const SchemaModule& module) {
+    const int current = schemaVersion(module.name);
+    const int known = module.migrations.empty() ? 0 : module.migrations.back().version;
+    if (current > known)
+        throw StorageError("the database holds '" + module.name.toStdString() + "' schema version " +
+                           std::to_string(current) + ", newer than this TrueTurn knows (" + std::to_string(known) +
+                           "); update TrueTurn — the data was left untouched");
+    for (const Migration& m : module.migrations) {
+        if (m.version <= current) continue;
+        transaction([&] {
+            m.apply(*this);
+            exec(QStringLiteral("INSERT INTO schema_versions (module, version, description, applied_at) "
+                                "VALUES (?, ?, ?, ?)"),
+                 {module.name, m.version, m.description, QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs)});
+        });
+    }
+}
+
+}  // namespace tt::storage
