@@ -12,8 +12,9 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
 cmake --build build -j "$(nproc)"
 
 # A real PostgreSQL server for the storage tests, on 127.0.0.1 only, stopped on exit.
-eval "$(scripts/start-test-postgres.sh build/pg 55432)"
-trap 'scripts/start-test-postgres.sh --stop build/pg' EXIT
+pg_dir=$(mktemp -d /tmp/trueturn-pg.XXXXXX)
+trap 'scripts/start-test-postgres.sh --stop "$pg_dir"; rm -rf "$pg_dir"' EXIT
+eval "$(scripts/start-test-postgres.sh "$pg_dir" 55432)"
 
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600
