@@ -1,3 +1,5 @@
 # Sources of core/model, compiled into trueturn_core.
 target_sources(trueturn_core PRIVATE
+    model/polynomial.cpp
+    model/systematic_error_model.cpp
 )

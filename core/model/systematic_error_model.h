@@ -1,7 +1,5 @@
 #pragma once
 
-#include <string>
-
 #include "core/model/polynomial.h"
 
 namespace tt::core {
