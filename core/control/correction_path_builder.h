@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/control/profile_interpolation.h"
-#include "core/model/polynomial.h"
+#include "core/model/scaled_polynomial.h"
 #include "core/ports/correction_output.h"
 
 namespace tt::core {
@@ -21,7 +21,7 @@ struct CorrectionPathRequest {
     InterpolationMethod method = InterpolationMethod::Pchip;
     /// Systematic DIAMETER error model d(z), mm, z in mm (Table 1 of paper 000). When given, the
     /// feed-forward y_ff(z) = -d(z)/2 is added (a diameter error d needs a radial move of -d/2).
-    std::optional<Polynomial> diameterErrorModel;
+    std::optional<ScaledPolynomial> diameterErrorModel;
     /// Part length, mm (> 0): the path is sampled on [0, partLengthMm].
     double partLengthMm = 0.0;
     /// Sampling step along z, mm (> 0); the last sample is always exactly partLengthMm.
@@ -44,7 +44,7 @@ public:
 
 private:
     std::optional<PiecewiseCubic> m_interpolant;
-    std::optional<Polynomial> m_feedForward;
+    std::optional<ScaledPolynomial> m_feedForward;
 };
 
 /// Samples y_set(z) on 0, step, 2 step, ..., partLengthMm into the X(z) path for the CNC.

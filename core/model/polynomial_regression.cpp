@@ -72,7 +72,7 @@ Eigen::MatrixXd vandermonde(const Eigen::VectorXd& x, int degree, double centre,
 
 }  // namespace
 
-RegressionPrediction PolynomialFit::predict(double x, double level) const {
+RegressionPrediction PolynomialRegression::predict(double x, double level) const {
     if (!(level > 0.0 && level < 1.0)) throw std::invalid_argument("the band level must lie strictly between 0 and 1");
     const double t = (x - polynomial.centre()) / polynomial.scale();
     Eigen::VectorXd v(degree + 1);
@@ -92,7 +92,7 @@ RegressionPrediction PolynomialFit::predict(double x, double level) const {
     return p;
 }
 
-PolynomialFit fitPolynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int degree) {
+PolynomialRegression fitPolynomialRegression(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int degree) {
     checkData(x, y);
     checkDegree(x, degree);
     const Eigen::Index n = x.size();
@@ -112,8 +112,8 @@ PolynomialFit fitPolynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     const Eigen::MatrixXd permutedRInverse = qr.colsPermutation() * rInverse;
     const Eigen::VectorXd leverage = (v * permutedRInverse).rowwise().squaredNorm();
 
-    PolynomialFit fit;
-    fit.polynomial = Polynomial(c, centre, scale);
+    PolynomialRegression fit;
+    fit.polynomial = ScaledPolynomial(c, centre, scale);
     fit.degree = degree;
     fit.pointCount = static_cast<int>(n);
     fit.residualDof = static_cast<int>(n) - p;
@@ -143,7 +143,7 @@ PolynomialFit fitPolynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
         fit.press += std::pow(residual(i) / (1.0 - leverage(i)), 2);
     }
 
-    const Eigen::MatrixXd toPower = Polynomial::scaledToPowerMap(degree, centre, scale);
+    const Eigen::MatrixXd toPower = ScaledPolynomial::scaledToPowerMap(degree, centre, scale);
     fit.coefficients = toPower * c;
     const Eigen::MatrixXd covariance =
         fit.residualSigma * fit.residualSigma * toPower * fit.scaledCovarianceFactor * toPower.transpose();
@@ -151,7 +151,7 @@ PolynomialFit fitPolynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, 
     return fit;
 }
 
-DegreeSelection fitPolynomialAutoDegree(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int maxDegree) {
+DegreeSelection fitPolynomialRegressionAutoDegree(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int maxDegree) {
     checkData(x, y);
     if (maxDegree < 1 || maxDegree > kMaxRegressionDegree)
         throw std::invalid_argument("the highest degree to try must be 1 .. " + std::to_string(kMaxRegressionDegree));
@@ -167,7 +167,7 @@ DegreeSelection fitPolynomialAutoDegree(const Eigen::VectorXd& x, const Eigen::V
     for (int degree = 1; degree <= maxDegree; ++degree) {
         DegreeCandidate candidate{degree, kInfinity};
         try {
-            candidate.press = fitPolynomial(x, y, degree).press;
+            candidate.press = fitPolynomialRegression(x, y, degree).press;
         } catch (const std::invalid_argument&) {
             // the data cannot support this degree: it stays a candidate with infinite PRESS
         }
@@ -180,7 +180,7 @@ DegreeSelection fitPolynomialAutoDegree(const Eigen::VectorXd& x, const Eigen::V
     if (best == 0)
         throw std::invalid_argument(
             "leave-one-out cross-validation needs more points at different positions; choose the degree explicitly");
-    selection.fit = fitPolynomial(x, y, best);
+    selection.fit = fitPolynomialRegression(x, y, best);
     return selection;
 }
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "core/model/polynomial.h"
+#include "core/model/scaled_polynomial.h"
 
 namespace tt::core {
 
@@ -21,8 +21,8 @@ struct RegressionPrediction {
 
 /// Least-squares polynomial fit of y along x with its regression statistics (paper 000, eq. (1),
 /// Table 1: R^2, F against the tabulated F, residual sigma).
-struct PolynomialFit {
-    Polynomial polynomial;                 ///< the fitted model (stored centred and scaled)
+struct PolynomialRegression {
+    ScaledPolynomial polynomial;           ///< the fitted model (stored centred and scaled)
     int degree = 0;                        ///< D
     int pointCount = 0;                    ///< n
     int residualDof = 0;                   ///< n - D - 1
@@ -51,7 +51,7 @@ struct PolynomialFit {
 /// Needs at least degree+2 points (so the residual scatter can be estimated) with at least
 /// degree+1 distinct x; throws std::invalid_argument naming the problem otherwise (too few points,
 /// NaN/Inf, all x equal, all y equal, sizes differ).
-PolynomialFit fitPolynomial(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int degree);
+PolynomialRegression fitPolynomialRegression(const Eigen::VectorXd& x, const Eigen::VectorXd& y, int degree);
 
 /// One degree tried by the automatic choice.
 struct DegreeCandidate {
@@ -61,7 +61,7 @@ struct DegreeCandidate {
 
 /// The automatic degree choice: the fit of the chosen degree and every candidate's score.
 struct DegreeSelection {
-    PolynomialFit fit;
+    PolynomialRegression fit;
     std::vector<DegreeCandidate> candidates;
 };
 
@@ -70,7 +70,7 @@ struct DegreeSelection {
 /// rounding level to be preferred, so the simplest adequate model wins ties. Degrees the data
 /// cannot support (too few points, a point with leverage 1) are skipped. Throws
 /// std::invalid_argument when not even degree 1 can be fitted.
-DegreeSelection fitPolynomialAutoDegree(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
-                                        int maxDegree = kMaxRegressionDegree);
+DegreeSelection fitPolynomialRegressionAutoDegree(const Eigen::VectorXd& x, const Eigen::VectorXd& y,
+                                                  int maxDegree = kMaxRegressionDegree);
 
 }  // namespace tt::core

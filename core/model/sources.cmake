@@ -1,6 +1,6 @@
 # Sources of core/model, compiled into trueturn_core.
 target_sources(trueturn_core PRIVATE
-    model/polynomial.cpp
+    model/scaled_polynomial.cpp
     model/polynomial_regression.cpp
     model/systematic_error_model.cpp
 )

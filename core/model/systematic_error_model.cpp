@@ -6,7 +6,7 @@
 
 namespace tt::core {
 
-SystematicErrorModel::SystematicErrorModel(Polynomial diameterErrorMm, double partLengthMm)
+SystematicErrorModel::SystematicErrorModel(ScaledPolynomial diameterErrorMm, double partLengthMm)
     : m_diameterError(std::move(diameterErrorMm)), m_partLengthMm(partLengthMm) {
     if (!std::isfinite(partLengthMm) || partLengthMm <= 0.0)
         throw std::invalid_argument("the part length must be a positive number of millimetres");

@@ -12,10 +12,10 @@ namespace tt::core {
 namespace {
 
 // Table 1 of paper 000 (shared/SEEDS.md, section 000), group 1: d(x) in mm, x in mm.
-Polynomial tableOneGroupOne() {
+ScaledPolynomial tableOneGroupOne() {
     Eigen::VectorXd b(6);
     b << 0.071, -0.000132, 2.379e-5, -2.09e-7, 6.42e-10, -6.6e-13;
-    return Polynomial::fromPowerCoefficients(b);
+    return ScaledPolynomial::fromPowerCoefficients(b);
 }
 
 // The five control points of paper 000 on a 325 mm shaft: both ends, the two inflection points
@@ -77,7 +77,7 @@ TEST(CorrectionPath, SetPointIsFeedForwardPlusInterpolatedCorrection) {
     r.diameterErrorModel = tableOneGroupOne();
     const CorrectionPath path = buildCorrectionPath(r);
     const PiecewiseCubic y = PiecewiseCubic::pchip(r.pointZMm, r.pointCorrectionMm);
-    const Polynomial d = tableOneGroupOne();
+    const ScaledPolynomial d = tableOneGroupOne();
     for (std::size_t i = 0; i < path.zMm.size(); i += 37)
         EXPECT_NEAR(path.xCorrectionMm[i], -0.5 * d(path.zMm[i]) + y(path.zMm[i]), 1e-15);
 }

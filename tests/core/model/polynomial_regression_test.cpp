@@ -50,7 +50,7 @@ TEST(TableOne, RegressionRecoversTheCoefficientsOfEveryGroup) {
         // 14 points every 25 mm on the 325 mm shaft, as the paper's parts were gauged.
         const auto [x, y] = sample(g.b, 325.0, 25.0);
         ASSERT_EQ(x.size(), 14);
-        const PolynomialFit fit = fitPolynomial(x, y, 5);
+        const PolynomialRegression fit = fitPolynomialRegression(x, y, 5);
         ASSERT_EQ(fit.coefficients.size(), 6);
         for (int k = 0; k <= 5; ++k)
             EXPECT_LT(relativeError(fit.coefficients(k), g.b[static_cast<std::size_t>(k)]), 1e-9)
@@ -63,7 +63,7 @@ TEST(TableOne, RegressionRecoversTheCoefficientsOfEveryGroup) {
 TEST(TableOne, ModelPeaksNearTheMiddleOfTheShaft) {
     for (const TableOneGroup& g : kTableOne) {
         const auto [x, y] = sample(g.b, 325.0, 25.0);
-        const SystematicErrorModel model(fitPolynomial(x, y, 5).polynomial, 325.0);
+        const SystematicErrorModel model(fitPolynomialRegression(x, y, 5).polynomial, 325.0);
         const PolynomialPeak peak = model.peak();
         EXPECT_NEAR(peak.value, g.peakMm, 1e-3) << "group " << g.group;
         EXPECT_NEAR(peak.x, 140.0, 3.0) << "group " << g.group;
@@ -81,7 +81,7 @@ TEST(TableOne, StaysAccurateForAShaftMetresLong) {
     for (std::size_t k = 0; k < b.size(); ++k)
         b[k] /= std::pow(10.0, static_cast<double>(k));
     const auto [x, y] = sample(b, 3250.0, 50.0);
-    const PolynomialFit fit = fitPolynomial(x, y, 5);
+    const PolynomialRegression fit = fitPolynomialRegression(x, y, 5);
     for (int k = 0; k <= 5; ++k)
         EXPECT_LT(relativeError(fit.coefficients(k), b[static_cast<std::size_t>(k)]), 1e-9) << "b" << k;
 }
@@ -89,7 +89,7 @@ TEST(TableOne, StaysAccurateForAShaftMetresLong) {
 TEST(TableOne, AutomaticDegreeFindsTheFifthDegree) {
     for (const TableOneGroup& g : kTableOne) {
         const auto [x, y] = sample(g.b, 325.0, 25.0);
-        const DegreeSelection s = fitPolynomialAutoDegree(x, y);
+        const DegreeSelection s = fitPolynomialRegressionAutoDegree(x, y);
         EXPECT_EQ(s.fit.degree, 5) << "group " << g.group;
         ASSERT_EQ(s.candidates.size(), 6U);
         EXPECT_GT(s.candidates[3].press, 1e-9) << "degree 4 cannot follow the fifth-degree profile";
@@ -106,7 +106,7 @@ TEST(NistWampler, Wampler1ExactFitHasUnitCoefficients) {
     const std::vector<double> y = {1,      6,      63,      364,     1365,    3906,    9331,
                                    19608,  37449,  66430,   111111,  177156,  271453,  402234,
                                    579195, 813616, 1118481, 1508598, 2000719, 2613660, 3368421};
-    const PolynomialFit fit = fitPolynomial(vec(kWamplerX), vec(y), 5);
+    const PolynomialRegression fit = fitPolynomialRegression(vec(kWamplerX), vec(y), 5);
     for (int k = 0; k <= 5; ++k)
         EXPECT_NEAR(fit.coefficients(k), 1.0, 1e-9) << "b" << k;  // certified: 1, standard deviation 0
     EXPECT_NEAR(fit.r2, 1.0, 1e-15);                              // certified R-squared 1
@@ -117,7 +117,7 @@ TEST(NistWampler, Wampler4CertifiedStatistics) {
     const std::vector<double> y = {75901,   -204794, 204863,  -204436, 253665,  -200894, 214131,
                                    -185192, 221249,  -138370, 315911,  -27644,  455253,  197434,
                                    783995,  608816,  1370781, 1303798, 2205519, 2408860, 3444321};
-    const PolynomialFit fit = fitPolynomial(vec(kWamplerX), vec(y), 5);
+    const PolynomialRegression fit = fitPolynomialRegression(vec(kWamplerX), vec(y), 5);
     const std::vector<double> se = {215232.624678170, 236355.173469681, 77934.3524331583,
                                     10147.5507550350, 564.566512170752, 11.2324854679312};
     for (int k = 0; k <= 5; ++k) {
@@ -140,7 +140,7 @@ TEST(NistWampler, Wampler5TinyRSquared) {
     const std::vector<double> y = {7590001,   -20479994, 20480063,  -20479636, 25231365,  -20476094, 20489331,
                                    -20460392, 18417449,  -20413570, 20591111,  -20302844, 18651453,  -20077766,
                                    21059195,  -19666384, 26348481,  -18971402, 22480719,  -17866340, 10958421};
-    const PolynomialFit fit = fitPolynomial(vec(kWamplerX), vec(y), 5);
+    const PolynomialRegression fit = fitPolynomialRegression(vec(kWamplerX), vec(y), 5);
     const std::vector<double> se = {21523262.4678170, 23635517.3469681, 7793435.24331583,
                                     1014755.07550350, 56456.6512170752, 1123.24854679312};
     for (int k = 0; k <= 5; ++k) {
@@ -164,7 +164,7 @@ const std::vector<double> kLineX = {1, 2, 3, 4, 5};
 const std::vector<double> kLineY = {1, 3, 2, 5, 4};
 
 TEST(HandComputedLine, CoefficientsAndStatistics) {
-    const PolynomialFit fit = fitPolynomial(vec(kLineX), vec(kLineY), 1);
+    const PolynomialRegression fit = fitPolynomialRegression(vec(kLineX), vec(kLineY), 1);
     EXPECT_NEAR(fit.coefficients(0), 0.6, 1e-14);
     EXPECT_NEAR(fit.coefficients(1), 0.8, 1e-14);
     EXPECT_NEAR(fit.residualSumOfSquares, 3.6, 1e-13);
@@ -181,7 +181,7 @@ TEST(HandComputedLine, CoefficientsAndStatistics) {
 }
 
 TEST(HandComputedLine, ConfidenceAndPredictionBands) {
-    const PolynomialFit fit = fitPolynomial(vec(kLineX), vec(kLineY), 1);
+    const PolynomialRegression fit = fitPolynomialRegression(vec(kLineX), vec(kLineY), 1);
     // At x = 6: yhat = 5.4, h = 1/5 + 9/10 = 1.1; t(0.975; 3) = 3.182446305284263 (Student t table: 3.182).
     const double t = 3.182446305284263;
     const RegressionPrediction p = fit.predict(6.0);
@@ -201,7 +201,7 @@ TEST(Regression, PressEqualsBruteForceLeaveOneOut) {
                                        0.003, -0.006, 0.000, 0.005, -0.002, -0.004, 0.003};
     for (Eigen::Index i = 0; i < noisy.size(); ++i)
         noisy(i) += noise[static_cast<std::size_t>(i)];
-    const PolynomialFit fit = fitPolynomial(x, noisy, 3);
+    const PolynomialRegression fit = fitPolynomialRegression(x, noisy, 3);
     double press = 0.0;
     for (Eigen::Index leave = 0; leave < x.size(); ++leave) {
         Eigen::VectorXd xs(x.size() - 1), ys(x.size() - 1);
@@ -210,7 +210,7 @@ TEST(Regression, PressEqualsBruteForceLeaveOneOut) {
                 xs(j) = x(i);
                 ys(j++) = noisy(i);
             }
-        press += std::pow(noisy(leave) - fitPolynomial(xs, ys, 3).polynomial(x(leave)), 2);
+        press += std::pow(noisy(leave) - fitPolynomialRegression(xs, ys, 3).polynomial(x(leave)), 2);
     }
     EXPECT_LT(relativeError(fit.press, press), 1e-10);
 }
@@ -227,7 +227,7 @@ TEST(Regression, AutomaticDegreePicksTheQuadraticUnderNoise) {
         x.push_back(xi);
         y.push_back(0.02 + 8e-4 * xi - 2.4e-6 * xi * xi + noise[i]);
     }
-    const DegreeSelection s = fitPolynomialAutoDegree(vec(x), vec(y));
+    const DegreeSelection s = fitPolynomialRegressionAutoDegree(vec(x), vec(y));
     EXPECT_EQ(s.fit.degree, 2);
     EXPECT_GT(s.candidates[0].press, s.candidates[1].press);
     EXPECT_GT(s.fit.fStatistic, s.fit.fCritical95);
@@ -235,7 +235,7 @@ TEST(Regression, AutomaticDegreePicksTheQuadraticUnderNoise) {
 
 TEST(Regression, AutomaticDegreeSkipsDegreesTheDataCannotCarry) {
     // Five points: degrees 4..6 need 6..8 points and are reported as not estimable.
-    const DegreeSelection s = fitPolynomialAutoDegree(vec(kLineX), vec(kLineY));
+    const DegreeSelection s = fitPolynomialRegressionAutoDegree(vec(kLineX), vec(kLineY));
     ASSERT_EQ(s.candidates.size(), 6U);
     for (std::size_t d = 3; d < 6; ++d)
         EXPECT_TRUE(std::isinf(s.candidates[d].press)) << "degree " << d + 1;
@@ -250,7 +250,7 @@ TEST(Regression, RepeatedMeasurementsAtTheSamePositionsAreUsed) {
         xs.segment(part * 14, 14) = x;
         ys.segment(part * 14, 14) = y.array() + 0.01 * (part - 1);
     }
-    const PolynomialFit fit = fitPolynomial(xs, ys, 5);
+    const PolynomialRegression fit = fitPolynomialRegression(xs, ys, 5);
     EXPECT_EQ(fit.pointCount, 42);
     EXPECT_LT(relativeError(fit.coefficients(5), kTableOne[2].b[5]), 1e-9);
     // Residuals are exactly +-0.01 (and 0): s^2 = 28 * 1e-4 / 36.
@@ -259,7 +259,7 @@ TEST(Regression, RepeatedMeasurementsAtTheSamePositionsAreUsed) {
 
 void expectRefused(const std::vector<double>& x, const std::vector<double>& y, int degree, const std::string& phrase) {
     try {
-        fitPolynomial(vec(x), vec(y), degree);
+        fitPolynomialRegression(vec(x), vec(y), degree);
         FAIL() << "expected a refusal mentioning '" << phrase << "'";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
@@ -274,7 +274,7 @@ TEST(Regression, BadDataAreRefusedWithAReason) {
     expectRefused({0, 25, 50, 75}, {0.1, std::nan(""), 0.1, 0.2}, 1, "data point 2");
     expectRefused({0, 25, 50}, {0.1, 0.2}, 1, "as many values");
     expectRefused({0, 25, 50, 75, 100, 125, 150, 175, 200}, {1, 2, 3, 4, 5, 6, 7, 8, 0}, 7, "1 .. 6");
-    EXPECT_THROW(fitPolynomialAutoDegree(vec({0, 25}), vec({0.1, 0.2})), std::invalid_argument);
+    EXPECT_THROW(fitPolynomialRegressionAutoDegree(vec({0, 25}), vec({0.1, 0.2})), std::invalid_argument);
 }
 
 }  // namespace

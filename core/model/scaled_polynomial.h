@@ -14,15 +14,15 @@ struct PolynomialPeak {
 /// to metres: p(x) = sum_k c_k t^k with t = (x - centre) / scale. With centre 0 and scale 1 it is the
 /// ordinary power form b0 + b1 x + ... + bD x^D (paper 000, Table 1: x in mm from the left end,
 /// diameter error in mm).
-class Polynomial {
+class ScaledPolynomial {
 public:
     /// The zero polynomial (degree 0, value 0 everywhere).
-    Polynomial();
+    ScaledPolynomial();
     /// From coefficients c0..cD in t = (x - centre) / scale. Throws std::invalid_argument when the
     /// coefficients are empty or not finite, or scale is not a finite positive number.
-    Polynomial(Eigen::VectorXd scaledCoefficients, double centre, double scale);
+    ScaledPolynomial(Eigen::VectorXd scaledCoefficients, double centre, double scale);
     /// From ordinary power-form coefficients b0..bD (b0 first), as printed in Table 1 of paper 000.
-    static Polynomial fromPowerCoefficients(const Eigen::VectorXd& powerCoefficients);
+    static ScaledPolynomial fromPowerCoefficients(const Eigen::VectorXd& powerCoefficients);
 
     /// Number of the highest stored coefficient (trailing zeros are kept).
     int degree() const { return static_cast<int>(m_coefficients.size()) - 1; }
@@ -32,7 +32,7 @@ public:
     /// dp/dx at x.
     double derivative(double x) const;
     /// This polynomial multiplied by a constant (for example -1/2 for the feed-forward path).
-    Polynomial scaledBy(double factor) const;
+    ScaledPolynomial scaledBy(double factor) const;
 
     /// The ordinary power-form coefficients b0..bD in the original variable x.
     Eigen::VectorXd powerCoefficients() const;

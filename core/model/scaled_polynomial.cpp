@@ -1,4 +1,4 @@
-#include "core/model/polynomial.h"
+#include "core/model/scaled_polynomial.h"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -61,9 +61,9 @@ std::vector<double> realRoots(const Eigen::VectorXd& c) {
 
 }  // namespace
 
-Polynomial::Polynomial() : m_coefficients(Eigen::VectorXd::Zero(1)) {}
+ScaledPolynomial::ScaledPolynomial() : m_coefficients(Eigen::VectorXd::Zero(1)) {}
 
-Polynomial::Polynomial(Eigen::VectorXd scaledCoefficients, double centre, double scale)
+ScaledPolynomial::ScaledPolynomial(Eigen::VectorXd scaledCoefficients, double centre, double scale)
     : m_coefficients(std::move(scaledCoefficients)), m_centre(centre), m_scale(scale) {
     if (m_coefficients.size() == 0) throw std::invalid_argument("a polynomial needs at least one coefficient");
     if (!allFinite(m_coefficients)) throw std::invalid_argument("polynomial coefficients must be finite numbers");
@@ -71,23 +71,23 @@ Polynomial::Polynomial(Eigen::VectorXd scaledCoefficients, double centre, double
         throw std::invalid_argument("polynomial scale must be a finite positive number and the centre finite");
 }
 
-Polynomial Polynomial::fromPowerCoefficients(const Eigen::VectorXd& powerCoefficients) {
-    return Polynomial(powerCoefficients, 0.0, 1.0);
+ScaledPolynomial ScaledPolynomial::fromPowerCoefficients(const Eigen::VectorXd& powerCoefficients) {
+    return ScaledPolynomial(powerCoefficients, 0.0, 1.0);
 }
 
-double Polynomial::value(double x) const {
+double ScaledPolynomial::value(double x) const {
     return horner(m_coefficients, (x - m_centre) / m_scale);
 }
 
-double Polynomial::derivative(double x) const {
+double ScaledPolynomial::derivative(double x) const {
     return horner(derivativeCoefficients(m_coefficients), (x - m_centre) / m_scale) / m_scale;
 }
 
-Polynomial Polynomial::scaledBy(double factor) const {
-    return Polynomial(m_coefficients * factor, m_centre, m_scale);
+ScaledPolynomial ScaledPolynomial::scaledBy(double factor) const {
+    return ScaledPolynomial(m_coefficients * factor, m_centre, m_scale);
 }
 
-Eigen::MatrixXd Polynomial::scaledToPowerMap(int degree, double centre, double scale) {
+Eigen::MatrixXd ScaledPolynomial::scaledToPowerMap(int degree, double centre, double scale) {
     // c_k ((x - m)/s)^k = c_k s^-k sum_j C(k, j) x^j (-m)^(k-j)  =>  M(j, k) = C(k, j) (-m)^(k-j) / s^k.
     const int p = degree + 1;
     Eigen::MatrixXd map = Eigen::MatrixXd::Zero(p, p);
@@ -97,11 +97,11 @@ Eigen::MatrixXd Polynomial::scaledToPowerMap(int degree, double centre, double s
     return map;
 }
 
-Eigen::VectorXd Polynomial::powerCoefficients() const {
+Eigen::VectorXd ScaledPolynomial::powerCoefficients() const {
     return scaledToPowerMap(degree(), m_centre, m_scale) * m_coefficients;
 }
 
-PolynomialPeak Polynomial::largestMagnitude(double a, double b) const {
+PolynomialPeak ScaledPolynomial::largestMagnitude(double a, double b) const {
     if (!std::isfinite(a) || !std::isfinite(b) || a > b)
         throw std::invalid_argument("the interval for the peak must be finite with its start <= its end");
     std::vector<double> candidates = {a, b};
