@@ -1,0 +1,67 @@
+#include "core/loop/measurement_session.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace tt::core {
+
+namespace {
+
+std::string mm3(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", v);
+    return text;
+}
+
+}  // namespace
+
+MeasurementSession::MeasurementSession(std::vector<double> pointXMm, double nominalDiameterMm, double plausibleWindowMm)
+    : m_pointXMm(std::move(pointXMm)), m_nominalMm(nominalDiameterMm), m_windowMm(plausibleWindowMm) {
+    if (m_pointXMm.empty()) throw std::invalid_argument("measurement session: there are no control points");
+    for (const double x : m_pointXMm)
+        if (!std::isfinite(x))
+            throw std::invalid_argument("measurement session: a control point position is not a number");
+    if (!(m_nominalMm > 0.0) || !std::isfinite(m_nominalMm))
+        throw std::invalid_argument("measurement session: the nominal diameter must be a positive number of mm");
+    if (!(m_windowMm > 0.0) || !std::isfinite(m_windowMm))
+        throw std::invalid_argument("measurement session: the plausible window must be a positive number of mm");
+    m_readings.resize(m_pointXMm.size());
+}
+
+std::optional<std::size_t> MeasurementSession::currentPoint() const {
+    if (m_retaking) return m_retaking;
+    for (std::size_t i = 0; i < m_readings.size(); ++i)
+        if (!m_readings[i]) return i;
+    return std::nullopt;
+}
+
+SessionAccept MeasurementSession::accept(const GaugeReading& reading) {
+    const auto point = currentPoint();
+    if (!point) return {false, 0, "every control point already has a reading; re-take a point to replace it"};
+    if (!std::isfinite(reading.diameterMm)) return {false, *point, "the reading is not a number"};
+    if (std::fabs(reading.diameterMm - m_nominalMm) > m_windowMm)
+        return {false, *point,
+                "reading " + mm3(reading.diameterMm) + " mm is more than " + mm3(m_windowMm) + " mm from the nominal " +
+                    mm3(m_nominalMm) + " mm; check the point (x = " + mm3(m_pointXMm[*point]) +
+                    " mm) and measure again"};
+    m_readings[*point] = reading;
+    m_retaking.reset();
+    return {true, *point, {}};
+}
+
+void MeasurementSession::retake(std::size_t index) {
+    m_readings.at(index).reset();
+    m_retaking = index;
+}
+
+std::vector<double> MeasurementSession::diametersMm() const {
+    if (!complete()) throw std::logic_error("measurement session: not every control point has a reading yet");
+    std::vector<double> d;
+    d.reserve(m_readings.size());
+    for (const auto& r : m_readings)
+        d.push_back(r->diameterMm);
+    return d;
+}
+
+}  // namespace tt::core
