@@ -1,0 +1,111 @@
+#include "devices/parsers/gcode_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace tt::devices {
+
+namespace {
+
+std::string mm(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", std::fabs(value) < 0.0005 ? 0.0 : value);
+    return text;
+}
+
+void checkJob(const GCodeJob& job) {
+    if (!(job.nominalDiameterMm > 0.0) || !std::isfinite(job.nominalDiameterMm))
+        throw std::invalid_argument("G-code: the nominal diameter must be a positive number of millimetres");
+    if (!(job.feedMmPerRev > 0.0 && job.feedMmPerRev <= 5.0))
+        throw std::invalid_argument("G-code: the feed must be between 0 and 5 mm/rev");
+    if (job.spindleRpm < 0 || job.spindleRpm > 10000)
+        throw std::invalid_argument("G-code: the spindle speed must be 0 to 10000 rpm");
+    if (job.zDirection != 1 && job.zDirection != -1)
+        throw std::invalid_argument("G-code: the Z direction must be +1 or -1");
+    if (!(job.clearanceMm > 0.0 && job.clearanceMm <= 100.0))
+        throw std::invalid_argument("G-code: the clearance must be between 0 and 100 mm");
+    if (job.toolNumber < 1 || job.toolNumber > 99)
+        throw std::invalid_argument("G-code: the tool number must be 1 to 99");
+    if (job.programNumber < 1 || job.programNumber > 9999)
+        throw std::invalid_argument("G-code: the program number must be 1 to 9999");
+    if (!(job.maxCorrectionMm > 0.0) || !std::isfinite(job.zOriginMm))
+        throw std::invalid_argument("G-code: the correction limit must be positive and the Z origin finite");
+}
+
+void checkPath(const core::CorrectionPath& path, const GCodeJob& job) {
+    const std::size_t n = path.zMm.size();
+    if (n < 2) throw std::invalid_argument("G-code: the correction path needs at least two points");
+    if (path.xCorrectionMm.size() != n)
+        throw std::invalid_argument("G-code: the correction path has " + std::to_string(n) + " positions but " +
+                                    std::to_string(path.xCorrectionMm.size()) + " corrections");
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(path.zMm[i]) || !std::isfinite(path.xCorrectionMm[i]))
+            throw std::invalid_argument("G-code: point " + std::to_string(i + 1) + " of the path is not a number");
+        if (i > 0 && !(path.zMm[i] > path.zMm[i - 1]))
+            throw std::invalid_argument("G-code: the path positions must increase (point " + std::to_string(i + 1) +
+                                        " at " + mm(path.zMm[i]) + " mm)");
+        if (std::fabs(path.xCorrectionMm[i]) > job.maxCorrectionMm)
+            throw std::invalid_argument("G-code: the correction " + mm(path.xCorrectionMm[i]) + " mm at " +
+                                        mm(path.zMm[i]) + " mm exceeds the limit of " + mm(job.maxCorrectionMm) +
+                                        " mm");
+        if (job.nominalDiameterMm / 2.0 + path.xCorrectionMm[i] <= 0.0)
+            throw std::invalid_argument("G-code: the correction at " + mm(path.zMm[i]) +
+                                        " mm would cut through the axis");
+    }
+}
+
+}  // namespace
+
+std::string writeCorrectionGCode(const core::PartCorrection& correction, const GCodeJob& job) {
+    checkJob(job);
+    const core::CorrectionPath& path = correction.path;
+    checkPath(path, job);
+    const double factor = job.diameterMode ? 2.0 : 1.0;
+    const double nominalX = job.diameterMode ? job.nominalDiameterMm : job.nominalDiameterMm / 2.0;
+    auto xWord = [&](double correctionMm) { return mm(nominalX + factor * correctionMm); };
+    auto zWord = [&](double x) { return mm(job.zOriginMm + job.zDirection * x); };
+    const double safeX = nominalX + factor * (job.maxCorrectionMm + job.clearanceMm);
+    // Approach and retract a clearance before the first point of the path, outside the part.
+    const double approachZ = job.zOriginMm + job.zDirection * (path.zMm.front() - job.clearanceMm);
+
+    std::string out;
+    auto line = [&](const std::string& text) { out += text + "\n"; };
+    char head[64];
+    std::snprintf(head, sizeof head, "O%04d (TRUETURN CORRECTED FINISHING PASS)", job.programNumber);
+    line("%");
+    line(head);
+    line("(PART " + std::to_string(correction.partNumber) + ")");
+    line("(LATHE, METRIC: G21, MILLIMETRES; FEED PER REVOLUTION: G95)");
+    line(job.diameterMode ? "(X WORDS ARE DIAMETERS: DIAMETER MODE)" : "(X WORDS ARE RADII: RADIUS MODE)");
+    line("(NOMINAL DIAMETER " + mm(job.nominalDiameterMm) + " MM, FEED " + mm(job.feedMmPerRev) + " MM/REV)");
+    line("(MACHINE Z = " + mm(job.zOriginMm) + (job.zDirection > 0 ? " + " : " - ") + "PART X)");
+    line("(CORRECTION DX IS RADIAL, MM, NEGATIVE = TOWARDS THE AXIS; " + std::to_string(path.zMm.size() - 1) +
+         " SEGMENTS)");
+    if (!correction.pointZMm.empty() && correction.pointZMm.size() == correction.pointCorrectionMm.size()) {
+        std::string points = "(CONTROL POINTS:";
+        for (std::size_t i = 0; i < correction.pointZMm.size(); ++i)
+            points += " X" + mm(correction.pointZMm[i]) + "=" + mm(correction.pointCorrectionMm[i]);
+        line(points + ")");
+    }
+    line(std::string("G18 G21 G40 G90 G95") + (job.emitModeCode ? (job.diameterMode ? " G7" : " G8") : ""));
+    char tool[16];
+    std::snprintf(tool, sizeof tool, "T%02d%02d", job.toolNumber, job.toolNumber);
+    line(tool);
+    if (job.spindleRpm > 0) line("G97 S" + std::to_string(job.spindleRpm) + " M3");
+    line("G0 X" + mm(safeX) + " Z" + mm(approachZ));
+    line("G0 X" + xWord(path.xCorrectionMm.front()));
+    line("G1 Z" + zWord(path.zMm.front()) + " F" + mm(job.feedMmPerRev) + " (START X" + mm(path.zMm.front()) + " DX" +
+         mm(path.xCorrectionMm.front()) + ")");
+    for (std::size_t i = 1; i < path.zMm.size(); ++i)
+        line("G1 X" + xWord(path.xCorrectionMm[i]) + " Z" + zWord(path.zMm[i]) + " (SEG " + std::to_string(i) + " X" +
+             mm(path.zMm[i]) + " DX" + mm(path.xCorrectionMm[i]) + ")");
+    line("G0 X" + mm(safeX));
+    line("G0 Z" + mm(approachZ));
+    if (job.spindleRpm > 0) line("M5");
+    line("M30");
+    line("%");
+    return out;
+}
+
+}  // namespace tt::devices
