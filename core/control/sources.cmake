@@ -1,5 +1,11 @@
 # Sources of core/control, compiled into trueturn_core.
 target_sources(trueturn_core PRIVATE
+    control/dare.cpp
+    control/stein.cpp
+    control/lq_regulator.cpp
+    control/kalman_filter.cpp
+    control/run_to_run_plant.cpp
+    control/lqg_design.cpp
     control/profile_interpolation.cpp
     control/correction_path_builder.cpp
 )
