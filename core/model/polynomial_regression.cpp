@@ -6,6 +6,7 @@
 #include <boost/math/distributions/students_t.hpp>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -14,6 +15,12 @@ namespace tt::core {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Boost.Math evaluates double quantiles in long double by default; double precision is ample
+/// for a critical value and makes the fit about 7 times faster (see docs/DECISIONS.md).
+using DoublePolicy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+using FisherF = boost::math::fisher_f_distribution<double, DoublePolicy>;
+using StudentT = boost::math::students_t_distribution<double, DoublePolicy>;
 
 /// Leverage at or above this counts as 1: the point cannot be predicted from the others.
 constexpr double kLeverageOne = 1.0 - 1e-10;
@@ -82,7 +89,7 @@ RegressionPrediction PolynomialRegression::predict(double x, double level) const
         power *= t;
     }
     const double leverage = std::max(0.0, v.dot(scaledCovarianceFactor * v));
-    const boost::math::students_t student(static_cast<double>(residualDof));
+    const StudentT student(static_cast<double>(residualDof));
     const double quantile = boost::math::quantile(student, 0.5 + 0.5 * level);
     RegressionPrediction p;
     p.x = x;
@@ -131,7 +138,7 @@ PolynomialRegression fitPolynomialRegression(const Eigen::VectorXd& x, const Eig
     fit.fStatistic = fit.residualSumOfSquares > 0.0
                          ? (regressionSumOfSquares / degree) / (fit.residualSumOfSquares / dof)
                          : kInfinity;
-    fit.fCritical95 = boost::math::quantile(boost::math::fisher_f(static_cast<double>(degree), dof), 0.95);
+    fit.fCritical95 = boost::math::quantile(FisherF(static_cast<double>(degree), dof), 0.95);
     fit.residualSigma = std::sqrt(fit.residualSumOfSquares / dof);
 
     fit.press = 0.0;
@@ -162,25 +169,25 @@ DegreeSelection fitPolynomialRegressionAutoDegree(const Eigen::VectorXd& x, cons
     const double floor = static_cast<double>(x.size()) * std::pow(1e-9 * y.cwiseAbs().maxCoeff(), 2);
 
     DegreeSelection selection;
-    int best = 0;
-    double bestPress = kInfinity;
+    std::optional<PolynomialRegression> best;
+    const Eigen::Index distinct = distinctCount(x);
     for (int degree = 1; degree <= maxDegree; ++degree) {
         DegreeCandidate candidate{degree, kInfinity};
-        try {
-            candidate.press = fitPolynomialRegression(x, y, degree).press;
-        } catch (const std::invalid_argument&) {
-            // the data cannot support this degree: it stays a candidate with infinite PRESS
+        if (x.size() >= degree + 2 && distinct >= degree + 1) {
+            try {
+                PolynomialRegression fit = fitPolynomialRegression(x, y, degree);
+                candidate.press = fit.press;
+                if (std::isfinite(fit.press) && (!best || fit.press < best->press - floor)) best = std::move(fit);
+            } catch (const std::invalid_argument&) {
+                // x too close together for this degree: it stays a candidate with infinite PRESS
+            }
         }
         selection.candidates.push_back(candidate);
-        if (std::isfinite(candidate.press) && candidate.press < bestPress - floor) {
-            best = degree;
-            bestPress = candidate.press;
-        }
     }
-    if (best == 0)
+    if (!best)
         throw std::invalid_argument(
             "leave-one-out cross-validation needs more points at different positions; choose the degree explicitly");
-    selection.fit = fitPolynomialRegression(x, y, best);
+    selection.fit = std::move(*best);
     return selection;
 }
 
