@@ -58,18 +58,6 @@ std::vector<std::vector<int>> coupledGroups(const RunToRunPlant& plant, const Lq
     return groups;
 }
 
-/// Per-lead innovation variances: rows lead = 0 .. z-1 of diag(C_d P_lead C_d' + V).
-Eigen::MatrixXd predictionVariances(const Eigen::MatrixXd& Ad, const Eigen::MatrixXd& Cd, const Eigen::MatrixXd& Qd,
-                                    const Eigen::MatrixXd& Pd, const Eigen::MatrixXd& V, int delay) {
-    Eigen::MatrixXd out(delay, V.rows());
-    Eigen::MatrixXd P = Pd;
-    for (int lead = 0; lead < delay; ++lead) {
-        out.row(lead) = (Cd * P * Cd.transpose() + V).diagonal().transpose();
-        P = (Ad * P * Ad.transpose() + Qd).eval();
-    }
-    return out;
-}
-
 struct BlockResult {
     LqgBlock block;
     Eigen::MatrixXd P;  // block order
@@ -132,9 +120,20 @@ BlockResult designBlock(const RunToRunPlant& plant, const LqgWeights& w, const s
     b.K << lq.K, Kd;
     b.L = Eigen::MatrixXd::Zero(nb, Cp.rows());
     b.L.bottomRows(nd) = kf.L;
-    b.predictionVariance = predictionVariances(Ad, Cd, Gd * Wd * Gd.transpose(), kf.P, V, plant.delay);
     r.P = Eigen::MatrixXd::Zero(nb, nb);
     r.P.bottomRightCorner(nd, nd) = kf.P;
+    b.P = r.P;
+    b.Q = Eigen::MatrixXd::Zero(nb, nb);
+    b.Q.bottomRightCorner(nd, nd) = Gd * Wd * Gd.transpose();
+    b.V = V;
+    b.P0 = Eigen::MatrixXd::Zero(nb, nb);
+    Index offset = np;
+    for (int i : points) {
+        const Eigen::MatrixXd prior =
+            plant.disturbances[static_cast<std::size_t>(i)].priorCovariance(kRandomWalkPriorMm2);
+        b.P0.block(offset, offset, prior.rows(), prior.cols()) = prior;
+        offset += prior.rows();
+    }
     r.iterations = lq.iterations + kf.iterations;
     r.residual = std::max(lq.relativeResidual, kf.relativeResidual);
     return r;
@@ -211,8 +210,15 @@ LqgDesign designLqgDense(const RunToRunPlant& plant, const LqgWeights& weights) 
     b.C = plant.C;
     b.K = d.K;
     b.L = d.L;
-    b.predictionVariance =
-        predictionVariances(plant.A, plant.C, plant.G * plant.W * plant.G.transpose(), kf.P, plant.V, plant.delay);
+    b.P = kf.P;
+    b.Q = plant.G * plant.W * plant.G.transpose();
+    b.V = plant.V;
+    b.P0 = Eigen::MatrixXd::Zero(plant.stateCount(), plant.stateCount());
+    for (int i = 0; i < plant.pointCount(); ++i) {
+        const auto& L = plant.layout[static_cast<std::size_t>(i)];
+        b.P0.block(L.disturbanceStart, L.disturbanceStart, L.disturbanceCount, L.disturbanceCount) =
+            plant.disturbances[static_cast<std::size_t>(i)].priorCovariance(kRandomWalkPriorMm2);
+    }
     d.blocks.push_back(std::move(b));
     return d;
 }

@@ -22,10 +22,15 @@ struct LqgBlock {
     std::vector<int> points;           ///< control points (inputs and outputs) of the block
     std::vector<Eigen::Index> states;  ///< the plant state index of each block state
     Eigen::MatrixXd A, B, C, K, L;     ///< block plant, LQ gain and innovation gain
-    /// Per-point innovation variance of a measurement `lead` steps ahead of the next step to filter:
-    /// row `lead` (0 .. delay - 1), one column per block point (mm^2). Row 0 = diag(C P C' + V).
-    Eigen::MatrixXd predictionVariance;
+    Eigen::MatrixXd P;                 ///< steady-state a-priori error covariance
+    Eigen::MatrixXd Q;                 ///< process noise covariance G W G'
+    Eigen::MatrixXd V;                 ///< gauge noise covariance of the block's points
+    Eigen::MatrixXd P0;                ///< covariance before the first measurement (stationary prior)
 };
+
+/// Prior variance given to a random-walk disturbance state before the first measurement, mm^2
+/// (a random walk has no stationary variance; 1 mm^2 admits any plausible first reading).
+inline constexpr double kRandomWalkPriorMm2 = 1.0;
 
 /// The LQG controller: LQ output regulator (MATLAB `lqry`) + steady-state Kalman filter in current
 /// form (MATLAB `kalman`): u(k) = -K x(k|k), L = P C'(C P C' + V)^-1, P the a-priori covariance.

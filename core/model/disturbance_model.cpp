@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/control/dare.h"
+#include "core/control/stein.h"
 
 namespace tt::core {
 
@@ -158,6 +159,24 @@ DisturbanceRealisation DisturbanceModel::realise() const {
         w += nw;
     }
     return r;
+}
+
+Eigen::MatrixXd DisturbanceModel::priorCovariance(double randomWalkPriorMm2) const {
+    std::vector<Eigen::MatrixXd> blocks;
+    Eigen::Index states = 0;
+    for (const auto& c : m_components) {
+        const DisturbanceRealisation r = c.realise();
+        blocks.push_back(c.isStationary() ? solveDiscreteLyapunov(r.A, r.G * r.W * r.G.transpose())
+                                          : Eigen::MatrixXd::Identity(r.A.rows(), r.A.rows()) * randomWalkPriorMm2);
+        states += r.A.rows();
+    }
+    Eigen::MatrixXd P = Eigen::MatrixXd::Zero(states, states);
+    Eigen::Index s = 0;
+    for (const auto& b : blocks) {
+        P.block(s, s, b.rows(), b.cols()) = b;
+        s += b.rows();
+    }
+    return P;
 }
 
 }  // namespace tt::core
