@@ -1,3 +1,6 @@
 # Sources of core/calibration, compiled into trueturn_core.
 target_sources(trueturn_core PRIVATE
+    calibration/probe_linearisation.cpp
+    calibration/calibration_csv.cpp
+    calibration/linearisation_image.cpp
 )

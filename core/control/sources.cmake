@@ -12,4 +12,7 @@ target_sources(trueturn_core PRIVATE
     control/run_to_run_setup.cpp
     control/profile_interpolation.cpp
     control/correction_path_builder.cpp
+    control/dither_force_estimator.cpp
+    control/deflection_compensator.cpp
+    control/in_process_compensation.cpp
 )

@@ -5,4 +5,5 @@ target_sources(trueturn_core PRIVATE
     model/scaled_polynomial.cpp
     model/polynomial_regression.cpp
     model/systematic_error_model.cpp
+    model/tool_stiffness.cpp
 )

@@ -5,4 +5,10 @@ target_sources(trueturn_core PRIVATE
     sim/run_to_run_analysis.cpp
     sim/run_to_run_monte_carlo.cpp
     sim/run_to_run_study.cpp
+    sim/dither_profile.cpp
+    sim/cross_feed_drive.cpp
+    sim/inductive_probe.cpp
+    sim/boring_machine.cpp
+    sim/probe_calibration_rig.cpp
+    sim/boring_experiment.cpp
 )

@@ -1,0 +1,166 @@
+#include "core/calibration/linearisation_image.h"
+
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/common/crc16.h"
+
+namespace tt::core {
+
+namespace {
+
+constexpr std::uint8_t kMagic[4] = {'T', 'T', 'L', 'T'};
+constexpr std::uint8_t kFlagDecreasing = 0x01;
+
+void put16(std::vector<std::uint8_t>& out, std::uint16_t v) {
+    out.push_back(static_cast<std::uint8_t>(v & 0xFF));
+    out.push_back(static_cast<std::uint8_t>(v >> 8));
+}
+
+void put32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i)
+        out.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFF));
+}
+
+void put64(std::vector<std::uint8_t>& out, std::uint64_t v) {
+    for (int i = 0; i < 8; ++i)
+        out.push_back(static_cast<std::uint8_t>((v >> (8 * i)) & 0xFF));
+}
+
+std::uint64_t get(std::span<const std::uint8_t> b, std::size_t at, int bytes) {
+    std::uint64_t v = 0;
+    for (int i = bytes - 1; i >= 0; --i)
+        v = (v << 8) | b[at + static_cast<std::size_t>(i)];
+    return v;
+}
+
+std::string hex16(std::uint16_t v) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "0x%04X", v);
+    return buf;
+}
+
+void checkTable(const LinearisationTable& table) {
+    if (table.adcBits < kMinAdcBits || table.adcBits > kMaxAdcBits)
+        throw std::invalid_argument("table ADC resolution " + std::to_string(table.adcBits) + " bits is outside " +
+                                    std::to_string(kMinAdcBits) + " .. " + std::to_string(kMaxAdcBits));
+    if (table.entries.size() != (std::size_t{1} << table.adcBits))
+        throw std::invalid_argument("a " + std::to_string(table.adcBits) + "-bit table needs " +
+                                    std::to_string(std::size_t{1} << table.adcBits) + " entries, got " +
+                                    std::to_string(table.entries.size()));
+    if (table.scaleNm == 0) throw std::invalid_argument("table scale must be above 0 nm");
+}
+
+bool decreasing(const LinearisationTable& table) {
+    return table.entries.back() < table.entries.front();
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info) {
+    checkTable(table);
+    std::vector<std::uint8_t> out;
+    out.reserve(kTableImageHeaderBytes + 2 * table.entries.size() + 2);
+    for (std::uint8_t m : kMagic)  // 0: magic "TTLT"
+        out.push_back(m);
+    out.push_back(kTableImageFormat);                                  // 4: format
+    out.push_back(static_cast<std::uint8_t>(kTableImageHeaderBytes));  // 5: header size
+    out.push_back(static_cast<std::uint8_t>(table.adcBits));           // 6: ADC bits
+    out.push_back(info.plane);                                         // 7: plane
+    put32(out, info.version);                                          // 8: table version
+    put64(out, static_cast<std::uint64_t>(info.createdUnixS));         // 12: created
+    put16(out, table.scaleNm);                                         // 20: nm per unit
+    out.push_back(info.degree);                                        // 22: degree
+    out.push_back(decreasing(table) ? kFlagDecreasing : 0);            // 23: flags
+    put32(out, static_cast<std::uint32_t>(table.entries.size()));      // 24: entry count
+    put32(out, 0);                                                     // 28: reserved
+    for (std::int16_t e : table.entries)
+        put16(out, static_cast<std::uint16_t>(e));
+    put16(out, crc16Ccitt(out));
+    return out;
+}
+
+std::uint16_t tableImageCrc(std::span<const std::uint8_t> bytes) {
+    if (bytes.size() < 2) throw std::invalid_argument("the image is too short to carry a CRC");
+    return static_cast<std::uint16_t>(get(bytes, bytes.size() - 2, 2));
+}
+
+TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
+    if (bytes.size() < kTableImageHeaderBytes + 2)
+        throw std::invalid_argument("the image has " + std::to_string(bytes.size()) + " bytes, less than a header");
+    for (std::size_t i = 0; i < 4; ++i)
+        if (bytes[i] != kMagic[i]) throw std::invalid_argument("not a linearisation table image (no TTLT mark)");
+    if (bytes[4] != kTableImageFormat)
+        throw std::invalid_argument("image format " + std::to_string(bytes[4]) + " is not supported (expected " +
+                                    std::to_string(kTableImageFormat) + ")");
+    if (bytes[5] != kTableImageHeaderBytes) throw std::invalid_argument("image header size is wrong");
+    const int bits = bytes[6];
+    if (bits < kMinAdcBits || bits > kMaxAdcBits)
+        throw std::invalid_argument("image ADC resolution " + std::to_string(bits) + " bits is outside " +
+                                    std::to_string(kMinAdcBits) + " .. " + std::to_string(kMaxAdcBits));
+    const std::uint64_t count = get(bytes, 24, 4);
+    if (count != (std::uint64_t{1} << bits))
+        throw std::invalid_argument("image entry count " + std::to_string(count) + " does not match " +
+                                    std::to_string(bits) + " bits");
+    const std::size_t expected = kTableImageHeaderBytes + 2 * count + 2;
+    if (bytes.size() != expected)
+        throw std::invalid_argument("the image has " + std::to_string(bytes.size()) + " bytes, expected " +
+                                    std::to_string(expected));
+    const std::uint16_t carried = tableImageCrc(bytes);
+    const std::uint16_t computed = crc16Ccitt(bytes.first(bytes.size() - 2));
+    if (carried != computed)
+        throw std::invalid_argument("CRC mismatch: image says " + hex16(carried) + ", content gives " +
+                                    hex16(computed));
+    TableImage image;
+    image.crc = carried;
+    image.info.plane = bytes[7];
+    image.info.version = static_cast<std::uint32_t>(get(bytes, 8, 4));
+    image.info.createdUnixS = static_cast<std::int64_t>(get(bytes, 12, 8));
+    image.table.scaleNm = static_cast<std::uint16_t>(get(bytes, 20, 2));
+    image.info.degree = bytes[22];
+    if (image.table.scaleNm == 0) throw std::invalid_argument("image table scale is 0 nm");
+    image.table.adcBits = bits;
+    image.table.entries.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+        image.table.entries[i] = static_cast<std::int16_t>(get(bytes, kTableImageHeaderBytes + 2 * i, 2));
+    return image;
+}
+
+std::string tableToCsv(const LinearisationTable& table) {
+    checkTable(table);
+    std::ostringstream out;
+    out << "adc_code,deflection_um\n";
+    char buf[32];
+    for (std::size_t c = 0; c < table.entries.size(); ++c) {
+        std::snprintf(buf, sizeof buf, "%.3f", table.deflectionUm(static_cast<int>(c)));
+        out << c << ',' << buf << '\n';
+    }
+    return out.str();
+}
+
+std::string tableToCHeader(const LinearisationTable& table, const TableImageInfo& info) {
+    const std::vector<std::uint8_t> image = encodeTableImage(table, info);
+    std::ostringstream out;
+    out << "/* Probe mandrel linearisation table, generated by TrueTurn.\n"
+        << " * ADC code -> deflection: deflection_nm = tt_lin_table[code] * TT_LIN_TABLE_SCALE_NM.\n"
+        << " * Plane " << int(info.plane) << (info.plane == 0 ? " (X, radial)" : " (Y, tangential)")
+        << ", fitted characteristic of degree " << int(info.degree) << ". */\n"
+        << "#ifndef TT_LIN_TABLE_H\n#define TT_LIN_TABLE_H\n\n#include <stdint.h>\n\n"
+        << "#define TT_LIN_TABLE_BITS " << table.adcBits << "\n"
+        << "#define TT_LIN_TABLE_ENTRIES " << table.entries.size() << "u\n"
+        << "#define TT_LIN_TABLE_SCALE_NM " << table.scaleNm << "\n"
+        << "#define TT_LIN_TABLE_VERSION " << info.version << "u\n"
+        << "#define TT_LIN_TABLE_CREATED " << info.createdUnixS << "LL\n"
+        << "#define TT_LIN_TABLE_IMAGE_CRC " << hex16(tableImageCrc(image)) << "u\n\n"
+        << "static const int16_t tt_lin_table[TT_LIN_TABLE_ENTRIES] = {\n";
+    for (std::size_t c = 0; c < table.entries.size(); ++c) {
+        if (c % 12 == 0) out << "   ";
+        out << ' ' << table.entries[c] << (c + 1 < table.entries.size() ? "," : "");
+        if (c % 12 == 11 || c + 1 == table.entries.size()) out << '\n';
+    }
+    out << "};\n\n#endif /* TT_LIN_TABLE_H */\n";
+    return out.str();
+}
+
+}  // namespace tt::core

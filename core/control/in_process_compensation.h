@@ -1,0 +1,103 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/calibration/probe_linearisation.h"
+#include "core/control/deflection_compensator.h"
+#include "core/control/dither_force_estimator.h"
+#include "core/ports/correction_output.h"
+#include "core/ports/deflection_probe.h"
+#include "core/ports/drive_current.h"
+
+namespace tt::core {
+
+/// What a deflection source says for one PLC cycle.
+struct DeflectionReading {
+    std::optional<double> deflectionMm;  ///< tool tip deflection along X, mm (negative: towards the axis)
+    std::optional<double> forceN;        ///< radial force pushing the tool towards the axis, N, when known
+    bool fresh = false;                  ///< a new measurement arrived this cycle
+    std::string reason;                  ///< why there is no valid deflection, in the user's terms
+};
+
+/// Where the compensator gets the deflection from (paper 001: way 1 current, way 2 probe).
+class DeflectionSource {
+public:
+    virtual ~DeflectionSource() = default;
+    /// "current" or "probe".
+    virtual std::string name() const = 0;
+    /// Takes everything that arrived since the last poll (never blocks); `nowS` = Clock time.
+    virtual DeflectionReading poll(double nowS) = 0;
+    /// Told after each cycle how fast the offset just sent will move the slide during the next
+    /// cycle (the CNC spreads it over the cycle), mm/s.
+    virtual void offsetMoving(double /*offsetVelocityMmPerS*/) {}
+};
+
+/// Way 1: force from the cross-feed motor current with dither, deflection −P / k_st.
+class CurrentDeflectionSource final : public DeflectionSource {
+public:
+    CurrentDeflectionSource(DriveCurrentReadout& readout, const DitherEstimatorConfig& config);
+    std::string name() const override { return "current"; }
+    DeflectionReading poll(double nowS) override;
+    void offsetMoving(double offsetVelocityMmPerS) override { m_nextOffsetVelocity = offsetVelocityMmPerS; }
+    DitherForceEstimator& estimator() { return m_estimator; }
+
+private:
+    DriveCurrentReadout& m_readout;
+    DitherForceEstimator m_estimator;
+    double m_nextOffsetVelocity = 0.0;  ///< offset speed during the cycle whose samples come next
+};
+
+/// Way 2: the probe mandrel's deflection in one bending plane, linearised by the mandrel's
+/// own table or, for raw codes, by a host-side table. The samples of a cycle are averaged; a
+/// reading older than `maxSilenceS` is not used.
+class ProbeDeflectionSource final : public DeflectionSource {
+public:
+    /// `plane` 0 = X (radial), 1 = Y; `stiffnessNPerMm` > 0 also reports the force k·|δ|.
+    ProbeDeflectionSource(DeflectionProbe& probe, int plane, std::optional<LinearisationTable> hostTable,
+                          double stiffnessNPerMm = 0.0, double maxSilenceS = 0.5);
+    std::string name() const override { return "probe"; }
+    DeflectionReading poll(double nowS) override;
+
+private:
+    DeflectionProbe& m_probe;
+    int m_plane;
+    std::optional<LinearisationTable> m_hostTable;
+    double m_stiffnessNPerMm;
+    double m_maxSilenceS;
+    std::optional<double> m_lastDeflectionMm;
+    double m_lastSampleS = 0.0;
+};
+
+/// One PLC cycle of the in-process compensation, for logs and plots.
+struct CompensationCycle {
+    double timeS = 0.0;
+    DeflectionReading reading;
+    CompensationStep step;
+    bool sent = false;        ///< the offset was written to the CNC
+    std::string outputError;  ///< why the write failed or was skipped
+};
+
+/// The in-process compensation loop (issue item 6): every PLC cycle it polls the source, limits
+/// the offset (DeflectionCompensator) and writes it with CorrectionOutput::sendDynamicOffset.
+/// A silent source or a failed write holds the last offset the CNC really has.
+class InProcessCompensator {
+public:
+    /// `plcCycleS` must be within 0.01 .. 0.1 s (paper 001: the PLC period, 10..100 ms).
+    InProcessCompensator(DeflectionSource& source, CorrectionOutput& output, const CompensatorLimits& limits,
+                         double plcCycleS);
+    /// Runs one cycle at Clock time `nowS`.
+    CompensationCycle cycle(double nowS);
+    double offsetMm() const { return m_compensator.offsetMm(); }
+    double plcCycleS() const { return m_cycleS; }
+
+private:
+    DeflectionSource& m_source;
+    CorrectionOutput& m_output;
+    DeflectionCompensator m_compensator;
+    double m_cycleS;
+    double m_lastSentMm = 0.0;
+};
+
+}  // namespace tt::core
