@@ -12,3 +12,4 @@ target_sources(trueturn_core PRIVATE
     sim/probe_calibration_rig.cpp
     sim/boring_experiment.cpp
 )
+include("${CMAKE_CURRENT_LIST_DIR}/lathe_sources.cmake")

@@ -1,0 +1,51 @@
+#include "core/loop/correction_limiter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace tt::core {
+
+namespace {
+std::string mm3(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3f", v);
+    return text;
+}
+}  // namespace
+
+CorrectionLimiter::CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm)
+    : m_limits(limits), m_pointZ(std::move(pointZMm)), m_last(m_pointZ.size(), 0.0) {}
+
+void CorrectionLimiter::setLastApplied(std::vector<double> appliedMm) {
+    if (appliedMm.size() != m_pointZ.size()) throw std::invalid_argument("one applied correction per point is needed");
+    m_last = std::move(appliedMm);
+}
+
+LimitedCorrection CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
+    if (static_cast<std::size_t>(computedMm.size()) != m_pointZ.size())
+        throw std::invalid_argument("the controller returned " + std::to_string(computedMm.size()) +
+                                    " corrections for " + std::to_string(m_pointZ.size()) + " points");
+    LimitedCorrection out;
+    out.appliedMm.resize(m_pointZ.size());
+    for (std::size_t i = 0; i < m_pointZ.size(); ++i) {
+        const double asked = computedMm(static_cast<Eigen::Index>(i));
+        const std::string where = "point " + std::to_string(i + 1) + " (x = " + mm3(m_pointZ[i]) + " mm)";
+        if (!std::isfinite(asked)) {
+            out.appliedMm[i] = m_last[i];
+            out.notes.push_back("the controller gave no usable correction at " + where + "; holding " + mm3(m_last[i]) +
+                                " mm");
+            continue;
+        }
+        double v = std::clamp(asked, m_last[i] - m_limits.maxStepMm, m_last[i] + m_limits.maxStepMm);
+        v = std::clamp(v, -m_limits.maxAbsMm, m_limits.maxAbsMm);
+        if (v != asked)
+            out.notes.push_back("correction at " + where + " limited from " + mm3(asked) + " to " + mm3(v) + " mm");
+        out.appliedMm[i] = v;
+    }
+    m_last = out.appliedMm;
+    return out;
+}
+
+}  // namespace tt::core

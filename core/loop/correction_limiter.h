@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/loop/loop_config.h"
+
+namespace tt::core {
+
+/// What the limiter did to one part's corrections.
+struct LimitedCorrection {
+    std::vector<double> appliedMm;   ///< what may go to the CNC, radial mm
+    std::vector<std::string> notes;  ///< one line per point that was changed, in the user's terms
+};
+
+/// Keeps the corrections sent to the CNC inside the loop's limits: a value that is not a number holds
+/// the last applied value; then |u| <= maxAbs and |u - u_last| <= maxStep. Starts from zero.
+class CorrectionLimiter {
+public:
+    CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm);
+
+    /// Limits `computedMm` (one per point) against the last applied corrections and remembers the result.
+    LimitedCorrection apply(const Eigen::VectorXd& computedMm);
+    /// The last applied corrections (zeros before the first part).
+    const std::vector<double>& lastAppliedMm() const { return m_last; }
+    /// Sets the last applied corrections (on resume).
+    void setLastApplied(std::vector<double> appliedMm);
+
+private:
+    CorrectionLimits m_limits;
+    std::vector<double> m_pointZ;
+    std::vector<double> m_last;
+};
+
+}  // namespace tt::core

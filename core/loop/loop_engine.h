@@ -1,0 +1,151 @@
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/control/run_to_run_controller.h"
+#include "core/loop/correction_limiter.h"
+#include "core/loop/loop_config.h"
+#include "core/loop/loop_events.h"
+#include "core/loop/loop_state.h"
+#include "core/loop/measurement_session.h"
+#include "core/ports/clock.h"
+#include "core/ports/correction_output.h"
+#include "core/ports/diameter_gauge.h"
+#include "core/ports/history_store.h"
+#include "core/ports/machine_cycle.h"
+
+namespace tt::core {
+
+/// The outside world of the loop: every device through its port, the history (may be null: nothing
+/// is stored) and the time.
+struct LoopPorts {
+    MachineCycle& machine;
+    CorrectionOutput& output;
+    DiameterGauge& gauge;
+    const Clock& clock;
+    HistoryStore* history = nullptr;
+};
+
+/// The corrections for part `partNumber` as the CNC receives them: the applied per-point corrections
+/// and the path y_set(x) = y_ff(x) + PCHIP/spline through them (paper 000's approximation unit).
+/// Throws std::invalid_argument on a bad correction.
+PartCorrection partCorrectionFor(const LoopConfig& config, std::int64_t partNumber,
+                                 const std::vector<double>& appliedMm);
+
+/// The corrections a stored part really received (to put it back on the measuring station on resume).
+PartCorrection partCorrectionFor(const LoopConfig& config, const StoredPart& part);
+
+/// The closed loop of paper 000 (outer loop, one step per part), written against the ports only:
+///   path for part n = feed-forward y_ff(x) + interpolated corrections u_1..u_N  ->  CNC
+///   -> part n is machined -> its diameters are measured (gauge, in point order)
+///   -> the measurement of part n - z is offered to the controller before part n   -> new path.
+/// A step function: step() does everything that is possible at the clock's time and never blocks;
+/// a thread (GUI), a plain loop (CLI, runSimulation) or a test drives it.
+/// Safe behaviour: when the diameters the next part needs do not come (gauge not ready, or nothing
+/// for gaugeTimeoutS) the loop pauses and the CNC keeps the last correction; it continues by itself
+/// once they are in. A reading outside nominal ± plausibleRangeMm, or one the controller rejects, is
+/// stored with its reason and the point counts as unmeasured. Corrections go through the
+/// CorrectionLimiter. A CNC or history failure is a Fault that holds the last correction.
+class LoopEngine {
+public:
+    /// Throws std::invalid_argument on a bad config or a controller with another number of points.
+    LoopEngine(LoopConfig config, LoopPorts ports, std::unique_ptr<RunToRunController> controller);
+
+    /// Events go to `listener` (may be null) on the thread that calls the engine.
+    void setListener(LoopListener* listener) { m_listener = listener; }
+
+    /// Starts a new run (Idle -> Running) and records it in the history.
+    void start(const RunDescription& run);
+    /// Continues a stored run (Idle -> Running): the controller state, the next part number, the parts
+    /// still waiting to be measured and the measurements stored but not yet used. The caller puts the
+    /// pending parts back on the measuring station first (real shop: they are on the rack).
+    void resumeFrom(const ResumePoint& point);
+    /// The operator pauses: no new part is started (the part on the machine is finished).
+    void pause();
+    /// The operator continues a paused run.
+    void continueRun();
+    /// Ends the run (any state -> Idle); a part on the machine is abandoned and not recorded.
+    void stop();
+    /// The oldest part waiting for its diameters is declared unmeasured (the operator skips it).
+    void skipMeasurement();
+
+    /// Does everything possible at the clock's time: finished parts, readings, the next part.
+    void step();
+    /// The latest time at which step() must run again even if no device reports anything (a timeout),
+    /// +infinity when only device events matter.
+    double nextWakeS() const;
+
+    LoopState state() const { return m_state; }
+    /// What the loop is doing, in plain words ("machining part 12", "waiting for the diameters of part 9").
+    const std::string& detail() const { return m_detail; }
+    /// The run reached its last part and every part was measured.
+    bool complete() const { return m_complete; }
+    std::optional<std::int64_t> runId() const { return m_runId; }
+    /// The part that will be started next.
+    std::int64_t nextPartNumber() const { return m_nextPart; }
+    /// Parts finished in this session (after a resume: since the resume).
+    std::int64_t partsFinished() const { return m_partsFinished; }
+    /// The part waiting longest for its diameters, if any.
+    std::optional<std::int64_t> partAwaitingMeasurement() const;
+    /// The control point the next reading goes to (of partAwaitingMeasurement()).
+    std::optional<std::size_t> nextMeasuredPoint() const;
+    /// Corrections last sent to the CNC, radial mm per point.
+    const std::vector<double>& lastAppliedMm() const { return m_limiter.lastAppliedMm(); }
+    const LoopConfig& config() const { return m_config; }
+    const RunToRunController& controller() const { return *m_controller; }
+
+private:
+    struct InProgress {
+        std::int64_t partNumber = 0;
+        double startedS = 0.0;
+        std::vector<PointCorrectionRecord> corrections;
+        std::optional<PartMeasurementRecord> usedMeasurement;
+        ControllerState controllerState;
+    };
+    enum class PauseCause { None, Operator, Gauge };
+
+    void collectFinishedParts();
+    void collectReadings();
+    void completeMeasurement(PartMeasurementRecord record);
+    bool measurementDueReady(std::int64_t partNumber);
+    void startNextPart();
+    void maybeComplete();
+    PartMeasurementRecord judge(std::int64_t partNumber, const std::vector<std::optional<double>>& diameters,
+                                double timeS) const;
+    void offerMeasurement(PartMeasurementRecord& record);
+    void setState(LoopState state, const std::string& detail);
+    void alarm(const std::string& kind, const std::string& message, std::optional<std::int64_t> part = std::nullopt);
+    void fault(const std::string& message);
+    void emit(LoopEvent event);
+    void watchDevices();
+    void openSession();
+
+    LoopConfig m_config;
+    LoopPorts m_ports;
+    std::unique_ptr<RunToRunController> m_controller;
+    CorrectionLimiter m_limiter;
+    LoopListener* m_listener = nullptr;
+
+    LoopState m_state = LoopState::Idle;
+    std::string m_detail;
+    PauseCause m_pauseCause = PauseCause::None;
+    bool m_complete = false;
+    std::optional<std::int64_t> m_runId;
+    std::int64_t m_nextPart = 1;
+    std::int64_t m_partsFinished = 0;
+    std::optional<InProgress> m_inProgress;
+    std::deque<std::int64_t> m_awaiting;          ///< finished parts waiting for their diameters, oldest first
+    std::optional<MeasurementSession> m_session;  ///< readings of m_awaiting.front()
+    std::map<std::int64_t, PartMeasurementRecord> m_measured;  ///< complete, not yet offered
+    double m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
+    std::map<std::string, DeviceState> m_deviceStates;
+};
+
+}  // namespace tt::core

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace tt::core {
+
+class LoopEngine;
+class ManualClock;
+
+/// What simulated devices know about their own future, so a simulation can jump from event to event
+/// instead of waiting: the next simulated time at which something changes (a part ends, a reading
+/// arrives, a fault starts or stops); +infinity when nothing is scheduled.
+class SimulationTimeline {
+public:
+    virtual ~SimulationTimeline() = default;
+    virtual double nextEventTimeS() const = 0;
+};
+
+/// How a simulation run ended.
+struct SimulationOutcome {
+    bool complete = false;    ///< the run reached its last part and every part was measured
+    std::string stopReason;   ///< otherwise why it stopped (fault, stuck), in the user's terms
+    double simulatedS = 0.0;  ///< simulated time at the end, s
+};
+
+/// Runs the engine on simulated devices as fast as possible: step, then move the clock to the next
+/// event of the devices or the engine. Stops when the run completes, on a fault, when nothing can
+/// happen any more (nobody will answer) or after `maxSteps` steps.
+SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
+                                std::int64_t maxSteps = 100'000'000);
+
+}  // namespace tt::core

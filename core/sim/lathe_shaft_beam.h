@@ -1,0 +1,45 @@
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace tt::core {
+
+/// A shaft between centres as an Euler–Bernoulli beam on two elastic supports (the headstock centre
+/// at x = 0, the tailstock centre at x = L; radial springs, rotation free), discretised into equal
+/// finite elements with cubic Hermite shape functions. For point loads at the nodes this is exact:
+/// for a uniform shaft the deflection under the load equals the closed form
+/// P [ (1-ξ)²/k_A + ξ²/k_B + x²(L-x)²/(3 E I L) ], ξ = x / L (Timoshenko & Gere, simply supported beam,
+/// plus the rigid-body motion on the springs).
+class LatheShaftBeam {
+public:
+    /// Throws std::invalid_argument unless every value is finite and positive and elements >= 2.
+    LatheShaftBeam(double lengthMm, double youngModulusNPerMm2, double headstockNPerMm, double tailstockNPerMm,
+                   int elements);
+
+    int elementCount() const { return m_elements; }
+    int nodeCount() const { return m_elements + 1; }
+    double elementLengthMm() const { return m_lengthMm / m_elements; }
+    /// x of node i, mm.
+    double nodeXMm(int node) const { return elementLengthMm() * node; }
+
+    /// Radial deflection at every node under a radial force `forceN` at node `loadNode`, mm,
+    /// for the element diameters `elementDiameterMm` (one per element, solid round section I = π d⁴ / 64).
+    Eigen::VectorXd deflectionMm(int loadNode, double forceN, const std::vector<double>& elementDiameterMm) const;
+
+    /// The compliance under the cutter while it cuts at each node, mm/N: the shaft is stepped, the blank
+    /// diameter ahead of the cutter and the finished diameter behind it (`feedTowardsHeadstock`: the
+    /// cut runs from x = L to x = 0, so the finished part is at x > cutter).
+    std::vector<double> cuttingComplianceMmPerN(double finishDiameterMm, double blankDiameterMm,
+                                                bool feedTowardsHeadstock) const;
+
+private:
+    double m_lengthMm;
+    double m_youngModulus;
+    double m_headstock;
+    double m_tailstock;
+    int m_elements;
+};
+
+}  // namespace tt::core
