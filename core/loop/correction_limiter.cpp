@@ -1,6 +1,5 @@
 #include "core/loop/correction_limiter.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -23,11 +22,11 @@ void CorrectionLimiter::setLastApplied(std::vector<double> appliedMm) {
     m_last = std::move(appliedMm);
 }
 
-LimitedCorrection CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
+LimiterOutcome CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
     if (static_cast<std::size_t>(computedMm.size()) != m_pointZ.size())
         throw std::invalid_argument("the controller returned " + std::to_string(computedMm.size()) +
                                     " corrections for " + std::to_string(m_pointZ.size()) + " points");
-    LimitedCorrection out;
+    LimiterOutcome out;
     out.appliedMm.resize(m_pointZ.size());
     for (std::size_t i = 0; i < m_pointZ.size(); ++i) {
         const double asked = computedMm(static_cast<Eigen::Index>(i));
@@ -38,8 +37,9 @@ LimitedCorrection CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
                                 " mm");
             continue;
         }
-        double v = std::clamp(asked, m_last[i] - m_limits.maxStepMm, m_last[i] + m_limits.maxStepMm);
-        v = std::clamp(v, -m_limits.maxAbsMm, m_limits.maxAbsMm);
+        const Eigen::VectorXd one = Eigen::VectorXd::Constant(1, asked);
+        const Eigen::VectorXd last = Eigen::VectorXd::Constant(1, m_last[i]);
+        const double v = applyCorrectionLimits(one, last, m_limits).correctionMm(0);
         if (v != asked)
             out.notes.push_back("correction at " + where + " limited from " + mm3(asked) + " to " + mm3(v) + " mm");
         out.appliedMm[i] = v;

@@ -10,19 +10,20 @@
 namespace tt::core {
 
 /// What the limiter did to one part's corrections.
-struct LimitedCorrection {
+struct LimiterOutcome {
     std::vector<double> appliedMm;   ///< what may go to the CNC, radial mm
     std::vector<std::string> notes;  ///< one line per point that was changed, in the user's terms
 };
 
 /// Keeps the corrections sent to the CNC inside the loop's limits: a value that is not a number holds
-/// the last applied value; then |u| <= maxAbs and |u - u_last| <= maxStep. Starts from zero.
+/// the last applied value; then applyCorrectionLimits (the step around the last applied value, then the
+/// absolute range). Starts from zero.
 class CorrectionLimiter {
 public:
     CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm);
 
     /// Limits `computedMm` (one per point) against the last applied corrections and remembers the result.
-    LimitedCorrection apply(const Eigen::VectorXd& computedMm);
+    LimiterOutcome apply(const Eigen::VectorXd& computedMm);
     /// The last applied corrections (zeros before the first part).
     const std::vector<double>& lastAppliedMm() const { return m_last; }
     /// Sets the last applied corrections (on resume).

@@ -14,8 +14,7 @@ void validateLoopConfig(const LoopConfig& c) {
     positive(c.nominalDiameterMm, "the nominal diameter");
     positive(c.pathStepMm, "the path step");
     positive(c.plausibleRangeMm, "the plausible range of a reading");
-    positive(c.limits.maxAbsMm, "the largest correction");
-    positive(c.limits.maxStepMm, "the largest correction change per part");
+    c.limits.validate();
     positive(c.gaugeTimeoutS, "the gauge timeout");
     if (c.pointZMm.empty() || c.pointZMm.size() > 16)
         throw std::invalid_argument("the loop needs 1 .. 16 control points (got " + std::to_string(c.pointZMm.size()) +

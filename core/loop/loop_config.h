@@ -5,18 +5,11 @@
 #include <optional>
 #include <vector>
 
+#include "core/control/correction_limits.h"
 #include "core/control/profile_interpolation.h"
 #include "core/model/scaled_polynomial.h"
 
 namespace tt::core {
-
-/// Safety limits of the radial corrections the loop sends to the CNC, mm. The controller has its
-/// own limits; these are the loop's last line: whatever the controller returns, what reaches the CNC
-/// stays inside them.
-struct CorrectionLimits {
-    double maxAbsMm = 0.5;   ///< |u_i| <= maxAbs
-    double maxStepMm = 0.1;  ///< |u_i(k) - u_i(k-1)| <= maxStep
-};
 
 /// How the closed loop runs (paper 000's outer loop).
 struct LoopConfig {
@@ -30,7 +23,9 @@ struct LoopConfig {
     InterpolationMethod interpolation = InterpolationMethod::Pchip;
     double pathStepMm = 0.5;        ///< sampling of the path sent to the CNC, mm
     double plausibleRangeMm = 0.5;  ///< a reading farther than this from the nominal is rejected, mm
-    CorrectionLimits limits;
+    /// The loop's own limits on what reaches the CNC (the controller has its own; these are the last
+    /// line: whatever the controller returns, the CNC gets values inside them).
+    CorrectionLimits limits{0.5, 0.1};
     double gaugeTimeoutS = 600.0;  ///< diameters due but not complete for this long: pause, s
     std::int64_t firstPartNumber = 1;
     /// The run ends after this part is machined and every part is measured; none = until stopped.

@@ -390,7 +390,7 @@ void LoopEngine::startNextPart() {
 
     const std::vector<double> previous = m_limiter.lastAppliedMm();
     Eigen::VectorXd computed;
-    LimitedCorrection limited;
+    LimiterOutcome limited;
     PartCorrection correction;
     try {
         computed = m_controller->nextCorrection(n);
