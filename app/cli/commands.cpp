@@ -4,10 +4,16 @@ namespace tt::cli {
 
 // One factory per command, each in its own cmd_<name>.cpp.
 Command makeFitProfileCommand();
+Command makeLqgCommand();
+Command makeSimulateCommand();
+Command makeBenchCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
         makeFitProfileCommand(),
+        makeLqgCommand(),
+        makeSimulateCommand(),
+        makeBenchCommand(),
     };
     return all;
 }

@@ -161,6 +161,13 @@ DisturbanceRealisation DisturbanceModel::realise() const {
     return r;
 }
 
+std::string DisturbanceModel::describe() const {
+    std::string out;
+    for (const auto& c : m_components)
+        out += (out.empty() ? "" : " + ") + c.describe();
+    return out;
+}
+
 Eigen::MatrixXd DisturbanceModel::priorCovariance(double randomWalkPriorMm2) const {
     std::vector<Eigen::MatrixXd> blocks;
     Eigen::Index states = 0;

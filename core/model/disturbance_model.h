@@ -65,6 +65,8 @@ public:
     double stationaryVarianceMm2() const;
     /// Block-diagonal realisation of the sum: one white input per component.
     DisturbanceRealisation realise() const;
+    /// The components' descriptions joined with " + ".
+    std::string describe() const;
     /// Covariance of the realisation's state before anything is known: the stationary covariance of
     /// each stationary component, `randomWalkPriorMm2` for a random-walk state (it has none).
     Eigen::MatrixXd priorCovariance(double randomWalkPriorMm2) const;

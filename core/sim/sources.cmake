@@ -5,6 +5,7 @@ target_sources(trueturn_core PRIVATE
     sim/run_to_run_analysis.cpp
     sim/run_to_run_monte_carlo.cpp
     sim/run_to_run_study.cpp
+    sim/run_to_run_timing.cpp
     sim/dither_profile.cpp
     sim/cross_feed_drive.cpp
     sim/inductive_probe.cpp
