@@ -1,0 +1,318 @@
+#include "core/storage/history_store.h"
+
+#include <QDateTime>
+#include <QSqlQuery>
+#include <QVariant>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace tt::storage {
+
+namespace {
+
+QString nowText() {
+    return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+}
+
+QString text(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+QVariant optionalReal(const std::optional<double>& v) {
+    return v ? QVariant(*v) : QVariant(QMetaType::fromType<double>());
+}
+
+QVariant id(std::int64_t v) {
+    return QVariant(static_cast<qlonglong>(v));
+}
+
+void exec(Database& db, const char* sql, const QVariantList& bindings = {}) {
+    db.exec(QString::fromLatin1(sql), bindings);
+}
+
+}  // namespace
+
+SchemaModule historySchema() {
+    SchemaModule module{QStringLiteral("history"), {}};
+    module.migrations.push_back(
+        {1, QStringLiteral("runs, parts, corrections, measurements, controller state, alarms"), [](Database& db) {
+             exec(db,
+                  "CREATE TABLE runs (id {pk}, started_at TEXT NOT NULL, finished_at TEXT, status TEXT NOT NULL,"
+                  " preset TEXT NOT NULL, controller TEXT NOT NULL, delay_parts INTEGER NOT NULL,"
+                  " nominal_diameter_mm {real} NOT NULL, part_length_mm {real} NOT NULL, settings TEXT NOT NULL)");
+             exec(db,
+                  "CREATE TABLE run_points (run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                  " point_index INTEGER NOT NULL, z_mm {real} NOT NULL, PRIMARY KEY (run_id, point_index))");
+             exec(db,
+                  "CREATE TABLE parts (id {pk}, run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                  " part_number {bigint} NOT NULL, started_s {real} NOT NULL, finished_s {real} NOT NULL,"
+                  " recorded_at TEXT NOT NULL, UNIQUE (run_id, part_number))");
+             exec(db,
+                  "CREATE TABLE corrections (part_id {bigint} NOT NULL REFERENCES parts(id) ON DELETE CASCADE,"
+                  " point_index INTEGER NOT NULL, z_mm {real} NOT NULL, computed_mm {real} NOT NULL,"
+                  " applied_mm {real} NOT NULL, PRIMARY KEY (part_id, point_index))");
+             exec(db,
+                  "CREATE TABLE measurements (part_id {bigint} NOT NULL REFERENCES parts(id) ON DELETE CASCADE,"
+                  " point_index INTEGER NOT NULL, z_mm {real} NOT NULL, measured_mm {real}, nominal_mm {real} NOT NULL,"
+                  " accepted INTEGER NOT NULL, reason TEXT NOT NULL, measured_s {real} NOT NULL,"
+                  " PRIMARY KEY (part_id, point_index))");
+             exec(db,
+                  "CREATE TABLE run_state (run_id {bigint} PRIMARY KEY REFERENCES runs(id) ON DELETE CASCADE,"
+                  " last_part {bigint} NOT NULL, controller_kind TEXT NOT NULL, controller_state TEXT NOT NULL)");
+             exec(db,
+                  "CREATE TABLE alarms (id {pk}, run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                  " part_number {bigint}, time_s {real} NOT NULL, kind TEXT NOT NULL, message TEXT NOT NULL,"
+                  " recorded_at TEXT NOT NULL)");
+             exec(db, "CREATE INDEX parts_by_run ON parts (run_id, part_number)");
+             exec(db, "CREATE INDEX alarms_by_run ON alarms (run_id, id)");
+         }});
+    return module;
+}
+
+std::string encodeControllerValues(const std::vector<double>& values) {
+    std::string out;
+    char buffer[40];
+    for (double v : values) {
+        std::snprintf(buffer, sizeof buffer, "%.17g", v);
+        if (!out.empty()) out += ' ';
+        out += buffer;
+    }
+    return out;
+}
+
+std::vector<double> decodeControllerValues(const std::string& textValue) {
+    std::vector<double> values;
+    const char* p = textValue.c_str();
+    while (*p) {
+        while (*p == ' ')
+            ++p;
+        if (!*p) break;
+        char* end = nullptr;
+        errno = 0;
+        const double v = std::strtod(p, &end);
+        if (end == p)
+            throw StorageError("the stored controller state is damaged near '" + std::string(p).substr(0, 20) + "'");
+        values.push_back(v);
+        p = end;
+    }
+    return values;
+}
+
+SqlHistoryStore::SqlHistoryStore(Database& database) : m_db(database) {
+    m_db.migrate(historySchema());
+}
+
+std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
+    std::int64_t runId = 0;
+    m_db.transaction([&] {
+        QSqlQuery insert = m_db.exec(
+            QStringLiteral("INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
+                           " part_length_mm, settings) VALUES (?, 'running', ?, ?, ?, ?, ?, ?)"),
+            {nowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm, run.partLengthMm,
+             text(run.settingsJson)});
+        runId = m_db.lastInsertId(insert);
+        for (std::size_t i = 0; i < run.pointZMm.size(); ++i)
+            m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
+                      {id(runId), static_cast<int>(i), run.pointZMm[i]});
+    });
+    return runId;
+}
+
+qint64 SqlHistoryStore::partId(std::int64_t runId, std::int64_t partNumber) {
+    QSqlQuery q = m_db.exec(QStringLiteral("SELECT id FROM parts WHERE run_id = ? AND part_number = ?"),
+                            {id(runId), id(partNumber)});
+    if (!q.next())
+        throw StorageError("part " + std::to_string(partNumber) + " of run " + std::to_string(runId) +
+                           " is not stored, so its diameters cannot be");
+    return q.value(0).toLongLong();
+}
+
+void SqlHistoryStore::writeMeasurement(qint64 part, const core::PartMeasurementRecord& m) {
+    m_db.exec(QStringLiteral("DELETE FROM measurements WHERE part_id = ?"), {part});
+    for (const core::PointMeasurementRecord& p : m.points)
+        m_db.exec(QStringLiteral("INSERT INTO measurements (part_id, point_index, z_mm, measured_mm, nominal_mm,"
+                                 " accepted, reason, measured_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
+                  {part, p.pointIndex, p.zMm, optionalReal(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0,
+                   text(p.reason), m.timeS});
+}
+
+void SqlHistoryStore::recordPart(std::int64_t runId, const core::PartCompletionRecord& part) {
+    m_db.transaction([&] {
+        QSqlQuery insert =
+            m_db.exec(QStringLiteral("INSERT INTO parts (run_id, part_number, started_s, finished_s, recorded_at)"
+                                     " VALUES (?, ?, ?, ?, ?)"),
+                      {id(runId), id(part.partNumber), part.startedS, part.finishedS, nowText()});
+        const qint64 partRow = m_db.lastInsertId(insert);
+        for (const core::PointCorrectionRecord& c : part.corrections)
+            m_db.exec(QStringLiteral("INSERT INTO corrections (part_id, point_index, z_mm, computed_mm, applied_mm)"
+                                     " VALUES (?, ?, ?, ?, ?)"),
+                      {partRow, c.pointIndex, c.zMm, c.computedMm, c.appliedMm});
+        if (part.usedMeasurement)
+            writeMeasurement(partId(runId, part.usedMeasurement->partNumber), *part.usedMeasurement);
+        m_db.exec(
+            QStringLiteral("INSERT INTO run_state (run_id, last_part, controller_kind, controller_state)"
+                           " VALUES (?, ?, ?, ?) ON CONFLICT (run_id) DO UPDATE SET last_part = excluded.last_part,"
+                           " controller_kind = excluded.controller_kind,"
+                           " controller_state = excluded.controller_state"),
+            {id(runId), id(part.partNumber), text(part.controllerState.kind),
+             text(encodeControllerValues(part.controllerState.values))});
+    });
+}
+
+void SqlHistoryStore::recordMeasurement(std::int64_t runId, const core::PartMeasurementRecord& measurement) {
+    m_db.transaction([&] { writeMeasurement(partId(runId, measurement.partNumber), measurement); });
+}
+
+void SqlHistoryStore::recordAlarm(std::int64_t runId, const core::AlarmRecord& alarm) {
+    m_db.exec(QStringLiteral("INSERT INTO alarms (run_id, part_number, time_s, kind, message, recorded_at)"
+                             " VALUES (?, ?, ?, ?, ?, ?)"),
+              {id(runId),
+               alarm.partNumber ? QVariant(static_cast<qlonglong>(*alarm.partNumber))
+                                : QVariant(QMetaType::fromType<qlonglong>()),
+               alarm.timeS, text(alarm.kind), text(alarm.message), nowText()});
+}
+
+void SqlHistoryStore::finishRun(std::int64_t runId, const std::string& status) {
+    m_db.exec(QStringLiteral("UPDATE runs SET status = ?, finished_at = ? WHERE id = ?"),
+              {text(status), nowText(), id(runId)});
+}
+
+std::vector<core::RunSummary> SqlHistoryStore::runs() {
+    std::vector<core::RunSummary> out;
+    QSqlQuery q = m_db.exec(
+        QStringLiteral("SELECT r.id, r.started_at, r.finished_at, r.status, r.preset, r.controller, r.delay_parts,"
+                       " r.nominal_diameter_mm, r.part_length_mm, r.settings,"
+                       " (SELECT COUNT(*) FROM parts p WHERE p.run_id = r.id),"
+                       " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id)"
+                       " FROM runs r ORDER BY r.id DESC"));
+    while (q.next()) {
+        core::RunSummary s;
+        s.runId = q.value(0).toLongLong();
+        s.startedAt = q.value(1).toString().toStdString();
+        s.finishedAt = q.value(2).isNull() ? std::string() : q.value(2).toString().toStdString();
+        s.status = q.value(3).toString().toStdString();
+        s.description.preset = q.value(4).toString().toStdString();
+        s.description.controller = q.value(5).toString().toStdString();
+        s.description.delayParts = q.value(6).toInt();
+        s.description.nominalDiameterMm = q.value(7).toDouble();
+        s.description.partLengthMm = q.value(8).toDouble();
+        s.description.settingsJson = q.value(9).toString().toStdString();
+        s.partCount = q.value(10).toLongLong();
+        if (!q.value(11).isNull()) s.lastPartNumber = q.value(11).toLongLong();
+        out.push_back(std::move(s));
+    }
+    q.finish();
+    for (core::RunSummary& s : out) {
+        QSqlQuery points = m_db.exec(
+            QStringLiteral("SELECT z_mm FROM run_points WHERE run_id = ? ORDER BY point_index"), {id(s.runId)});
+        while (points.next())
+            s.description.pointZMm.push_back(points.value(0).toDouble());
+    }
+    return out;
+}
+
+std::optional<core::RunSummary> SqlHistoryStore::run(std::int64_t runId) {
+    for (core::RunSummary& s : runs())
+        if (s.runId == runId) return s;
+    return std::nullopt;
+}
+
+std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std::int64_t fromPartNumber) {
+    std::vector<core::StoredPart> parts;
+    std::map<qint64, std::size_t> byRow;
+    {
+        QSqlQuery q = m_db.exec(QStringLiteral("SELECT id, part_number, started_s, finished_s FROM parts"
+                                               " WHERE run_id = ? AND part_number >= ? ORDER BY part_number"),
+                                {id(runId), id(fromPartNumber)});
+        while (q.next()) {
+            byRow[q.value(0).toLongLong()] = parts.size();
+            parts.push_back({q.value(1).toLongLong(), q.value(2).toDouble(), q.value(3).toDouble(), {}, std::nullopt});
+        }
+    }
+    {
+        QSqlQuery q = m_db.exec(
+            QStringLiteral("SELECT c.part_id, c.point_index, c.z_mm, c.computed_mm, c.applied_mm FROM corrections c"
+                           " JOIN parts p ON p.id = c.part_id WHERE p.run_id = ? AND p.part_number >= ?"
+                           " ORDER BY p.part_number, c.point_index"),
+            {id(runId), id(fromPartNumber)});
+        while (q.next()) {
+            const auto it = byRow.find(q.value(0).toLongLong());
+            if (it == byRow.end()) continue;
+            parts[it->second].corrections.push_back(
+                {q.value(1).toInt(), q.value(2).toDouble(), q.value(3).toDouble(), q.value(4).toDouble()});
+        }
+    }
+    {
+        QSqlQuery q = m_db.exec(
+            QStringLiteral("SELECT m.part_id, m.point_index, m.z_mm, m.measured_mm, m.nominal_mm, m.accepted, m.reason,"
+                           " m.measured_s FROM measurements m JOIN parts p ON p.id = m.part_id"
+                           " WHERE p.run_id = ? AND p.part_number >= ? ORDER BY p.part_number, m.point_index"),
+            {id(runId), id(fromPartNumber)});
+        while (q.next()) {
+            const auto it = byRow.find(q.value(0).toLongLong());
+            if (it == byRow.end()) continue;
+            core::StoredPart& part = parts[it->second];
+            if (!part.measurement)
+                part.measurement = core::PartMeasurementRecord{part.partNumber, q.value(7).toDouble(), {}};
+            core::PointMeasurementRecord p;
+            p.pointIndex = q.value(1).toInt();
+            p.zMm = q.value(2).toDouble();
+            if (!q.value(3).isNull()) p.measuredMm = q.value(3).toDouble();
+            p.nominalMm = q.value(4).toDouble();
+            p.accepted = q.value(5).toInt() != 0;
+            p.reason = q.value(6).toString().toStdString();
+            part.measurement->points.push_back(std::move(p));
+        }
+    }
+    return parts;
+}
+
+std::vector<core::StoredPart> SqlHistoryStore::parts(std::int64_t runId) {
+    return loadParts(runId, std::numeric_limits<std::int64_t>::min());
+}
+
+std::vector<core::AlarmRecord> SqlHistoryStore::alarms(std::int64_t runId) {
+    std::vector<core::AlarmRecord> out;
+    QSqlQuery q =
+        m_db.exec(QStringLiteral("SELECT part_number, time_s, kind, message FROM alarms WHERE run_id = ? ORDER BY id"),
+                  {id(runId)});
+    while (q.next()) {
+        core::AlarmRecord a;
+        if (!q.value(0).isNull()) a.partNumber = q.value(0).toLongLong();
+        a.timeS = q.value(1).toDouble();
+        a.kind = q.value(2).toString().toStdString();
+        a.message = q.value(3).toString().toStdString();
+        out.push_back(std::move(a));
+    }
+    return out;
+}
+
+std::optional<core::ResumePoint> SqlHistoryStore::resumePoint(std::optional<std::int64_t> runId) {
+    std::optional<core::RunSummary> summary;
+    if (runId) {
+        summary = run(*runId);
+        if (!summary) throw StorageError("there is no run " + std::to_string(*runId) + " in the history");
+    } else {
+        const auto all = runs();
+        if (all.empty()) return std::nullopt;
+        summary = all.front();
+    }
+    QSqlQuery q =
+        m_db.exec(QStringLiteral("SELECT last_part, controller_kind, controller_state FROM run_state WHERE run_id = ?"),
+                  {id(summary->runId)});
+    if (!q.next()) return std::nullopt;
+    core::ResumePoint point;
+    point.run = *summary;
+    point.lastPartNumber = q.value(0).toLongLong();
+    point.controllerState.kind = q.value(1).toString().toStdString();
+    point.controllerState.values = decodeControllerValues(q.value(2).toString().toStdString());
+    q.finish();
+    point.pendingParts = loadParts(summary->runId, point.lastPartNumber - summary->description.delayParts + 1);
+    return point;
+}
+
+}  // namespace tt::storage
