@@ -6,7 +6,7 @@
 
 namespace tt::core {
 
-double MachinedPart::diameterAtMm(double z) const {
+double TurnedPart::diameterAtMm(double z) const {
     if (zMm.empty() || zMm.size() != diameterMm.size()) throw std::logic_error("the machined part has no profile");
     if (z <= zMm.front()) return diameterMm.front();
     if (z >= zMm.back()) return diameterMm.back();

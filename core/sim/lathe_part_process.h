@@ -8,7 +8,7 @@
 namespace tt::core {
 
 /// A finished part as it leaves the machine: its diameter along the axis.
-struct MachinedPart {
+struct TurnedPart {
     std::int64_t partNumber = 0;
     std::vector<double> zMm;         ///< positions along the part, mm, increasing
     std::vector<double> diameterMm;  ///< true diameter there, mm
@@ -26,7 +26,7 @@ public:
     virtual ~LathePartProcess() = default;
 
     /// Machines part `correction.partNumber` (>= 1) with the corrections the CNC received.
-    virtual MachinedPart machine(const PartCorrection& correction) = 0;
+    virtual TurnedPart machine(const PartCorrection& correction) = 0;
     /// Nominal diameter of the part, mm.
     virtual double nominalDiameterMm() const = 0;
     /// Length of the part, mm.

@@ -101,7 +101,7 @@ std::vector<double> LatheSimulator::deterministicErrorMm(std::int64_t partNumber
     return error;
 }
 
-MachinedPart LatheSimulator::machine(const PartCorrection& correction) {
+TurnedPart LatheSimulator::machine(const PartCorrection& correction) {
     const std::int64_t k = correction.partNumber;
     if (k < 1) throw std::invalid_argument("part numbers start at 1 (got " + std::to_string(k) + ")");
     if (correction.path.zMm.size() != correction.path.xCorrectionMm.size())
@@ -112,7 +112,7 @@ MachinedPart LatheSimulator::machine(const PartCorrection& correction) {
     const std::vector<double> fPoints(f.data(), f.data() + f.size());
     const PiecewiseCubic variation = PiecewiseCubic::pchip(m_pointZ, fPoints);
 
-    MachinedPart part;
+    TurnedPart part;
     part.partNumber = k;
     part.zMm = m_gridZ;
     part.diameterMm.resize(m_gridZ.size());

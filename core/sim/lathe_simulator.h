@@ -27,7 +27,7 @@ public:
     /// `disturbance`: its N-point model. Throws std::invalid_argument on a bad set-up.
     LatheSimulator(const LatheSetup& setup, std::vector<double> controlPointZMm, LatheDisturbanceModel disturbance);
 
-    MachinedPart machine(const PartCorrection& correction) override;
+    TurnedPart machine(const PartCorrection& correction) override;
     double nominalDiameterMm() const override { return m_setup.workpiece.finishDiameterMm; }
     double partLengthMm() const override { return m_setup.workpiece.lengthMm; }
 

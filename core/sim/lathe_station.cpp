@@ -58,7 +58,7 @@ double LatheStation::afterSilence(double t) const {
 
 void LatheStation::finishMachining() {
     if (!m_machining || m_clock.nowS() < m_machining->finishS) return;
-    MachinedPart part = m_process.machine(m_machining->correction);
+    TurnedPart part = m_process.machine(m_machining->correction);
     const double finishS = m_machining->finishS;
     m_finished.push_back({part.partNumber, finishS});
     m_machined.push_back(part);
@@ -69,7 +69,7 @@ void LatheStation::finishMachining() {
 }
 
 void LatheStation::restoreMachinedPart(const PartCorrection& applied) {
-    MachinedPart part = m_process.machine(applied);
+    TurnedPart part = m_process.machine(applied);
     m_queue.push_back({std::move(part), m_clock.nowS(), 0});
 }
 

@@ -63,7 +63,7 @@ public:
     /// How many corrections the CNC has received in all.
     std::int64_t sentCount() const { return m_sentCount; }
     /// The parts machined so far with their true profiles (most recent last; at most `keep` kept).
-    const std::deque<MachinedPart>& machinedParts() const { return m_machined; }
+    const std::deque<TurnedPart>& machinedParts() const { return m_machined; }
     /// How many machined parts and corrections are kept (default 64).
     void setKeptParts(std::size_t keep) { m_keep = keep; }
     const std::vector<double>& measurePointZMm() const { return m_points; }
@@ -106,7 +106,7 @@ private:
         double finishS = 0.0;
     };
     struct ToMeasure {
-        MachinedPart part;
+        TurnedPart part;
         double readyS = 0.0;  ///< when the part reached the measuring station
         int nextPoint = 0;
     };
@@ -136,7 +136,7 @@ private:
     std::string m_outputFault;
     std::deque<PartCorrection> m_sent;
     std::int64_t m_sentCount = 0;
-    std::deque<MachinedPart> m_machined;
+    std::deque<TurnedPart> m_machined;
     std::size_t m_keep = 64;
 };
 

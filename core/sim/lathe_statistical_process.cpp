@@ -28,13 +28,13 @@ LatheStatisticalProcess::LatheStatisticalProcess(std::vector<double> pointZMm, E
             throw std::invalid_argument("the control points must be strictly increasing along the part");
 }
 
-MachinedPart LatheStatisticalProcess::machine(const PartCorrection& correction) {
+TurnedPart LatheStatisticalProcess::machine(const PartCorrection& correction) {
     const auto n = m_pointZ.size();
     if (!correction.pointCorrectionMm.empty() && correction.pointCorrectionMm.size() != n)
         throw std::invalid_argument("the correction has " + std::to_string(correction.pointCorrectionMm.size()) +
                                     " points, the plant " + std::to_string(n));
     const Eigen::VectorXd f = m_disturbance.diameterMm(correction.partNumber);
-    MachinedPart part;
+    TurnedPart part;
     part.partNumber = correction.partNumber;
     part.zMm = m_pointZ;
     part.diameterMm.resize(n);

@@ -21,7 +21,7 @@ public:
                             double nominalDiameterMm, double partLengthMm, std::uint64_t seed);
 
     /// Uses correction.pointCorrectionMm (one per point; none = no correction); the path is ignored.
-    MachinedPart machine(const PartCorrection& correction) override;
+    TurnedPart machine(const PartCorrection& correction) override;
     double nominalDiameterMm() const override { return m_nominal; }
     double partLengthMm() const override { return m_length; }
 

@@ -91,7 +91,7 @@ LatheSetup quietSetup() {
 TEST(LatheSimulator, FinishedDiameterIsTheSelfConsistentCut) {
     const LatheSetup setup = quietSetup();
     LatheSimulator sim(setup, {0.0, 162.5, 325.0}, LatheDisturbanceModel::none(3));
-    const MachinedPart part = sim.machine(PartCorrection{1, {}, {}, {}});
+    const TurnedPart part = sim.machine(PartCorrection{1, {}, {}, {}});
     const double k = sim.nominalRadialForceN() / setup.cutting.depthOfCutMm;  // N/mm
     for (std::size_t i = 0; i < part.zMm.size(); ++i) {
         const double ck = sim.complianceMmPerN()[i] * k;
@@ -108,11 +108,11 @@ TEST(LatheSimulator, FinishedDiameterIsTheSelfConsistentCut) {
 TEST(LatheSimulator, ACorrectionMovesTheDiameterByTheElasticGain) {
     const LatheSetup setup = quietSetup();
     LatheSimulator sim(setup, {0.0, 162.5, 325.0}, LatheDisturbanceModel::none(3));
-    const MachinedPart plain = sim.machine(PartCorrection{1, {}, {}, {}});
+    const TurnedPart plain = sim.machine(PartCorrection{1, {}, {}, {}});
     PartCorrection c{1, {}, {}, {}};
     c.path.zMm = {0.0, 325.0};
     c.path.xCorrectionMm = {-0.05, -0.05};  // towards the axis
-    const MachinedPart corrected = sim.machine(c);
+    const TurnedPart corrected = sim.machine(c);
     for (std::size_t i = 0; i < plain.zMm.size(); ++i) {
         const double gain = sim.correctionGainAt(i);
         EXPECT_LT(gain, 2.0);

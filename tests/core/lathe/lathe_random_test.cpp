@@ -100,9 +100,9 @@ TEST(LatheSimulator, APartDependsOnlyOnItsNumberAndCorrection) {
     const std::vector<double> z = {0.0, 27.5, 162.5, 262.5, 325.0};
     LatheSimulator a(setup, z, LatheDisturbanceModel::fromPointModels(points));
     LatheSimulator b(setup, z, LatheDisturbanceModel::fromPointModels(points));
-    const MachinedPart a50 = a.machine(PartCorrection{50, {}, {}, {}});
+    const TurnedPart a50 = a.machine(PartCorrection{50, {}, {}, {}});
     b.machine(PartCorrection{10, {}, {}, {}});
-    const MachinedPart b50 = b.machine(PartCorrection{50, {}, {}, {}});
+    const TurnedPart b50 = b.machine(PartCorrection{50, {}, {}, {}});
     EXPECT_EQ(a50.diameterMm, b50.diameterMm);
     // Between the control points the random part follows the points (PCHIP), so at a point the
     // disturbance is exactly the model's.
