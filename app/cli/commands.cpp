@@ -4,6 +4,8 @@ namespace tt::cli {
 
 // One factory per command, each in its own cmd_<name>.cpp.
 Command makeFitProfileCommand();
+Command makeLineariseCommand();
+Command makeBoringCommand();
 Command makeLqgCommand();
 Command makeSimulateCommand();
 Command makeBenchCommand();
@@ -11,6 +13,8 @@ Command makeBenchCommand();
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
         makeFitProfileCommand(),
+        makeLineariseCommand(),
+        makeBoringCommand(),
         makeLqgCommand(),
         makeSimulateCommand(),
         makeBenchCommand(),

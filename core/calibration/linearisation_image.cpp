@@ -68,7 +68,8 @@ std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, cons
     out.push_back(static_cast<std::uint8_t>(kTableImageHeaderBytes));  // 5: header size
     out.push_back(static_cast<std::uint8_t>(table.adcBits));           // 6: ADC bits
     out.push_back(info.plane);                                         // 7: plane
-    put32(out, info.version);                                          // 8: table version
+    put16(out, info.version);                                          // 8: table version
+    put16(out, 0);                                                     // 10: reserved
     put64(out, static_cast<std::uint64_t>(info.createdUnixS));         // 12: created
     put16(out, table.scaleNm);                                         // 20: nm per unit
     out.push_back(info.degree);                                        // 22: degree
@@ -115,7 +116,7 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
     TableImage image;
     image.crc = carried;
     image.info.plane = bytes[7];
-    image.info.version = static_cast<std::uint32_t>(get(bytes, 8, 4));
+    image.info.version = static_cast<std::uint16_t>(get(bytes, 8, 2));
     image.info.createdUnixS = static_cast<std::int64_t>(get(bytes, 12, 8));
     image.table.scaleNm = static_cast<std::uint16_t>(get(bytes, 20, 2));
     image.info.degree = bytes[22];
@@ -125,6 +126,10 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
     for (std::size_t i = 0; i < count; ++i)
         image.table.entries[i] = static_cast<std::int16_t>(get(bytes, kTableImageHeaderBytes + 2 * i, 2));
     return image;
+}
+
+std::uint16_t tableUploadCrc(std::span<const std::uint8_t> image) {
+    return crc16Ccitt(image);
 }
 
 std::string tableToCsv(const LinearisationTable& table) {

@@ -11,7 +11,8 @@ namespace tt::core {
 
 /// What identifies a saved table besides its entries (docs/protocols/linearisation-table.md).
 struct TableImageInfo {
-    std::uint32_t version = 1;      ///< table version, increases with every saved table of a probe
+    std::uint16_t version =
+        1;  ///< table version, increases with every saved table of a probe (u16, as the probe protocol)
     std::int64_t createdUnixS = 0;  ///< when it was built, seconds since 1970-01-01 UTC
     std::uint8_t plane = 0;         ///< bending plane: 0 = X (radial), 1 = Y (tangential)
     std::uint8_t degree = 0;        ///< degree of the fitted characteristic
@@ -38,6 +39,11 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes);
 
 /// The CRC an image carries (its last two bytes); throws std::invalid_argument when too short.
 std::uint16_t tableImageCrc(std::span<const std::uint8_t> bytes);
+
+/// The CRC the probe protocol announces for an upload and the mandrel reports back
+/// (TABLE_BEGIN / TABLE_INFO): CRC-16/CCITT-FALSE of every byte of the image, its own trailing
+/// CRC included (the image is opaque to the protocol).
+std::uint16_t tableUploadCrc(std::span<const std::uint8_t> image);
 
 /// The table as CSV: header `adc_code,deflection_um`, one row per code.
 std::string tableToCsv(const LinearisationTable& table);

@@ -15,8 +15,8 @@ namespace tt::core {
 struct CrossFeedDriveConfig {
     double slideMassKg = 800.0;                  ///< cross slide, tool post and bar, kg
     double motorInertiaKg = 60.0;                ///< rotor and screw inertia reflected to the slide, kg
-    double coulombFrictionN = 900.0;             ///< guideway sliding friction, N
-    double staticFrictionN = 990.0;              ///< breakaway friction (≥ Coulomb), N
+    double coulombFrictionN = 975.0;             ///< guideway sliding friction, N
+    double staticFrictionN = 1070.0;             ///< breakaway friction (≥ Coulomb), N
     double viscousFrictionNsPerMm = 50.0;        ///< N per mm/s
     double transmissionStiffnessNPerMm = 5.0e5;  ///< motor-to-slide stiffness, N/mm
     double transmissionDampingNsPerMm = 300.0;   ///< N per mm/s
