@@ -1,0 +1,46 @@
+#include "devices/api/probe_status.h"
+
+namespace tt::devices {
+
+TableUploadStatus toUploadStatus(const probe::ProbeSession::UploadState& state) {
+    TableUploadStatus s;
+    s.progress = state.progress;
+    s.message = QString::fromStdString(state.message);
+    if (!state.phase) return s;
+    if (state.active)
+        s.phase = TableUploadStatus::Phase::Running;
+    else if (*state.phase == probe::TableUploader::Phase::Done)
+        s.phase = TableUploadStatus::Phase::Done;
+    else
+        s.phase = TableUploadStatus::Phase::Failed;
+    return s;
+}
+
+std::optional<MandrelTableInfo> toTableInfo(const std::optional<probe::TableInfoPayload>& info) {
+    if (!info) return std::nullopt;
+    return MandrelTableInfo{info->version, info->crc, info->sizeBytes, info->valid};
+}
+
+QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::uint64_t queueOverflow) {
+    const probe::FrameStats& f = session.frameStats();
+    QList<DeviceStatistic> list{
+        {QStringLiteral("Samples used"), QString::number(session.samplesUsed())},
+        {QStringLiteral("Frames lost"), QString::number(f.lost)},
+        {QStringLiteral("Frames duplicated"), QString::number(f.duplicate)},
+        {QStringLiteral("Frames corrupt"), QString::number(f.corrupt + f.malformed)},
+        {QStringLiteral("Samples dropped (over-range, excitation)"), QString::number(session.samplesDropped())},
+        {QStringLiteral("Commands resent"), QString::number(session.resends())},
+    };
+    if (queueOverflow > 0) list.append({QStringLiteral("Samples not taken in time"), QString::number(queueOverflow)});
+    if (const auto& info = session.tableInfo())
+        list.append({QStringLiteral("Linearisation table"),
+                     info->valid
+                         ? QStringLiteral("version %1, CRC 0x%2, %3 bytes")
+                               .arg(info->version)
+                               .arg(QString::number(info->crc, 16).toUpper().rightJustified(4, QLatin1Char('0')))
+                               .arg(info->sizeBytes)
+                         : QStringLiteral("none (raw ADC codes only)")});
+    return list;
+}
+
+}  // namespace tt::devices

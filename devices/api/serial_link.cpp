@@ -1,0 +1,91 @@
+#include "devices/api/serial_link.h"
+
+#include <QSerialPort>
+
+#include "devices/api/serial_settings.h"
+
+namespace tt::devices {
+
+namespace {
+constexpr int kFirstBackoffMs = 250;
+constexpr int kMaxBackoffMs = 4000;
+}  // namespace
+
+SerialLink::SerialLink(QVariantMap settings, QString what, Callbacks callbacks)
+    : m_settings(std::move(settings)),
+      m_what(std::move(what)),
+      m_portName(m_settings.value(QStringLiteral("port")).toString().trimmed()),
+      m_callbacks(std::move(callbacks)),
+      m_port(std::make_unique<QSerialPort>()) {
+    m_retry.setSingleShot(true);
+    QObject::connect(&m_retry, &QTimer::timeout, [this] { attempt(); });
+    QObject::connect(m_port.get(), &QSerialPort::readyRead, [this] {
+        const QByteArray bytes = m_port->readAll();
+        if (!bytes.isEmpty() && m_callbacks.onBytes) m_callbacks.onBytes(bytes);
+    });
+    QObject::connect(m_port.get(), &QSerialPort::errorOccurred, [this](QSerialPort::SerialPortError error) {
+        if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port->isOpen()) return;
+        lost(QStringLiteral("the %1 on %2 was disconnected (%3)").arg(m_what, m_portName, m_port->errorString()));
+    });
+}
+
+SerialLink::~SerialLink() {
+    m_wanted = false;
+    m_retry.stop();
+    m_port->disconnect();
+    if (m_port->isOpen()) m_port->close();
+}
+
+void SerialLink::open() {
+    m_wanted = true;
+    m_backoffMs = kFirstBackoffMs;
+    m_failedAttempts = 0;
+    if (m_port->isOpen()) m_port->close();
+    attempt();
+}
+
+void SerialLink::close() {
+    m_wanted = false;
+    m_retry.stop();
+    if (m_port->isOpen()) m_port->close();
+}
+
+bool SerialLink::isOpen() const {
+    return m_port->isOpen();
+}
+
+bool SerialLink::write(const QByteArray& bytes) {
+    if (!m_port->isOpen()) return false;
+    return m_port->write(bytes) == bytes.size();
+}
+
+void SerialLink::attempt() {
+    if (!m_wanted) return;
+    applySerialLine(*m_port, m_settings);
+    if (m_port->open(QIODevice::ReadWrite)) {
+        m_port->clear();
+        m_backoffMs = kFirstBackoffMs;
+        m_failedAttempts = 0;
+        if (m_callbacks.onOpened) m_callbacks.onOpened();
+        return;
+    }
+    ++m_failedAttempts;
+    const QString reason = m_port->errorString();
+    if (m_callbacks.onLost)
+        m_callbacks.onLost(QStringLiteral("cannot open %1 for the %2: %3").arg(m_portName, m_what, reason));
+    scheduleRetry();
+}
+
+void SerialLink::lost(const QString& reason) {
+    if (m_port->isOpen()) m_port->close();
+    if (m_callbacks.onLost) m_callbacks.onLost(reason);
+    scheduleRetry();
+}
+
+void SerialLink::scheduleRetry() {
+    if (!m_wanted) return;
+    m_retry.start(m_backoffMs);
+    m_backoffMs = std::min(m_backoffMs * 2, kMaxBackoffMs);
+}
+
+}  // namespace tt::devices

@@ -1,0 +1,118 @@
+#include "devices/modbus/modbus_factory.h"
+
+#include "devices/modbus/modbus_drive_device.h"
+#include "devices/modbus/modbus_output_device.h"
+#include "devices/modbus/modbus_settings.h"
+
+namespace tt::devices {
+
+using namespace modbus;
+
+namespace {
+
+QStringList unitNames(DriveQuantity quantity) {
+    QStringList names;
+    for (const std::string_view u : driveUnits(quantity))
+        names << QString::fromLatin1(u.data(), static_cast<qsizetype>(u.size()));
+    return names;
+}
+
+SettingsSchema driveSchema() {
+    SettingsSchema s = modbusConnectionFields();
+    s << SettingField::integer(QStringLiteral("pollMs"), QStringLiteral("Polling period"), 20, 10, 100,
+                               QStringLiteral("ms"), QStringLiteral("The PLC cycle of paper 001: 10 to 100 ms."));
+    s << registerFields(QStringLiteral("current"), QStringLiteral("Current"), 0, RegisterType::Int16, 0.01,
+                        unitNames(DriveQuantity::Current));
+    s << registerFields(QStringLiteral("velocity"), QStringLiteral("Velocity"), 1, RegisterType::Int32, 0.001,
+                        unitNames(DriveQuantity::Velocity));
+    s << registerFields(QStringLiteral("position"), QStringLiteral("Position"), 3, RegisterType::Int32, 0.0001,
+                        unitNames(DriveQuantity::Position));
+    return s;
+}
+
+SettingsSchema outputSchema() {
+    SettingsSchema s = modbusConnectionFields();
+    s << SettingField::choice(QStringLiteral("target"), QStringLiteral("What is written"),
+                              {{QStringLiteral("points"), QStringLiteral("Per-point corrections of the next part")},
+                               {QStringLiteral("offset"), QStringLiteral("Dynamic X offset, every PLC cycle")}},
+                              QStringLiteral("points"));
+    s << SettingField::integer(QStringLiteral("pointsAddress"), QStringLiteral("First correction register"), 100, 0,
+                               65535)
+             .visibleWhen(QStringLiteral("target"), {QStringLiteral("points")});
+    s << SettingField::integer(QStringLiteral("maxPoints"), QStringLiteral("Control points"), 5, 1, 32, {},
+                               QStringLiteral("Paper 000 controls five points."))
+             .visibleWhen(QStringLiteral("target"), {QStringLiteral("points")});
+    s << SettingField::boolean(QStringLiteral("writePartNumber"), QStringLiteral("Write the part number last"), false,
+                               QStringLiteral("A handshake: the PLC applies the corrections when the number changes."))
+             .visibleWhen(QStringLiteral("target"), {QStringLiteral("points")});
+    s << SettingField::integer(QStringLiteral("partAddress"), QStringLiteral("Part number register (int32)"), 110, 0,
+                               65534)
+             .visibleWhen(QStringLiteral("target"), {QStringLiteral("points")});
+    s << SettingField::integer(QStringLiteral("offsetAddress"), QStringLiteral("X offset register"), 120, 0, 65535)
+             .visibleWhen(QStringLiteral("target"), {QStringLiteral("offset")});
+    SettingsSchema value =
+        registerFields(QStringLiteral("value"), QStringLiteral("Correction"), 0, RegisterType::Int32, 0.0001);
+    for (const SettingField& f : value)
+        if (f.key != QLatin1String("valueTable") && f.key != QLatin1String("valueAddress")) s << f;
+    s.last().unit = QStringLiteral("mm per count");
+    s << SettingField::number(QStringLiteral("maxCorrectionMm"), QStringLiteral("Correction limit"), 0.5, 0.001, 5.0,
+                              QStringLiteral("mm"), 3, QStringLiteral("Larger corrections are refused, never sent."));
+    return s;
+}
+
+}  // namespace
+
+SettingsSchema ModbusFactory::settingsSchema(DeviceKind kind) const {
+    if (kind == DeviceKind::DriveCurrent) return driveSchema();
+    if (kind == DeviceKind::CorrectionOutput) return outputSchema();
+    return {};
+}
+
+QList<SettingIssue> ModbusFactory::validate(DeviceKind kind, const QVariantMap& settings, Validation depth) const {
+    QList<SettingIssue> issues = DevicePlugin::validate(kind, settings, depth);
+    if (!issues.isEmpty()) return issues;
+    const QVariantMap v = withDefaults(settingsSchema(kind), settings);
+    if (v.value(QStringLiteral("transport")).toString() == QLatin1String("tcp") &&
+        v.value(QStringLiteral("host")).toString().trimmed().isEmpty())
+        issues.append(
+            {QStringLiteral("host"), QStringLiteral("Host: enter the IP address or name of the drive or PLC")});
+    if (kind == DeviceKind::DriveCurrent) {
+        const std::vector<RegisterSpec> specs{registerSpec(v, QStringLiteral("current")),
+                                              registerSpec(v, QStringLiteral("velocity")),
+                                              registerSpec(v, QStringLiteral("position"))};
+        try {
+            (void)planReads(specs);
+        } catch (const std::invalid_argument& e) {
+            issues.append({QString::fromStdString(specs.front().name), QString::fromStdString(e.what())});
+        }
+        for (const RegisterSpec& spec : specs)
+            if (spec.scale == 0.0)
+                issues.append(
+                    {QString::fromStdString(spec.name) + QStringLiteral("Scale"),
+                     QStringLiteral("%1: the scale must not be zero").arg(QString::fromStdString(spec.name))});
+    } else if (kind == DeviceKind::CorrectionOutput) {
+        const RegisterType type = registerSpec(v, QStringLiteral("value")).type;
+        const long end = v.value(QStringLiteral("pointsAddress")).toLongLong() +
+                         static_cast<long>(registerCount(type)) * v.value(QStringLiteral("maxPoints")).toLongLong();
+        if (end > 65536)
+            issues.append({QStringLiteral("pointsAddress"),
+                           QStringLiteral("First correction register: the corrections run past address 65535")});
+        if (registerSpec(v, QStringLiteral("value")).scale == 0.0)
+            issues.append({QStringLiteral("valueScale"), QStringLiteral("Correction: the scale must not be zero")});
+        if (type == RegisterType::UInt16 || type == RegisterType::UInt32)
+            issues.append({QStringLiteral("valueType"),
+                           QStringLiteral("Correction: type must be signed (corrections can be negative)")});
+    }
+    return issues;
+}
+
+std::unique_ptr<Device> ModbusFactory::create(DeviceKind kind, const QVariantMap& settings,
+                                              const DeviceContext& context) {
+    const QVariantMap values = withDefaults(settingsSchema(kind), settings);
+    requireValidSettings(*this, kind, values);
+    if (kind == DeviceKind::DriveCurrent) return std::make_unique<ModbusDriveDevice>(values, context);
+    if (kind == DeviceKind::CorrectionOutput) return std::make_unique<ModbusOutputDevice>(values, context);
+    throw std::invalid_argument("the Modbus plugin makes drive-current readouts and correction outputs only");
+}
+
+}  // namespace tt::devices

@@ -1,0 +1,142 @@
+#include "devices/probe_mandrel/serial_probe_device.h"
+
+#include "devices/api/probe_status.h"
+
+namespace tt::devices {
+
+namespace {
+
+constexpr std::size_t kMaxQueued = 8192;
+constexpr int kTickMs = 5;
+
+probe::SessionConfig sessionConfig(const QVariantMap& settings) {
+    probe::SessionConfig c;
+    c.rateHz = settings.value(QStringLiteral("rateHz"), 200).toInt();
+    c.silenceTimeoutS = settings.value(QStringLiteral("silenceTimeoutMs"), 500).toDouble() / 1000.0;
+    c.replyTimeoutS = settings.value(QStringLiteral("replyTimeoutMs"), 300).toDouble() / 1000.0;
+    return c;
+}
+
+}  // namespace
+
+SerialProbeDevice::SerialProbeDevice(const QVariantMap& settings, const DeviceContext& context)
+    : DeviceBase(DeviceKind::Probe, context), m_session(sessionConfig(settings)) {
+    m_link = std::make_unique<SerialLink>(
+        settings, QStringLiteral("probe mandrel"),
+        SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
+                              [this](const QString& reason) { lost(reason); }});
+    m_timer.setInterval(kTickMs);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&m_timer, &QTimer::timeout, [this] { tick(); });
+}
+
+SerialProbeDevice::~SerialProbeDevice() {
+    m_timer.stop();
+}
+
+void SerialProbeDevice::open() {
+    setState(core::DeviceState::Connecting, QStringLiteral("opening %1").arg(m_link->portName()));
+    m_link->open();
+}
+
+void SerialProbeDevice::close() {
+    if (m_link->isOpen()) {
+        m_session.stop(now());
+        const std::vector<std::uint8_t> bytes = m_session.poll(now());
+        m_link->write(QByteArray(reinterpret_cast<const char*>(bytes.data()), static_cast<qsizetype>(bytes.size())));
+    }
+    m_timer.stop();
+    m_link->close();
+    setState(core::DeviceState::Disconnected);
+}
+
+void SerialProbeDevice::testConnection() {
+    if (!m_link->isOpen()) {
+        open();
+        return;
+    }
+    m_session.requestTableInfo();
+}
+
+void SerialProbeDevice::opened() {
+    m_linkProblem.clear();
+    m_session.start(now());
+    m_timer.start();
+    updateState();
+}
+
+void SerialProbeDevice::lost(const QString& reason) {
+    m_timer.stop();
+    m_linkProblem = reason;
+    setState(core::DeviceState::Error, reason);
+}
+
+void SerialProbeDevice::bytesArrived(const QByteArray& bytes) {
+    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.constData());
+    m_session.receive({data, static_cast<std::size_t>(bytes.size())}, now());
+}
+
+void SerialProbeDevice::tick() {
+    const std::vector<std::uint8_t> out = m_session.poll(now());
+    if (!out.empty())
+        m_link->write(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())));
+    for (const core::ProbeSample& s : m_session.takeSamples()) {
+        if (m_samples.size() == kMaxQueued) {
+            m_samples.pop_front();
+            ++m_overflow;
+        }
+        m_samples.push_back(s);
+    }
+    if (const auto& last = m_session.lastSample())
+        setLiveValue(QStringLiteral("%1 / %2 mm")
+                         .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
+                         .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
+    if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
+        reportError(QString::fromStdString(m_session.lastError()));
+    updateState();
+}
+
+void SerialProbeDevice::updateState() {
+    if (!m_linkProblem.isEmpty()) return;
+    switch (m_session.link()) {
+        case probe::ProbeSession::Link::Streaming:
+            setState(core::DeviceState::Ready, QStringLiteral("streaming from %1").arg(m_link->portName()));
+            break;
+        case probe::ProbeSession::Link::Handshake:
+            setState(core::DeviceState::Connecting,
+                     QStringLiteral("starting the probe mandrel on %1").arg(m_link->portName()));
+            break;
+        case probe::ProbeSession::Link::Silent:
+        case probe::ProbeSession::Link::Failed:
+            setState(core::DeviceState::Error,
+                     QString::fromStdString(m_session.problem()) + QStringLiteral(" on %1").arg(m_link->portName()));
+            break;
+        case probe::ProbeSession::Link::Idle:
+            break;
+    }
+}
+
+std::optional<core::ProbeSample> SerialProbeDevice::takeSample() {
+    if (m_samples.empty()) return std::nullopt;
+    const core::ProbeSample s = m_samples.front();
+    m_samples.pop_front();
+    return s;
+}
+
+void SerialProbeDevice::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
+    m_session.uploadTable(std::move(image), version, crc);
+}
+
+TableUploadStatus SerialProbeDevice::uploadStatus() const {
+    return toUploadStatus(m_session.uploadState());
+}
+
+std::optional<MandrelTableInfo> SerialProbeDevice::tableInfo() const {
+    return toTableInfo(m_session.tableInfo());
+}
+
+QList<DeviceStatistic> SerialProbeDevice::statistics() const {
+    return probeStatistics(m_session, m_overflow);
+}
+
+}  // namespace tt::devices

@@ -1,0 +1,47 @@
+#pragma once
+
+#include <QVariantMap>
+#include <deque>
+#include <optional>
+
+#include "devices/simulator/simulated_device.h"
+
+namespace tt::devices {
+
+/// The cross-feed of paper 001, way 1, stand-alone: while boring a cylinder the stopped
+/// cross-feed oscillates with a small amplitude A and period T as a triangle (uniform motion
+/// each way, velocity +-4A/T); the motor current is the cutting component plus friction that
+/// changes sign with the direction: I = I_cut + sign(v) I_friction.
+core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double periodS, double frictionCurrentA,
+                                       double cuttingCurrentA);
+
+/// The simulator's drive-current readout: polled like the Modbus plugin (every pollMs), each
+/// sample travels as registers (current int16 0.01 A, velocity float32 mm/s, position int32
+/// 0.1 um) and is decoded back, so a malformed register value is refused as on the machine.
+/// The drive state comes from the injectable source (setDriveSource) or the oscillation above.
+/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA.
+class SimulatedDrive final : public SimulatedDevice, public core::DriveCurrentReadout {
+public:
+    SimulatedDrive(const QVariantMap& settings, const DeviceContext& context);
+
+    core::DeviceHealth health() const override { return DeviceBase::health(); }
+    std::optional<core::DriveSample> takeSample() override;
+    void testConnection() override;
+    core::DriveCurrentReadout* driveCurrentReadout() override { return this; }
+    QList<DeviceStatistic> statistics() const override;
+    void setDriveSource(std::function<core::DriveSample(double)> source) override;
+
+protected:
+    void tick() override;
+    void connected() override;
+
+private:
+    std::function<core::DriveSample(double)> m_source;
+    std::deque<core::DriveSample> m_samples;
+    std::optional<core::DriveSample> m_last;
+    int m_missedPolls = 0;
+    std::uint64_t m_polls = 0;
+    std::uint64_t m_refused = 0;
+};
+
+}  // namespace tt::devices

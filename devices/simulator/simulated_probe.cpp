@@ -1,0 +1,121 @@
+#include "devices/simulator/simulated_probe.h"
+
+namespace tt::devices {
+
+namespace {
+
+constexpr std::size_t kMaxQueued = 8192;
+
+probe::SessionConfig sessionConfig(const QVariantMap& settings) {
+    probe::SessionConfig c;
+    c.rateHz = settings.value(QStringLiteral("rateHz"), 200).toInt();
+    c.silenceTimeoutS = settings.value(QStringLiteral("silenceTimeoutMs"), 500).toDouble() / 1000.0;
+    return c;
+}
+
+}  // namespace
+
+SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext& context)
+    : SimulatedDevice(DeviceKind::Probe, context, 10), m_session(sessionConfig(settings)) {
+    const std::array<double, 2> constant{settings.value(QStringLiteral("deflection1Mm"), 0.02).toDouble(),
+                                         settings.value(QStringLiteral("deflection2Mm"), -0.005).toDouble()};
+    m_source = [constant](double) { return constant; };
+    // The emulator's clock runs from open(); the source sees the device clock's time.
+    m_emulator.setDeflectionSource([this](double) {
+        std::array<double, 2> d = m_source(now());
+        for (double& v : d)
+            v += noise();
+        return d;
+    });
+    // Stand-alone the mandrel already holds a calibrated table (version 1), as on delivery.
+    m_emulator.preloadTable(std::vector<std::uint8_t>(64, 0x5A), 1);
+}
+
+void SimulatedProbe::setDeflectionSource(std::function<std::array<double, 2>(double)> source) {
+    if (source) m_source = std::move(source);
+}
+
+void SimulatedProbe::connected() {
+    m_lastTickS = now();
+    m_session.start(m_lastTickS);
+}
+
+void SimulatedProbe::close() {
+    m_session.stop(now());
+    exchange(now());
+    SimulatedDevice::close();
+}
+
+void SimulatedProbe::testConnection() {
+    if (!isOpen()) open();
+    m_session.requestTableInfo();
+}
+
+void SimulatedProbe::exchange(double nowS) {
+    m_emulator.setSilent(faults().silent);
+    m_emulator.setStuck(faults().stuck);
+    if (faults().malformed) m_emulator.corruptNextFrames(1);
+    const std::vector<std::uint8_t> commands = m_session.poll(nowS);
+    std::vector<std::uint8_t> wire = m_emulator.receive(commands);
+    const std::vector<std::uint8_t> samples = m_emulator.advance(nowS - m_lastTickS);
+    wire.insert(wire.end(), samples.begin(), samples.end());
+    m_lastTickS = nowS;
+    m_session.receive(wire, nowS);
+}
+
+void SimulatedProbe::tick() {
+    const double t = now();
+    exchange(t);
+    for (const core::ProbeSample& s : m_session.takeSamples()) {
+        if (m_samples.size() == kMaxQueued) {
+            m_samples.pop_front();
+            ++m_overflow;
+        }
+        m_samples.push_back(s);
+    }
+    if (const auto& last = m_session.lastSample())
+        setLiveValue(QStringLiteral("%1 / %2 mm")
+                         .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
+                         .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
+    if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
+        reportError(QString::fromStdString(m_session.lastError()));
+    switch (m_session.link()) {
+        case probe::ProbeSession::Link::Streaming:
+            setState(core::DeviceState::Ready, QStringLiteral("streaming"));
+            break;
+        case probe::ProbeSession::Link::Handshake:
+            setState(core::DeviceState::Connecting, QStringLiteral("starting the probe mandrel"));
+            break;
+        case probe::ProbeSession::Link::Silent:
+        case probe::ProbeSession::Link::Failed:
+            setState(core::DeviceState::Error, QString::fromStdString(m_session.problem()));
+            break;
+        case probe::ProbeSession::Link::Idle:
+            break;
+    }
+}
+
+std::optional<core::ProbeSample> SimulatedProbe::takeSample() {
+    if (m_samples.empty()) return std::nullopt;
+    const core::ProbeSample s = m_samples.front();
+    m_samples.pop_front();
+    return s;
+}
+
+void SimulatedProbe::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
+    m_session.uploadTable(std::move(image), version, crc);
+}
+
+TableUploadStatus SimulatedProbe::uploadStatus() const {
+    return toUploadStatus(m_session.uploadState());
+}
+
+std::optional<MandrelTableInfo> SimulatedProbe::tableInfo() const {
+    return toTableInfo(m_session.tableInfo());
+}
+
+QList<DeviceStatistic> SimulatedProbe::statistics() const {
+    return probeStatistics(m_session, m_overflow);
+}
+
+}  // namespace tt::devices

@@ -1,0 +1,19 @@
+#pragma once
+
+#include "devices/api/device_plugin.h"
+
+namespace tt::devices {
+
+/// The built-in simulator: always available (compiled into trueturn_devices, not loaded from the
+/// plugin folder), it makes every device kind, each with fault switches (silent, noisy, stuck
+/// value, malformed frame, disconnect) and simulation inputs for the lathe simulator.
+class SimulatorPlugin final : public DevicePlugin {
+public:
+    QString pluginId() const override { return QStringLiteral("simulator"); }
+    QString displayName() const override { return QStringLiteral("Built-in simulator"); }
+    QList<DeviceKind> kinds() const override { return allDeviceKinds(); }
+    SettingsSchema settingsSchema(DeviceKind kind) const override;
+    std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;
+};
+
+}  // namespace tt::devices
