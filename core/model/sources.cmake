@@ -6,4 +6,6 @@ target_sources(trueturn_core PRIVATE
     model/polynomial_regression.cpp
     model/systematic_error_model.cpp
     model/tool_stiffness.cpp
+    model/tool_table.cpp
+    model/tool_table_csv.cpp
 )
