@@ -214,6 +214,19 @@ Eigen::VectorXd LqgController::predictedDeviationMm() const {
     return predictOutputs(m_prior.x, 0);
 }
 
+Eigen::VectorXd LqgController::predictedUncorrectedDeviationMm() const {
+    Eigen::VectorXd y(m_points);
+    for (const Block& b : m_blocks) {
+        // Block order: the points' delay chains first (z states each), then the disturbance states.
+        const Eigen::Index delayStates = static_cast<Eigen::Index>(b.points.size()) * m_delay;
+        const Eigen::Index rest = b.size - delayStates;
+        const Eigen::VectorXd yb = b.C.rightCols(rest) * m_prior.x.segment(b.offset + delayStates, rest);
+        for (std::size_t j = 0; j < b.points.size(); ++j)
+            y(b.points[j]) = yb(static_cast<Eigen::Index>(j));
+    }
+    return y;
+}
+
 Eigen::VectorXd LqgController::predictedSigmaMm() const {
     return innovationVariance(m_prior, 0).cwiseSqrt();
 }

@@ -55,6 +55,9 @@ public:
     const Eigen::VectorXd& lastCorrectionMm() const { return m_lastApplied; }
     /// Predicted diameter deviation of the next part to be filtered, mm.
     Eigen::VectorXd predictedDeviationMm() const;
+    /// Predicted deviation of the next part to be filtered as it would be without any correction (the
+    /// estimated disturbance C_d x_d), mm.
+    Eigen::VectorXd predictedUncorrectedDeviationMm() const;
     /// Predicted innovation sigma of the next part to be filtered, per point, mm.
     Eigen::VectorXd predictedSigmaMm() const;
 
