@@ -1,7 +1,9 @@
 #include "core/loop/loop_runner.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "core/loop/loop_clock.h"
 #include "core/loop/loop_engine.h"
@@ -9,7 +11,7 @@
 namespace tt::core {
 
 SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
-                                std::int64_t maxSteps) {
+                                std::int64_t maxSteps, double speed) {
     SimulationOutcome outcome;
     int stalled = 0;
     for (std::int64_t i = 0; i < maxSteps; ++i) {
@@ -33,6 +35,8 @@ SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const Si
             outcome.stopReason = "the simulation does not advance: " + engine.detail();
             break;
         }
+        if (speed > 0.0 && next > clock.nowS())
+            std::this_thread::sleep_for(std::chrono::duration<double>((next - clock.nowS()) / speed));
         clock.advanceTo(next);
     }
     if (!outcome.complete && outcome.stopReason.empty()) outcome.stopReason = "the step limit was reached";

@@ -24,10 +24,11 @@ struct SimulationOutcome {
     double simulatedS = 0.0;  ///< simulated time at the end, s
 };
 
-/// Runs the engine on simulated devices as fast as possible: step, then move the clock to the next
-/// event of the devices or the engine. Stops when the run completes, on a fault, when nothing can
-/// happen any more (nobody will answer) or after `maxSteps` steps.
+/// Runs the engine on simulated devices: step, then move the clock to the next event of the devices or
+/// the engine. `speed` 0 jumps at once (as fast as possible); a positive speed waits (simulated time
+/// / speed) of wall time for every jump, so a part of 6 min takes 1 s at speed 360. Stops when the run
+/// completes, on a fault, when nothing can happen any more (nobody will answer) or after `maxSteps`.
 SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
-                                std::int64_t maxSteps = 100'000'000);
+                                std::int64_t maxSteps = 100'000'000, double speed = 0.0);
 
 }  // namespace tt::core

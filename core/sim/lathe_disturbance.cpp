@@ -73,6 +73,56 @@ LatheDisturbanceModel LatheDisturbanceModel::fromPointModels(const std::vector<D
     return m;
 }
 
+LatheDisturbanceModel LatheDisturbanceModel::fromPointModels(const std::vector<DisturbanceModel>& points,
+                                                             double commonShare) {
+    if (!std::isfinite(commonShare) || commonShare < 0.0 || commonShare > 1.0)
+        throw std::invalid_argument("the common share of the disturbance must lie in 0 .. 1");
+    if (commonShare == 0.0) return fromPointModels(points);
+    if (points.empty()) throw std::invalid_argument("the disturbance needs at least one control point");
+    std::vector<DisturbanceRealisation> parts;
+    Eigen::Index n = 0;
+    for (const DisturbanceModel& p : points) {
+        parts.push_back(p.realise());
+        n += parts.back().A.rows();
+        if (parts.back().W.rows() != parts.front().W.rows())
+            throw std::invalid_argument(
+                "a common share of the disturbance needs the same kind of model at every control point");
+    }
+    const Eigen::Index q = parts.front().W.rows();
+    const auto count = static_cast<Eigen::Index>(points.size());
+    // States: the common realisations of all points, then the independent ones. Noise: q shared unit
+    // inputs, then q unit inputs per point.
+    LatheDisturbanceModel m;
+    m.A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    m.G = Eigen::MatrixXd::Zero(2 * n, q * (count + 1));
+    m.C = Eigen::MatrixXd::Zero(count, 2 * n);
+    m.H = Eigen::MatrixXd::Zero(count, q * (count + 1));
+    m.W = Eigen::MatrixXd::Identity(q * (count + 1), q * (count + 1));
+    const double common = std::sqrt(commonShare), own = std::sqrt(1.0 - commonShare);
+    Eigen::Index s = 0;
+    for (Eigen::Index i = 0; i < count; ++i) {
+        const DisturbanceRealisation& r = parts[static_cast<std::size_t>(i)];
+        const Eigen::Index ns = r.A.rows();
+        const Eigen::MatrixXd scaledG = r.G * covarianceFactor(r.W);
+        m.A.block(s, s, ns, ns) = r.A;
+        m.A.block(n + s, n + s, ns, ns) = r.A;
+        m.G.block(s, 0, ns, q) = common * scaledG;
+        m.G.block(n + s, q * (i + 1), ns, q) = own * scaledG;
+        m.C.block(i, s, 1, ns) = r.C;
+        m.C.block(i, n + s, 1, ns) = r.C;
+        s += ns;
+    }
+    return m;
+}
+
+LatheDisturbanceModel LatheDisturbanceModel::scaled(double factor) const {
+    if (!std::isfinite(factor) || factor < 0.0) throw std::invalid_argument("a disturbance scale must be >= 0");
+    LatheDisturbanceModel m = *this;
+    m.C *= factor;
+    m.H *= factor;
+    return m;
+}
+
 LatheDisturbanceModel LatheDisturbanceModel::withWhiteNoise(const std::vector<double>& varianceMm2) const {
     const Eigen::Index points = pointCount();
     if (static_cast<Eigen::Index>(varianceMm2.size()) != points)

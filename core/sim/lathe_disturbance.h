@@ -28,6 +28,15 @@ struct LatheDisturbanceModel {
     /// The per-point disturbance models of the controller's plant (core/model), stacked block-diagonally:
     /// point i's output is its model's realisation, independent of the other points.
     static LatheDisturbanceModel fromPointModels(const std::vector<DisturbanceModel>& points);
+    /// The same per-point models with a share `commonShare` (0 .. 1) of every point's variance driven by
+    /// noise common to all points: f_i = sqrt(c) a_i + sqrt(1 - c) b_i, where a_i and b_i are realisations
+    /// of point i's model, the a_i from one shared white noise (a tool offset, warm-up or a new edge moves
+    /// the whole shaft), the b_i independent. Each point keeps exactly its model's process, so a
+    /// controller designed per point sees what it was designed for. The models must have the same
+    /// number of noise inputs when commonShare > 0.
+    static LatheDisturbanceModel fromPointModels(const std::vector<DisturbanceModel>& points, double commonShare);
+    /// The same model with every output multiplied by `factor` (variances by factor²).
+    LatheDisturbanceModel scaled(double factor) const;
     /// Adds white noise of variance `varianceMm2[i]` at point i (direct feed-through H).
     LatheDisturbanceModel withWhiteNoise(const std::vector<double>& varianceMm2) const;
 };

@@ -18,10 +18,24 @@ LatheMicrometerModel::LatheMicrometerModel(const LatheMicrometer& spec, std::uin
                                     std::to_string(spec.resolutionMm) + ")");
 }
 
+LatheMicrometerModel::LatheMicrometerModel(std::vector<double> sigmaPerPointMm, double resolutionMm, std::uint64_t seed)
+    : m_sigma(0.0), m_pointSigma(std::move(sigmaPerPointMm)), m_resolution(resolutionMm), m_seed(seed) {
+    for (double s : m_pointSigma)
+        if (!std::isfinite(s) || s < 0.0)
+            throw std::invalid_argument("a gauge noise sigma must be zero or a positive number of millimetres");
+    if (!std::isfinite(resolutionMm) || resolutionMm < 0.0)
+        throw std::invalid_argument("the gauge resolution must be zero or a positive number of millimetres");
+}
+
+double LatheMicrometerModel::sigmaMm(int pointIndex) const {
+    if (m_pointSigma.empty()) return m_sigma;
+    return m_pointSigma.at(static_cast<std::size_t>(pointIndex));
+}
+
 double LatheMicrometerModel::readMm(double trueDiameterMm, std::int64_t partNumber, int pointIndex, int attempt) const {
     auto g = latheGenerator(m_seed, LatheStream::Micrometer, static_cast<std::uint64_t>(partNumber),
                             (static_cast<std::uint64_t>(pointIndex) << 16) ^ static_cast<std::uint64_t>(attempt));
-    const double value = trueDiameterMm + m_sigma * standardNormal(g);
+    const double value = trueDiameterMm + sigmaMm(pointIndex) * standardNormal(g);
     if (m_resolution <= 0.0) return value;
     return std::round(value / m_resolution) * m_resolution;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/sim/lathe_setup.h"
 
@@ -13,15 +14,19 @@ class LatheMicrometerModel {
 public:
     /// Throws std::invalid_argument on a negative or non-finite resolution or error.
     LatheMicrometerModel(const LatheMicrometer& spec, std::uint64_t seed);
+    /// A gauge with its own noise σ per control point (the statistical plant's gauge noise variances,
+    /// σ_i = sqrt(V_ii)), rounded to `resolutionMm` (0 = no rounding).
+    LatheMicrometerModel(std::vector<double> sigmaPerPointMm, double resolutionMm, std::uint64_t seed);
 
     /// The displayed reading of a true diameter, mm.
     double readMm(double trueDiameterMm, std::int64_t partNumber, int pointIndex, int attempt = 0) const;
-    /// σ of the reading before rounding, mm.
-    double sigmaMm() const { return m_sigma; }
+    /// σ of a reading at point `pointIndex` before rounding, mm.
+    double sigmaMm(int pointIndex = 0) const;
     double resolutionMm() const { return m_resolution; }
 
 private:
     double m_sigma;
+    std::vector<double> m_pointSigma;
     double m_resolution;
     std::uint64_t m_seed;
 };

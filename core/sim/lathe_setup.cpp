@@ -44,6 +44,10 @@ void validateLatheSetup(const LatheSetup& s) {
     if (!std::isfinite(s.wear.changeRepeatabilityMm) || s.wear.changeRepeatabilityMm < 0.0)
         throw std::invalid_argument("the tool-change repeatability must be zero or positive");
     finite(s.toolSettingOffsetMm, "the tool setting offset");
+    if (!std::isfinite(s.randomCommonShare) || s.randomCommonShare < 0.0 || s.randomCommonShare > 1.0)
+        throw std::invalid_argument("the common share of the random variation must lie in 0 .. 1");
+    if (!std::isfinite(s.randomScale) || s.randomScale < 0.0 || s.randomScale > 100.0)
+        throw std::invalid_argument("the scale of the random variation must lie in 0 .. 100");
     positive(s.beamElementMm, "the element length of the shaft model", "mm");
     if (s.workpiece.lengthMm / s.beamElementMm > 20000.0)
         throw std::invalid_argument("the element length of the shaft model is too small for this shaft");

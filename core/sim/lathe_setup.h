@@ -68,8 +68,14 @@ struct LatheSetup {
     LatheToolWear wear;
     LatheMicrometer micrometer;
     double toolSettingOffsetMm = 0.0;  ///< diameter error of the tool setting (trial cut), mm
-    double beamElementMm = 2.5;        ///< finite-element length of the shaft model, mm (also the profile grid)
-    std::uint64_t seed = 1;            ///< seed of every random source
+    /// Share (0 .. 1) of the part-to-part random variance that is common to the whole shaft (see
+    /// LatheDisturbanceModel::fromPointModels); the rest is independent from point to point.
+    double randomCommonShare = 0.0;
+    /// Scale of the part-to-part random variation against the disturbance model (standard deviation
+    /// factor, >= 0): a group of parts with less scatter than the model was designed for.
+    double randomScale = 1.0;
+    double beamElementMm = 2.5;  ///< finite-element length of the shaft model, mm (also the profile grid)
+    std::uint64_t seed = 1;      ///< seed of every random source
 };
 
 /// Throws std::invalid_argument naming the first value that is not physical (non-positive length,

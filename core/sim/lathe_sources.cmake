@@ -10,4 +10,6 @@ target_sources(trueturn_core PRIVATE
     sim/lathe_simulator.cpp
     sim/lathe_statistical_process.cpp
     sim/lathe_station.cpp
+    sim/lathe_shop.cpp
+    sim/lathe_run.cpp
 )

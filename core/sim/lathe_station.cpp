@@ -14,8 +14,12 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 LatheStation::LatheStation(LathePartProcess& process, const LatheMicrometer& micrometer, std::uint64_t seed,
                            const Clock& clock, std::vector<double> measurePointZMm, LatheStationTiming timing)
+    : LatheStation(process, LatheMicrometerModel(micrometer, seed), clock, std::move(measurePointZMm), timing) {}
+
+LatheStation::LatheStation(LathePartProcess& process, LatheMicrometerModel gauge, const Clock& clock,
+                           std::vector<double> measurePointZMm, LatheStationTiming timing)
     : m_process(process),
-      m_micrometer(micrometer, seed),
+      m_micrometer(std::move(gauge)),
       m_clock(clock),
       m_points(std::move(measurePointZMm)),
       m_timing(timing) {

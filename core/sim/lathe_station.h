@@ -35,6 +35,9 @@ public:
     /// `measurePointZMm`: where the operator measures each part (the control points).
     LatheStation(LathePartProcess& process, const LatheMicrometer& micrometer, std::uint64_t seed, const Clock& clock,
                  std::vector<double> measurePointZMm, LatheStationTiming timing = {});
+    /// With a gauge model of its own (per-point noise of the statistical plant).
+    LatheStation(LathePartProcess& process, LatheMicrometerModel gauge, const Clock& clock,
+                 std::vector<double> measurePointZMm, LatheStationTiming timing = {});
     LatheStation(const LatheStation&) = delete;
     LatheStation& operator=(const LatheStation&) = delete;
 

@@ -45,6 +45,34 @@ TEST(LatheDisturbance, SampleVarianceMatchesTheModel) {
     EXPECT_NEAR(variance(b) / 0.0004, 1.0, 0.03);
 }
 
+TEST(LatheDisturbance, ACommonShareCorrelatesThePointsAndKeepsEachPointsProcess) {
+    const std::vector<DisturbanceModel> points(3, DisturbanceModel({DisturbanceComponent::ar1(0.9, 0.0013)}));
+    LatheDisturbance d(LatheDisturbanceModel::fromPointModels(points, 0.8).scaled(0.5), 3);
+    // Each point: still AR(1) 0.9 with variance 0.0013, scaled by 0.5 in standard deviation.
+    EXPECT_NEAR(d.stationaryVarianceMm2()(1), 0.25 * 0.0013, 1e-12);
+    std::vector<double> a, b, lagged;
+    for (int k = 1; k <= 40000; ++k) {
+        const Eigen::VectorXd f = d.diameterMm(k);
+        a.push_back(f(0));
+        b.push_back(f(2));
+    }
+    double sab = 0.0, saa = 0.0, sbb = 0.0, lag = 0.0;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        sab += a[k] * b[k];
+        saa += a[k] * a[k];
+        sbb += b[k] * b[k];
+        if (k > 0) lag += a[k] * a[k - 1];
+    }
+    EXPECT_NEAR(sab / std::sqrt(saa * sbb), 0.8, 0.03) << "correlation between points = the common share";
+    EXPECT_NEAR(lag / saa, 0.9, 0.02) << "the lag-1 autocorrelation of AR(1) 0.9 is kept";
+    EXPECT_NEAR(variance(a) / (0.25 * 0.0013), 1.0, 0.07);
+    EXPECT_THROW(LatheDisturbanceModel::fromPointModels(points, 1.5), std::invalid_argument);
+    const std::vector<DisturbanceModel> mixed = {
+        DisturbanceModel({DisturbanceComponent::ar1(0.9, 0.001)}),
+        DisturbanceModel({DisturbanceComponent::ar1(0.9, 0.001), DisturbanceComponent::white(0.001)})};
+    EXPECT_THROW(LatheDisturbanceModel::fromPointModels(mixed, 0.5), std::invalid_argument);
+}
+
 TEST(LatheDisturbance, SameSeedSameSequenceInAnyOrder) {
     const std::vector<DisturbanceModel> points = {DisturbanceModel({DisturbanceComponent::ar1(0.95, 0.001)})};
     LatheDisturbance forward(LatheDisturbanceModel::fromPointModels(points), 42);

@@ -1,0 +1,119 @@
+#include "config/loop_scenario.h"
+
+#include <stdexcept>
+
+#include "config/json_eigen.h"
+#include "config/lathe_config.h"
+#include "config/plant_config.h"
+#include "config/preset_library.h"
+#include "config/profile_model_config.h"
+
+namespace tt::config {
+
+namespace {
+
+QJsonObject withBase(const QJsonObject& preset) {
+    const QJsonValue base = preset.value(QStringLiteral("based_on"));
+    if (base.isUndefined()) return preset;
+    if (!base.isString()) throw std::invalid_argument("based_on: must be the name of a preset");
+    const QJsonObject parent = withBase(PresetLibrary::load(base.toString()));
+    QJsonObject merged = preset;
+    for (auto it = parent.begin(); it != parent.end(); ++it)
+        if (!merged.contains(it.key())) merged.insert(it.key(), it.value());
+    return merged;
+}
+
+double loopNumber(const QJsonObject& loop, const char* key, double fallback, double minValue, double maxValue) {
+    try {
+        return optionalNumber(loop, QString::fromLatin1(key), fallback, minValue, maxValue);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("loop.") + e.what());
+    }
+}
+
+LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<int> delay) {
+    LoopScenario s;
+    s.preset = name;
+    s.json = withBase(preset);
+    s.control = runToRunSetupFromPreset(s.json, delay);
+    const QJsonValue lathe = s.json.value(QStringLiteral("lathe"));
+    if (!lathe.isUndefined()) {
+        if (!lathe.isObject()) throw std::invalid_argument("lathe: must be an object");
+        s.lathe = latheSetupFromJson(lathe.toObject());
+        s.timing = stationTimingFromJson(lathe.toObject());
+    }
+    if (s.json.contains(QStringLiteral("systematic_model")))
+        s.systematicModel = systematicModelFromPreset(s.json).diameterError();
+
+    const QJsonValue loopValue = s.json.value(QStringLiteral("loop"));
+    if (!loopValue.isUndefined() && !loopValue.isObject()) throw std::invalid_argument("loop: must be an object");
+    const QJsonObject loop = loopValue.toObject();
+    const QJsonObject plant = s.json.value(QStringLiteral("plant")).toObject();
+    double length = s.lathe ? s.lathe->workpiece.lengthMm
+                            : plant.value(QStringLiteral("part_length_mm")).toDouble(s.control.plant.points.back().xMm);
+    s.partLengthMm = loopNumber(loop, "part_length_mm", length, 1.0, 1e5);
+    s.nominalDiameterMm =
+        loopNumber(loop, "nominal_diameter_mm", s.lathe ? s.lathe->workpiece.finishDiameterMm : 27.0, 0.1, 1e4);
+    if (s.lathe &&
+        (s.partLengthMm != s.lathe->workpiece.lengthMm || s.nominalDiameterMm != s.lathe->workpiece.finishDiameterMm))
+        throw std::invalid_argument("loop: the part length and nominal diameter must be the lathe's workpiece's");
+    s.plausibleRangeMm = loopNumber(loop, "plausible_range_mm", s.plausibleRangeMm, 1e-3, 100.0);
+    s.pathStepMm = loopNumber(loop, "path_step_mm", s.pathStepMm, 0.01, 100.0);
+    s.gaugeTimeoutS = loopNumber(loop, "gauge_timeout_s", s.gaugeTimeoutS, 1.0, 1e7);
+    if (loop.contains(QStringLiteral("interpolation"))) {
+        const QJsonValue method = loop.value(QStringLiteral("interpolation"));
+        if (!method.isString()) throw std::invalid_argument("loop.interpolation: must be \"pchip\" or \"spline\"");
+        try {
+            s.interpolation = core::interpolationMethodFromName(method.toString().toStdString());
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument(std::string("loop.interpolation: ") + e.what());
+        }
+    }
+    for (const core::ControlPointSpec& p : s.control.plant.points)
+        if (p.xMm < 0.0 || p.xMm > s.partLengthMm)
+            throw std::invalid_argument("plant: control point x = " + std::to_string(p.xMm) +
+                                        " mm lies outside the part (0 .. " + std::to_string(s.partLengthMm) + " mm)");
+    return s;
+}
+
+}  // namespace
+
+core::LatheShopSpec LoopScenario::shopSpec(std::uint64_t seed) const {
+    core::LatheShopSpec spec;
+    spec.lathe = lathe;
+    spec.plant = control.plant;
+    spec.nominalDiameterMm = nominalDiameterMm;
+    spec.partLengthMm = partLengthMm;
+    spec.timing = timing;
+    spec.seed = seed;
+    return spec;
+}
+
+core::LoopConfig LoopScenario::loopConfig(bool feedForward, std::optional<std::int64_t> lastPartNumber) const {
+    core::LoopConfig c;
+    for (const core::ControlPointSpec& p : control.plant.points)
+        c.pointZMm.push_back(p.xMm);
+    c.partLengthMm = partLengthMm;
+    c.nominalDiameterMm = nominalDiameterMm;
+    c.delayParts = control.plant.delay;
+    if (feedForward) c.systematicModel = systematicModel;
+    c.interpolation = interpolation;
+    c.pathStepMm = pathStepMm;
+    c.plausibleRangeMm = plausibleRangeMm;
+    c.limits = control.limits;
+    c.gaugeTimeoutS = gaugeTimeoutS;
+    c.lastPartNumber = lastPartNumber;
+    core::validateLoopConfig(c);
+    return c;
+}
+
+LoopScenario loadLoopScenario(const QString& nameOrPath, std::optional<int> delay) {
+    const QJsonObject preset = PresetLibrary::load(nameOrPath);
+    try {
+        return read(nameOrPath, preset, delay);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("preset '" + nameOrPath.toStdString() + "': " + e.what());
+    }
+}
+
+}  // namespace tt::config
