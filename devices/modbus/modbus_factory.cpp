@@ -70,7 +70,6 @@ SettingsSchema ModbusFactory::settingsSchema(DeviceKind kind) const {
 
 QList<SettingIssue> ModbusFactory::validate(DeviceKind kind, const QVariantMap& settings, Validation depth) const {
     QList<SettingIssue> issues = DevicePlugin::validate(kind, settings, depth);
-    if (!issues.isEmpty()) return issues;
     const QVariantMap v = withDefaults(settingsSchema(kind), settings);
     if (v.value(QStringLiteral("transport")).toString() == QLatin1String("tcp") &&
         v.value(QStringLiteral("host")).toString().trimmed().isEmpty())
