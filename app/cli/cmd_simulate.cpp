@@ -1,3 +1,8 @@
+// `trueturn simulate`: argument parsing and output only. The work is in core: the scenario comes from
+// config::loadRunToRunSetup, the study (controller choice, EWMA weight grid, Monte-Carlo on the
+// statistical plant, closed-loop Lyapunov analysis) from core::runRunToRunStudy
+// (core/sim/run_to_run_study.h); per-part steps are StochasticPlant::machine/draw and the
+// RunToRunController interface.
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QJsonValue>
