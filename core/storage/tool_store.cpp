@@ -161,13 +161,17 @@ std::vector<ToolAuditEntry> ToolStore::apply(const std::vector<ToolEdit>& edits,
             if (!ids.insert(after.id).second)
                 throw std::invalid_argument("tool id '" + after.id + "' is used twice; ids must be unique");
             write(after, who, now);
-            const core::ToolRecord empty{};
-            const std::vector<core::ToolFieldChange> changes =
-                before ? core::diffTool(*before, after) : core::diffTool(empty, after);
+            std::vector<core::ToolFieldChange> changes;
+            if (before) {
+                changes = core::diffTool(*before, after);
+            } else {  // a new tool: every field it has
+                for (core::ToolField f : core::allToolFields())
+                    if (std::string value = core::toolFieldText(after, f); !value.empty())
+                        changes.push_back({f, std::string(), std::move(value)});
+            }
             for (const core::ToolFieldChange& c : changes)
                 written.push_back(record(now, who, text(before ? before->id : after.id),
-                                         text(core::toolFieldKey(c.field)), before ? text(c.before) : QString(),
-                                         text(c.after)));
+                                         text(core::toolFieldKey(c.field)), text(c.before), text(c.after)));
         }
     });
     return written;

@@ -2,6 +2,7 @@
 
 #include "ui/pages/planned_page.h"
 #include "ui/pages/settings_page.h"
+#include "ui/pages/tools_page.h"
 
 namespace tt::ui {
 
@@ -9,6 +10,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
     switch (id) {
         case PageId::Settings:
             return new SettingsPage(context, parent);
+        case PageId::Tools:
+            return new ToolsPage(context, parent);
         default:
             return new PlannedPage(id, context, parent);
     }
