@@ -3,4 +3,5 @@ target_sources(trueturn_core PRIVATE
     calibration/probe_linearisation.cpp
     calibration/calibration_csv.cpp
     calibration/linearisation_image.cpp
+    calibration/kp_calibration.cpp
 )

@@ -12,5 +12,6 @@ target_sources(trueturn_core PRIVATE
     sim/boring_machine.cpp
     sim/probe_calibration_rig.cpp
     sim/boring_experiment.cpp
+    sim/known_load_rig.cpp
 )
 include("${CMAKE_CURRENT_LIST_DIR}/lathe_sources.cmake")
