@@ -19,4 +19,11 @@ eval "$(scripts/start-test-postgres.sh "$pg_dir" 55432)"
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600
 
+# Fuzzing: a libFuzzer target per byte parser (clang, AddressSanitizer + UndefinedBehaviorSanitizer),
+# each run over its seed corpus (tests/fuzz/corpus/) plus a bounded random run. A separate, small
+# build without Qt; only the fuzz targets are built.
+cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRUETURN_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++
+cmake --build build-fuzz --target fuzz_targets -j "$(nproc)"
+ctest --test-dir build-fuzz --output-on-failure --timeout 120
+
 echo "test.sh: all tests passed in $(( $(date +%s) - started )) s"

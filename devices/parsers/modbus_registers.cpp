@@ -149,7 +149,9 @@ std::vector<ReadBlock> planReads(std::span<const RegisterSpec> specs, std::size_
         ranges[spec.table].emplace_back(spec.address, end);
     }
     std::vector<ReadBlock> blocks;
-    for (auto& [table, list] : ranges) {
+    for (auto& entry : ranges) {
+        const RegisterTable table = entry.first;
+        auto& list = entry.second;
         std::sort(list.begin(), list.end());
         std::uint32_t start = list.front().first;
         std::uint32_t end = list.front().second;

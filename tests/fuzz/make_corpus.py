@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""Writes the seed corpora of the fuzz targets (tests/fuzz/corpus/<target>/): valid frames of
+each protocol, edge cases and known-bad inputs. Run from anywhere; the output is committed."""
+import os
+import struct
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def crc16_ccitt_false(data: bytes) -> int:
+    crc = 0xFFFF
+    for b in data:
+        crc ^= b << 8
+        for _ in range(8):
+            crc = ((crc << 1) ^ 0x1021) & 0xFFFF if crc & 0x8000 else (crc << 1) & 0xFFFF
+    return crc
+
+
+assert crc16_ccitt_false(b"123456789") == 0x29B1  # CRC catalogue check value
+
+
+def write(target: str, name: str, data: bytes) -> None:
+    folder = os.path.join(HERE, "corpus", target)
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(folder, name), "wb") as f:
+        f.write(data)
+
+
+# --- gauge_ascii -------------------------------------------------------------------------
+for name, text in {
+    "reading": b"01A+00026.812\r",
+    "negative": b"01A-0000.123\r",
+    "inch_five_decimals": b"01A+00.12345\r",
+    "suffix_mm": b"01A+00026.812mm\r",
+    "suffix_in_space": b"02B+001.0556 in\r\n",
+    "three_lines": b"01A+00026.812\r01A+00026.813\r\n01A+00026.814\r",
+    "bad_sign": b"01A*00026.812\r",
+    "two_points": b"01A+000.26.812\r",
+    "letters": b"01A+0X026.812\r",
+    "overlong": b"01A+" + b"9" * 60 + b"\r01A+00026.812\r",
+    "no_cr": b"01A+00026.812",
+    "binary": bytes(range(256)),
+}.items():
+    write("gauge_ascii", name, text)
+
+# --- digimatic (first byte: 0 raw nibbles, 1 hex text) ----------------------------------
+def nibbles(hexstr: str) -> bytes:
+    return bytes(int(c, 16) for c in hexstr)
+
+
+for name, hexstr in {
+    "lsm6200_example": "FFFF021076540",
+    "projector_negative": "FFFF801234530",
+    "inch": "FFFF001055641",
+    "judgement_go": "FFFF002681233",
+}.items():
+    write("digimatic", "raw_" + name, b"\x00" + nibbles(hexstr))
+    write("digimatic", "hex_" + name, b"\x01" + hexstr.encode() + b"\r")
+write("digimatic", "raw_noise_then_frame", b"\x00\x03\x07\x0f\x0f\x41" + nibbles("FFFF0021") + nibbles("FFFF002681230"))
+write("digimatic", "raw_five_f", b"\x00\x0f" + nibbles("FFFF002681230"))
+write("digimatic", "raw_bad_digit", b"\x00" + nibbles("FFFF002A81230"))
+write("digimatic", "hex_short_and_long", b"\x01FFFF00268123\rFFFF0026812300\rffff801234530\r")
+
+# --- probe_frames ------------------------------------------------------------------------
+def frame(seq: int, typ: int, payload: bytes) -> bytes:
+    body = bytes([len(payload), seq & 0xFF, typ]) + payload
+    return b"\xa5" + body + struct.pack("<H", crc16_ccitt_false(body))
+
+
+def sample(t_us: int, adc0: int, adc1: int, d0_nm: int, d1_nm: int, status: int) -> bytes:
+    return struct.pack("<IiiiiH", t_us, adc0, adc1, d0_nm, d1_nm, status)
+
+
+samples = b"".join(frame(i, 0x01, sample(i * 5000, 36600, 31760, 20000, -5000, 0x11)) for i in range(5))
+write("probe_frames", "samples", samples)
+write("probe_frames", "ack_begin", frame(0, 0x02, struct.pack("<BBI", 0x14, 0, 0)))
+write("probe_frames", "ack_chunk", frame(1, 0x02, struct.pack("<BBI", 0x15, 0, 128)))
+write("probe_frames", "ack_crc_mismatch", frame(2, 0x02, struct.pack("<BBI", 0x16, 5, 0)))
+write("probe_frames", "table_info", frame(3, 0x03, struct.pack("<HHIB", 7, 0xBEEF, 1000, 1)))
+write("probe_frames", "handshake_replies",
+      frame(0, 0x03, struct.pack("<HHIB", 1, 0x1234, 64, 1)) + frame(1, 0x02, struct.pack("<BBI", 0x12, 0, 200))
+      + frame(2, 0x02, struct.pack("<BBI", 0x10, 0, 0)) + samples)
+corrupt = bytearray(samples)
+corrupt[10] ^= 0x40
+write("probe_frames", "corrupt_middle", bytes(corrupt))
+write("probe_frames", "lost_and_duplicate",
+      frame(10, 0x01, sample(0, 1, 2, 3, 4, 1)) + frame(10, 0x01, sample(0, 1, 2, 3, 4, 1))
+      + frame(14, 0x01, sample(1, 1, 2, 3, 4, 1)) + frame(13, 0x01, sample(2, 1, 2, 3, 4, 1)))
+write("probe_frames", "bad_length", b"\x00\xa5\xff\x13\x55" + frame(3, 0x01, sample(0, 0, 0, 0, 0, 0)))
+write("probe_frames", "short_payloads", frame(0, 0x01, b"\x01\x02") + frame(1, 0x02, b"") + frame(2, 0x7F, b"xyz"))
+write("probe_frames", "overrange_excitation",
+      frame(0, 0x01, sample(0, 0, 65535, 0, 0, 0x07)) + frame(1, 0x01, sample(0, 1, 1, 0, 0, 0x08)))
+
+# --- modbus_registers (type, word order, scale index, then big-endian words) ---------------
+write("modbus_registers", "int16_negative", bytes([0, 0, 1]) + struct.pack(">H", 0xFFFE))
+write("modbus_registers", "uint16", bytes([1, 0, 0]) + struct.pack(">H", 65534))
+write("modbus_registers", "int32_high_first", bytes([2, 0, 0]) + struct.pack(">HH", 0x0001, 0x86A0))
+write("modbus_registers", "int32_low_first", bytes([2, 1, 3]) + struct.pack(">HH", 0x86A0, 0x0001))
+write("modbus_registers", "uint32_max", bytes([3, 0, 0]) + struct.pack(">HH", 0xFFFF, 0xFFFF))
+write("modbus_registers", "float_25", bytes([4, 0, 0]) + struct.pack(">HH", 0x41C8, 0x0000))
+write("modbus_registers", "float_nan", bytes([4, 0, 0]) + struct.pack(">HH", 0x7FC0, 0x0000))
+write("modbus_registers", "float_huge_scale", bytes([4, 0, 6]) + struct.pack(">HH", 0x7F7F, 0xFFFF))
+write("modbus_registers", "map", bytes([2, 7, 1]) + bytes([1, 0, 10, 0, 1, 0, 12, 4, 1, 0, 200, 2, 0, 0xFF, 0xFF, 2]))
+print("corpora written under", os.path.join(HERE, "corpus"))
