@@ -60,6 +60,7 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
     s.plausibleRangeMm = loopNumber(loop, "plausible_range_mm", s.plausibleRangeMm, 1e-3, 100.0);
     s.pathStepMm = loopNumber(loop, "path_step_mm", s.pathStepMm, 0.01, 100.0);
     s.gaugeTimeoutS = loopNumber(loop, "gauge_timeout_s", s.gaugeTimeoutS, 1.0, 1e7);
+    s.toleranceMm = loopNumber(loop, "tolerance_mm", s.toleranceMm, 1e-4, 100.0);
     if (loop.contains(QStringLiteral("interpolation"))) {
         const QJsonValue method = loop.value(QStringLiteral("interpolation"));
         if (!method.isString()) throw std::invalid_argument("loop.interpolation: must be \"pchip\" or \"spline\"");

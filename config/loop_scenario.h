@@ -22,7 +22,7 @@ namespace tt::config {
 ///
 ///   "based_on": "paper-2012",          sections this preset does not have come from that preset
 ///   "loop": {"nominal_diameter_mm", "part_length_mm", "plausible_range_mm": 0.5, "path_step_mm": 0.5,
-///            "interpolation": "pchip" | "spline", "gauge_timeout_s": 600}
+///            "interpolation": "pchip" | "spline", "gauge_timeout_s": 600, "tolerance_mm": 0.03}
 struct LoopScenario {
     QString preset;    ///< name or path it was loaded from
     QJsonObject json;  ///< the preset with the sections of its base merged in
@@ -35,6 +35,7 @@ struct LoopScenario {
     double plausibleRangeMm = 0.5;
     double pathStepMm = 0.5;
     double gaugeTimeoutS = 600.0;
+    double toleranceMm = 0.03;  ///< ± band on diameter shown with the profile (loop.tolerance_mm)
     core::InterpolationMethod interpolation = core::InterpolationMethod::Pchip;
 
     /// The transport delay z of the plant (after any override).

@@ -143,7 +143,7 @@ void LoopEngine::stop() {
             LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, 0,
                                         std::string("the end of the run could not be stored: ") + e.what());
             event.alarmKind = "history";
-            emit(std::move(event));
+            notify(std::move(event));
         }
     }
     m_inProgress.reset();
@@ -200,7 +200,7 @@ void LoopEngine::watchDevices() {
         LoopEvent event = makeEvent(LoopEvent::Kind::DeviceChanged, 0, health.message);
         event.device = name;
         event.health = health;
-        emit(std::move(event));
+        notify(std::move(event));
     }
 }
 
@@ -234,7 +234,7 @@ void LoopEngine::collectFinishedParts() {
         LoopEvent event =
             makeEvent(LoopEvent::Kind::PartFinished, record.partNumber, partText(record.partNumber) + " finished");
         event.corrections = record.corrections;
-        emit(std::move(event));
+        notify(std::move(event));
     }
 }
 
@@ -312,7 +312,7 @@ void LoopEngine::completeMeasurement(PartMeasurementRecord record) {
     LoopEvent event =
         makeEvent(LoopEvent::Kind::PartMeasured, record.partNumber, partText(record.partNumber) + " measured");
     event.measurement = record;
-    emit(std::move(event));
+    notify(std::move(event));
     if (willBeUsed && record.partNumber + m_config.delayParts >= m_nextPart)
         m_measured[record.partNumber] = std::move(record);
 }
@@ -431,7 +431,7 @@ void LoopEngine::startNextPart() {
     LoopEvent event = makeEvent(LoopEvent::Kind::PartStarted, n, "machining " + partText(n));
     event.corrections = m_inProgress->corrections;
     event.path = std::move(correction.path);
-    emit(std::move(event));
+    notify(std::move(event));
 }
 
 void LoopEngine::maybeComplete() {
@@ -465,7 +465,7 @@ void LoopEngine::setState(LoopState state, const std::string& detail) {
     if (state == m_state && detail == m_detail) return;
     m_state = state;
     m_detail = detail;
-    emit(makeEvent(LoopEvent::Kind::StateChanged, 0, detail));
+    notify(makeEvent(LoopEvent::Kind::StateChanged, 0, detail));
 }
 
 void LoopEngine::alarm(const std::string& kind, const std::string& message, std::optional<std::int64_t> part) {
@@ -479,7 +479,7 @@ void LoopEngine::alarm(const std::string& kind, const std::string& message, std:
     }
     LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, part.value_or(0), message);
     event.alarmKind = kind;
-    emit(std::move(event));
+    notify(std::move(event));
 }
 
 void LoopEngine::fault(const std::string& message) {
@@ -494,7 +494,7 @@ void LoopEngine::fault(const std::string& message) {
     }
 }
 
-void LoopEngine::emit(LoopEvent event) {
+void LoopEngine::notify(LoopEvent event) {
     if (!m_listener) return;
     event.state = m_state;
     event.timeS = m_ports.clock.nowS();

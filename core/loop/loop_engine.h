@@ -123,7 +123,7 @@ private:
     void setState(LoopState state, const std::string& detail);
     void alarm(const std::string& kind, const std::string& message, std::optional<std::int64_t> part = std::nullopt);
     void fault(const std::string& message);
-    void emit(LoopEvent event);
+    void notify(LoopEvent event);
     void watchDevices();
     void openSession();
 

@@ -72,6 +72,14 @@ void LatheStation::finishMachining() {
     m_machining.reset();
 }
 
+void LatheStation::forgetPart(std::int64_t partNumber) {
+    for (auto it = m_queue.begin(); it != m_queue.end(); ++it)
+        if (it->part.partNumber == partNumber) {
+            m_queue.erase(it);
+            return;
+        }
+}
+
 void LatheStation::restoreMachinedPart(const PartCorrection& applied) {
     TurnedPart part = m_process.machine(applied);
     m_queue.push_back({std::move(part), m_clock.nowS(), 0});

@@ -55,6 +55,8 @@ public:
     bool automaticGauge() const { return m_automatic; }
     /// The reading of part `partNumber` at point `pointIndex` will be `valueMm` (a typing error, a dirty anvil).
     void injectReading(std::int64_t partNumber, int pointIndex, double valueMm);
+    /// Part `partNumber` was measured elsewhere (by hand): the station does not measure it again.
+    void forgetPart(std::int64_t partNumber);
     /// The CNC refuses corrections with `message` (empty: accepts again).
     void setOutputFault(const std::string& message) { m_outputFault = message; }
     /// A part machined before an interruption (with the corrections it really got) is back on the rack,

@@ -1,6 +1,7 @@
 #include "ui/pages/page_factory.h"
 
 #include "ui/pages/planned_page.h"
+#include "ui/pages/run_page.h"
 #include "ui/pages/settings_page.h"
 #include "ui/pages/tools_page.h"
 
@@ -8,6 +9,8 @@ namespace tt::ui {
 
 Page* createPage(PageId id, AppContext& context, QWidget* parent) {
     switch (id) {
+        case PageId::Run:
+            return new RunPage(context, parent);
         case PageId::Settings:
             return new SettingsPage(context, parent);
         case PageId::Tools:

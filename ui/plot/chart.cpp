@@ -47,13 +47,30 @@ Chart::Chart(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this)) {
 }
 
 void Chart::setTitle(const QString& title) {
-    if (m_plot->plotLayout()->rowCount() == 1) {
-        m_plot->plotLayout()->insertRow(0);
-        auto* element = new QCPTextElement(m_plot, title, QFont(font().family(), 13, QFont::Bold));
-        m_plot->plotLayout()->addElement(0, 0, element);
+    if (auto* element = qobject_cast<QCPTextElement*>(m_plot->plotLayout()->element(0, 0))) {
+        element->setText(title);
         return;
     }
-    if (auto* element = qobject_cast<QCPTextElement*>(m_plot->plotLayout()->element(0, 0))) element->setText(title);
+    m_plot->plotLayout()->insertRow(0);
+    auto* element = new QCPTextElement(m_plot, title, QFont(font().family(), 13, QFont::Bold));
+    m_plot->plotLayout()->addElement(0, 0, element);
+}
+
+void Chart::setYTickCount(int count) {
+    m_plot->yAxis->ticker()->setTickCount(std::max(2, count));
+}
+
+void Chart::setLegendBelow(int columns) {
+    QCPLayoutGrid* layout = m_plot->plotLayout();
+    if (m_plot->legend->layout() != layout) {
+        m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+        layout->insertRow(layout->rowCount());
+        layout->addElement(layout->rowCount() - 1, 0, m_plot->legend);
+        layout->setRowStretchFactor(layout->rowCount() - 1, 0.001);
+    }
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setWrap(std::max(1, columns));
+    m_plot->legend->setMargins(QMargins(4, 2, 4, 2));
 }
 
 void Chart::setAxisTitles(const QString& x, const QString& y) {

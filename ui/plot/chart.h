@@ -37,6 +37,10 @@ public:
     void rescale(bool includeZeroY = true);
     void setXRange(double lower, double upper);
     void setYRange(double lower, double upper);
+    /// About how many ticks the y axis shows (fewer for a short strip chart).
+    void setYTickCount(int count);
+    /// Puts the legend under the plot in `columns` columns, so it never covers the data.
+    void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).
     void refresh();
     /// Writes the chart as PNG; false when the file cannot be written.

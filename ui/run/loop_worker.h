@@ -1,0 +1,77 @@
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+#include <QVector>
+#include <memory>
+
+#include "core/loop/loop_events.h"
+#include "ui/run/run_settings.h"
+
+Q_DECLARE_METATYPE(tt::core::LoopEvent)
+
+namespace tt::storage {
+class Database;
+class SqlHistoryStore;
+}  // namespace tt::storage
+
+namespace tt::ui {
+
+/// The closed loop in its own thread: owns the simulated shop, the controller, the engine and the
+/// history connection (QtSql: used only from this thread), and steps the engine from a timer so the
+/// window never waits for it. Every call comes through queued slots; everything it learns goes out
+/// through signals (queued to the GUI thread).
+class LoopWorker : public QObject {
+    Q_OBJECT
+public:
+    LoopWorker();
+    ~LoopWorker() override;
+
+public slots:
+    /// Sets up and starts a run; failures (bad preset, history that cannot be opened) are reported
+    /// through startFailed and nothing starts.
+    void start(const tt::ui::RunSettings& settings);
+    void pause();
+    void continueRun();
+    void stop();
+    void setSpeed(double speed);
+    /// Diameters come by hand (true) or from the simulated gauge (false).
+    void setManualEntry(bool manual);
+    /// The diameters of part `partNumber` at the control points, typed in by the operator (mm).
+    void submitDiameters(qint64 partNumber, const QVector<double>& diametersMm);
+    /// The oldest part waiting for its diameters is recorded as not measured.
+    void skipMeasurement();
+    /// The gauge stops answering for `seconds` of simulated time (demonstration and tests).
+    void silenceGauge(double seconds);
+    /// Stops the timer and drops the run (before the thread ends).
+    void shutdown();
+
+signals:
+    void started(const tt::ui::RunLayout& layout);
+    void startFailed(const QString& reason);
+    void snapshot(const tt::ui::LoopSnapshot& snapshot);
+    void loopEvent(const tt::core::LoopEvent& event);
+    /// The true profile of a simulated part as it came off the machine (diameter error, mm).
+    void partProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
+    /// A manual entry was not taken (wrong part, no run), in plain words.
+    void notice(const QString& text);
+
+private:
+    struct Run;
+    class Relay;
+
+    void tick();
+    void publish();
+    void onEvent(const core::LoopEvent& event);
+    void openHistory(const QString& path);
+
+    QTimer* m_timer = nullptr;
+    std::unique_ptr<Run> m_run;
+    LoopSnapshot m_last;
+    QString m_openDatabasePath;
+    std::unique_ptr<storage::Database> m_database;
+    std::unique_ptr<storage::SqlHistoryStore> m_history;
+};
+
+}  // namespace tt::ui
