@@ -2,6 +2,10 @@
 
 #include <QString>
 
+namespace tt::devices {
+class DeviceManager;
+}
+
 namespace tt::ui {
 
 class AppState;
@@ -15,6 +19,9 @@ struct AppContext {
     AppState* state = nullptr;
     LanguageSwitcher* language = nullptr;
     QString databasePath;  ///< SQLite file (or PostgreSQL connection name) of the run history
+    /// The device instances (gauge, probe, drive readout, CNC output); may be null: the Devices
+    /// page then makes one and puts it here.
+    devices::DeviceManager* devices = nullptr;
 };
 
 }  // namespace tt::ui

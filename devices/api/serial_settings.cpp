@@ -57,6 +57,14 @@ bool serialPortExists(const QString& portName) {
 #endif
 }
 
+QStringList availableSerialPorts() {
+    QStringList ports;
+    for (const QSerialPortInfo& info : QSerialPortInfo::availablePorts())
+        ports << info.systemLocation();
+    ports.sort();
+    return ports;
+}
+
 void applySerialLine(QSerialPort& port, const QVariantMap& settings) {
     port.setPortName(serialSystemLocation(settings.value(QStringLiteral("port")).toString().trimmed()));
     port.setBaudRate(settings.value(QStringLiteral("baud"), 9600).toInt());

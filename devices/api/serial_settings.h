@@ -2,6 +2,7 @@
 
 #include <QList>
 #include <QString>
+#include <QStringList>
 #include <QVariantMap>
 
 #include "devices/api/settings_schema.h"
@@ -22,6 +23,8 @@ SettingsSchema serialFields(qint64 defaultBaud, int defaultDataBits = 8, const Q
 QString serialSystemLocation(const QString& portName);
 /// Whether the port exists on this computer now.
 bool serialPortExists(const QString& portName);
+/// The serial ports present now (system locations, e.g. /dev/ttyUSB0), for a port chooser.
+QStringList availableSerialPorts();
 
 /// Applies the line settings of `settings` (see serialFields) to `port` before it is opened.
 void applySerialLine(QSerialPort& port, const QVariantMap& settings);

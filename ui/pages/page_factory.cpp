@@ -1,5 +1,6 @@
 #include "ui/pages/page_factory.h"
 
+#include "ui/pages/devices_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/settings_page.h"
@@ -15,6 +16,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new SettingsPage(context, parent);
         case PageId::Tools:
             return new ToolsPage(context, parent);
+        case PageId::Devices:
+            return new DevicesPage(context, parent);
         default:
             return new PlannedPage(id, context, parent);
     }

@@ -1,0 +1,131 @@
+#pragma once
+
+#include <QElapsedTimer>
+#include <QTimer>
+#include <QVariantMap>
+#include <memory>
+#include <optional>
+
+#include "devices/api/device.h"
+#include "devices/api/device_kind.h"
+#include "ui/page.h"
+
+class QCheckBox;
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPushButton;
+class QStackedWidget;
+
+namespace tt::devices {
+class DeviceManager;
+}
+
+namespace tt::ui {
+
+class DeviceStatusBridge;
+class EmptyState;
+class SettingsForm;
+
+/// The Devices page: the configured device instances (gauge micrometers, probe mandrels,
+/// drive-current readouts, correction outputs; the built-in simulator is always among the
+/// types), adding and removing them, each one's settings as a form drawn from its plugin's
+/// schema with the problems shown under the fields, Test connection, and the live value, state,
+/// last error and counters. Settings persist (QSettings) when applied; Revert undoes unapplied
+/// edits. Uses the application's DeviceManager (AppContext::devices); without one it makes its
+/// own (plugins from the folder next to the executable, saved instances restored and opened) and
+/// publishes it in the context. Keeps the device badge and status bar up to date.
+class DevicesPage : public Page {
+    Q_OBJECT
+public:
+    explicit DevicesPage(AppContext& context, QWidget* parent = nullptr);
+    ~DevicesPage() override;
+    QString title() const override;
+    void retranslate() override;
+
+    devices::DeviceManager& manager() { return *m_manager; }
+    /// The form of the device shown (for tests).
+    SettingsForm& form() { return *m_form; }
+
+private:
+    struct Selection {
+        QString deviceId;  ///< empty for a device being added
+        QString pluginId;
+        devices::DeviceKind kind = devices::DeviceKind::Gauge;
+    };
+
+    void buildUi();
+    void fillTypes();
+    void reloadList();
+    void selectDevice(const QString& id);
+    void startDraft();
+    void showSelection();
+    void validateForm();
+    void apply();
+    void revert();
+    void removeSelected();
+    void testConnection();
+    void pollTest();
+    void finishTest(bool ok, const QString& text);
+    void refreshStatus();
+    void updateListTones();
+    void saveSettings();
+    devices::Device* selectedDevice() const;
+    QString typeName(const QString& pluginId, devices::DeviceKind kind) const;
+
+    devices::DeviceManager* m_manager = nullptr;
+    std::unique_ptr<devices::DeviceManager> m_ownManager;
+    DeviceStatusBridge* m_bridge = nullptr;
+    std::optional<Selection> m_selection;
+    QVariantMap m_savedValues;
+    QString m_savedName;
+
+    // Test connection.
+    std::unique_ptr<devices::Device> m_testDevice;
+    devices::Device* m_testTarget = nullptr;
+    QString m_reopenAfterTest;
+    QTimer m_testTimer;
+    QElapsedTimer m_testClock;
+    QTimer m_refresh;
+
+    // Left column.
+    QLabel* m_listTitle;
+    QListWidget* m_list;
+    QLabel* m_newTypeLabel;
+    QComboBox* m_newType;
+    QPushButton* m_add;
+    QPushButton* m_remove;
+    // Right column.
+    QStackedWidget* m_detailStack;
+    EmptyState* m_empty;
+    QLabel* m_detailTitle;
+    QLabel* m_typeText;
+    QLabel* m_stateLabel;
+    QLabel* m_stateBadge;
+    QLabel* m_stateMessage;
+    QLabel* m_liveLabel;
+    QLabel* m_live;
+    QLabel* m_lastErrorLabel;
+    QLabel* m_lastError;
+    QLabel* m_nameLabel;
+    QLineEdit* m_name;
+    QLabel* m_settingsTitle;
+    SettingsForm* m_form;
+    QLabel* m_problems;
+    QPushButton* m_test;
+    QPushButton* m_apply;
+    QPushButton* m_revert;
+    QLabel* m_testResult;
+    QGroupBox* m_faults;
+    QCheckBox* m_faultSilent;
+    QCheckBox* m_faultNoisy;
+    QCheckBox* m_faultStuck;
+    QCheckBox* m_faultMalformed;
+    QCheckBox* m_faultUnplugged;
+    QLabel* m_statsTitle;
+    QLabel* m_stats;
+};
+
+}  // namespace tt::ui
