@@ -1,32 +1,92 @@
-// `trueturn simulate`: argument parsing and output only. The work is in core: the scenario comes from
-// config::loadRunToRunSetup, the study (controller choice, EWMA weight grid, Monte-Carlo on the
-// statistical plant, closed-loop Lyapunov analysis) from core::runRunToRunStudy
-// (core/sim/run_to_run_study.h); per-part steps are StochasticPlant::machine/draw and the
-// RunToRunController interface.
+// `trueturn simulate`: argument parsing and output only. The run is the closed loop itself
+// (core::LoopEngine) on the built-in shop (core::LatheShop: the physical lathe of a preset with a
+// "lathe" section, else the controller's statistical plant), driven by core::runLatheStudy
+// (core/sim/lathe_study.h); the scenario comes from config::loadLoopScenario; the history is
+// storage::SqlHistoryStore.
+#include <QFileInfo>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonValue>
 #include <QString>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "app/cli/command.h"
 #include "app/cli/command_parser.h"
-#include "config/plant_config.h"
+#include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
-#include "core/sim/run_to_run_study.h"
+#include "core/sim/lathe_study.h"
+#include "core/storage/database.h"
+#include "core/storage/history_store.h"
 
 namespace tt::cli {
 
 namespace {
 
+/// What the run is made of; stored with a --db run so --resume sets it up again.
+struct RunChoice {
+    QString preset = QStringLiteral("paper-2012");
+    std::optional<int> delay;
+    std::int64_t parts = 20000;
+    std::int64_t warmup = 100;
+    std::uint64_t seed = 1;
+    core::ControllerKind controller = core::ControllerKind::Lqg;
+    std::optional<double> ewmaWeight;  ///< none: the preset's (auto: best on the grid)
+    bool ewmaAuto = false;
+
+    QJsonObject toJson(int delayUsed) const {
+        QJsonObject o{{QStringLiteral("source"), QStringLiteral("simulate")},
+                      {QStringLiteral("preset"), preset},
+                      {QStringLiteral("delay"), delayUsed},
+                      {QStringLiteral("parts"), static_cast<qint64>(parts)},
+                      {QStringLiteral("warmup"), static_cast<qint64>(warmup)},
+                      {QStringLiteral("seed"), static_cast<qint64>(seed)},
+                      {QStringLiteral("controller"), QString::fromStdString(core::controllerKindName(controller))}};
+        if (ewmaWeight) o.insert(QStringLiteral("ewma_weight"), *ewmaWeight);
+        if (ewmaAuto) o.insert(QStringLiteral("ewma_weight"), QStringLiteral("auto"));
+        return o;
+    }
+
+    static RunChoice fromJson(const QJsonObject& o) {
+        RunChoice c;
+        if (o.value(QStringLiteral("source")).toString() != QLatin1String("simulate"))
+            throw UsageError("--resume: the last run in this history was not started by 'trueturn simulate'");
+        c.preset = o.value(QStringLiteral("preset")).toString();
+        c.delay = o.value(QStringLiteral("delay")).toInt();
+        c.parts = o.value(QStringLiteral("parts")).toInteger();
+        c.warmup = o.value(QStringLiteral("warmup")).toInteger();
+        c.seed = static_cast<std::uint64_t>(o.value(QStringLiteral("seed")).toInteger());
+        c.controller = core::controllerKindFromName(o.value(QStringLiteral("controller")).toString().toStdString());
+        const QJsonValue w = o.value(QStringLiteral("ewma_weight"));
+        if (w.isDouble()) c.ewmaWeight = w.toDouble();
+        c.ewmaAuto = w.isString();
+        if (c.preset.isEmpty() || c.parts < 1 || c.warmup < 0)
+            throw UsageError("--resume: the stored settings of the run are damaged");
+        return c;
+    }
+};
+
 QJsonValue finiteOrNull(double v) {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
 }
 
-QJsonObject toJson(const core::StudyResult& r) {
+QString g(double v, int precision = 4) {
+    return std::isfinite(v) ? QString::number(v, 'g', precision) : QStringLiteral("n/a");
+}
+
+/// The largest |mean| of the profile and where.
+std::pair<double, double> profilePeak(const core::LatheStudyResult& r) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < r.profileMeanMm.size(); ++i)
+        if (std::abs(r.profileMeanMm[i]) > std::abs(r.profileMeanMm[best])) best = i;
+    return {r.profileZMm.at(best), r.profileMeanMm.at(best)};
+}
+
+QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::optional<QString>& database) {
     QJsonArray points;
-    for (const core::StudyPoint& p : r.points)
+    for (const core::LatheStudyPoint& p : r.points)
         points.append(QJsonObject{{QStringLiteral("x_mm"), p.xMm},
                                   {QStringLiteral("var_open"), finiteOrNull(p.varOpenMm2)},
                                   {QStringLiteral("var_closed"), finiteOrNull(p.varClosedMm2)},
@@ -38,14 +98,28 @@ QJsonObject toJson(const core::StudyResult& r) {
                     {QStringLiteral("points"), points},
                     {QStringLiteral("k_eff"), finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
+    if (profile) {
+        QJsonArray rows;
+        for (std::size_t i = 0; i < r.profileZMm.size(); ++i)
+            rows.append(QJsonObject{{QStringLiteral("x_mm"), r.profileZMm[i]},
+                                    {QStringLiteral("mean_error_mm"), r.profileMeanMm[i]},
+                                    {QStringLiteral("std_error_mm"), r.profileStdMm[i]}});
+        out.insert(QStringLiteral("profile"), rows);
+        out.insert(QStringLiteral("profile_parts"),
+                   QJsonObject{{QStringLiteral("from"), static_cast<qint64>(r.profileFromPart)},
+                               {QStringLiteral("to"), static_cast<qint64>(r.profileToPart)}});
+        const auto [x, value] = profilePeak(r);
+        out.insert(QStringLiteral("profile_peak"),
+                   QJsonObject{{QStringLiteral("x_mm"), x}, {QStringLiteral("mean_error_mm"), value}});
+    }
+    if (database) {
+        out.insert(QStringLiteral("database"), *database);
+        out.insert(QStringLiteral("run_id"), r.runId ? QJsonValue(static_cast<qint64>(*r.runId)) : QJsonValue());
+    }
     return out;
 }
 
-QString g(double v, int precision = 4) {
-    return std::isfinite(v) ? QString::number(v, 'g', precision) : QStringLiteral("n/a");
-}
-
-void printText(const QString& preset, const core::StudyResult& r, std::uint64_t seed) {
+void printText(const QString& preset, const core::LatheStudyResult& r, std::uint64_t seed, bool profile) {
     QString controller = QString::fromStdString(core::controllerKindName(r.controller));
     if (r.ewmaWeight) controller += QStringLiteral(" (weight %1)").arg(g(*r.ewmaWeight, 3));
     printLine(QStringLiteral("Run-to-run simulation, preset %1: controller %2, delay z = %3, %4 parts, seed %5")
@@ -59,7 +133,7 @@ void printText(const QString& preset, const core::StudyResult& r, std::uint64_t 
                   .arg(QStringLiteral("closed σ², mm²"), 15)
                   .arg(QStringLiteral("k_eff"), 7)
                   .arg(QStringLiteral("analytic"), 9));
-    for (const core::StudyPoint& p : r.points)
+    for (const core::LatheStudyPoint& p : r.points)
         printLine(QStringLiteral("%1 %2 %3 %4 %5")
                       .arg(p.xMm, 8, 'f', 1)
                       .arg(g(p.varOpenMm2), 13)
@@ -69,20 +143,41 @@ void printText(const QString& preset, const core::StudyResult& r, std::uint64_t 
     printLine(QStringLiteral("k_eff (all points): %1 simulated, %2 analytic; %3 measured value(s) rejected")
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
+    if (!profile) return;
+    printLine(
+        QStringLiteral("Profile of parts %1 .. %2 (true diameter error):").arg(r.profileFromPart).arg(r.profileToPart));
+    printLine(QStringLiteral("%1 %2 %3")
+                  .arg(QStringLiteral("x, mm"), 8)
+                  .arg(QStringLiteral("mean, mm"), 10)
+                  .arg(QStringLiteral("σ, mm"), 9));
+    for (std::size_t i = 0; i < r.profileZMm.size(); ++i)
+        printLine(QStringLiteral("%1 %2 %3")
+                      .arg(r.profileZMm[i], 8, 'f', 1)
+                      .arg(r.profileMeanMm[i], 10, 'f', 4)
+                      .arg(r.profileStdMm[i], 9, 'f', 4));
+    const auto [x, value] = profilePeak(r);
+    printLine(QStringLiteral("largest mean error %1 mm at x = %2 mm").arg(value, 0, 'f', 4).arg(x, 0, 'f', 1));
 }
 
 int run(const QStringList& arguments) {
     CommandParser parser(QStringLiteral("simulate"),
-                         QStringLiteral("Monte-Carlo run-to-run simulation of a scenario preset (paper 000, Table 2): "
-                                        "open and closed loop on the same disturbance, k_eff per control point, "
-                                        "simulated and analytic."));
+                         QStringLiteral("The closed loop on the built-in simulator, headless (paper 000): parts are "
+                                        "machined, measured and corrected part by part with the controller; the open "
+                                        "loop runs on the same disturbance for k_eff per control point (Table 2). A "
+                                        "preset with a lathe section runs the physical lathe, otherwise the "
+                                        "controller's statistical plant."));
     parser.addOption(QStringLiteral("preset"),
-                     QStringLiteral("Scenario preset name or JSON file (default paper-2012)."), QStringLiteral("name"),
-                     QStringLiteral("paper-2012"));
+                     QStringLiteral("Scenario preset name or JSON file (default paper-2012; the physical lathe: "
+                                    "paper-2012-group1..3)."),
+                     QStringLiteral("name"), QStringLiteral("paper-2012"));
     parser.addOption(QStringLiteral("delay"),
                      QStringLiteral("Transport delay z in parts, 1..8 (default: the preset's)."), QStringLiteral("z"));
-    parser.addOption(QStringLiteral("parts"), QStringLiteral("Parts to simulate, 100..10000000 (default 20000)."),
+    parser.addOption(QStringLiteral("parts"),
+                     QStringLiteral("Parts counted in the statistics, 100..10000000 (default 20000)."),
                      QStringLiteral("n"), QStringLiteral("20000"));
+    parser.addOption(QStringLiteral("warmup"),
+                     QStringLiteral("Parts machined first and not counted, 0..1000000 (default 100)."),
+                     QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));
     parser.addOption(QStringLiteral("controller"), QStringLiteral("lqg, ewma or open (default lqg)."),
@@ -91,37 +186,120 @@ int run(const QStringList& arguments) {
                      QStringLiteral("EWMA weight in (0, 1], or auto: the best on a grid 0.05..1 (default: the "
                                     "preset's)."),
                      QStringLiteral("w"));
+    parser.addOption(QStringLiteral("profile"),
+                     QStringLiteral("Add the profile of the finished parts: mean and standard deviation of the "
+                                    "diameter error along the part, after the loop's start-up (2z + 5 parts)."));
+    parser.addOption(QStringLiteral("profile-step"),
+                     QStringLiteral("Spacing of the profile positions, 1..100 mm (default 12.5: the paper's 25 mm "
+                                    "grid and the middle)."),
+                     QStringLiteral("mm"), QStringLiteral("12.5"));
+    parser.addOption(QStringLiteral("db"),
+                     QStringLiteral("Store the run in this SQLite history (each part one transaction)."),
+                     QStringLiteral("file"));
+    parser.addOption(QStringLiteral("resume"),
+                     QStringLiteral("Continue the last run stored in --db from its next part, with its own "
+                                    "settings and the stored controller state."));
+    parser.addOption(QStringLiteral("speed"),
+                     QStringLiteral("Simulated time per wall time, 0..1e9 (default 0: as fast as possible; 360: a "
+                                    "6-minute part per second)."),
+                     QStringLiteral("x"), QStringLiteral("0"));
     parser.parse(arguments);
 
-    std::optional<int> delay;
-    if (parser.isSet(QStringLiteral("delay")))
-        delay = static_cast<int>(parser.integer(QStringLiteral("delay"), 1, core::kMaxDelay));
-    core::StudyOptions options;
-    options.monteCarlo.parts = parser.integer(QStringLiteral("parts"), 100, 10000000);
-    options.monteCarlo.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
-    options.controller = core::controllerKindFromName(
-        parser
-            .choice(QStringLiteral("controller"),
-                    {QStringLiteral("lqg"), QStringLiteral("ewma"), QStringLiteral("open")})
-            .toStdString());
-    const QString preset = parser.value(QStringLiteral("preset"));
-    core::RunToRunSetup setup = config::loadRunToRunSetup(preset, delay);
-    if (parser.isSet(QStringLiteral("ewma-weight"))) {
-        if (options.controller != core::ControllerKind::Ewma)
-            throw UsageError("--ewma-weight: only with --controller ewma");
-        if (parser.value(QStringLiteral("ewma-weight")) == QLatin1String("auto")) {
-            setup.ewmaWeightAuto = true;
-        } else {
-            const double w = parser.number(QStringLiteral("ewma-weight"), 0.0, 1.0);
-            if (w <= 0.0) throw UsageError("--ewma-weight: must be in (0, 1] or auto");
-            options.ewmaWeight = w;
+    const bool resume = parser.isSet(QStringLiteral("resume"));
+    const std::optional<QString> database =
+        parser.isSet(QStringLiteral("db")) ? std::optional<QString>(parser.value(QStringLiteral("db"))) : std::nullopt;
+    if (resume && !database) throw UsageError("--resume: needs --db, the history of the run to continue");
+    const double speed = parser.number(QStringLiteral("speed"), 0.0, 1e9);
+    const double profileStep = parser.number(QStringLiteral("profile-step"), 1.0, 100.0);
+
+    std::unique_ptr<storage::Database> db;
+    std::unique_ptr<storage::SqlHistoryStore> history;
+    if (database) {
+        if (resume && !QFileInfo::exists(*database))
+            throw UsageError("--db: '" + database->toStdString() + "' does not exist, so there is nothing to resume");
+        try {
+            db = std::make_unique<storage::Database>(storage::DatabaseConfig::sqlite(*database));
+            history = std::make_unique<storage::SqlHistoryStore>(*db);
+        } catch (const storage::StorageError& e) {
+            throw UsageError(std::string("--db: ") + e.what());
         }
     }
-    const core::StudyResult result = core::runRunToRunStudy(setup, options);
+
+    RunChoice choice;
+    std::optional<core::ResumePoint> resumePoint;
+    if (resume) {
+        for (const char* option : {"preset", "delay", "parts", "warmup", "seed", "controller", "ewma-weight"})
+            if (parser.isSet(QString::fromLatin1(option)))
+                throw UsageError(std::string("--") + option +
+                                 ": a resumed run keeps its own settings; leave the option out");
+        resumePoint = history->resumePoint();
+        if (!resumePoint) throw UsageError("--resume: the history holds no run with a finished part");
+        if (resumePoint->run.status == "complete")
+            throw UsageError("--resume: the last run (" + std::to_string(resumePoint->run.runId) +
+                             ") is already complete");
+        const QJsonObject stored =
+            QJsonDocument::fromJson(QByteArray::fromStdString(resumePoint->run.description.settingsJson)).object();
+        choice = RunChoice::fromJson(stored);
+    } else {
+        if (parser.isSet(QStringLiteral("delay")))
+            choice.delay = static_cast<int>(parser.integer(QStringLiteral("delay"), 1, core::kMaxDelay));
+        choice.parts = parser.integer(QStringLiteral("parts"), 100, 10000000);
+        choice.warmup = parser.integer(QStringLiteral("warmup"), 0, 1000000);
+        choice.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
+        choice.controller = core::controllerKindFromName(
+            parser
+                .choice(QStringLiteral("controller"),
+                        {QStringLiteral("lqg"), QStringLiteral("ewma"), QStringLiteral("open")})
+                .toStdString());
+        choice.preset = parser.value(QStringLiteral("preset"));
+        if (parser.isSet(QStringLiteral("ewma-weight"))) {
+            if (choice.controller != core::ControllerKind::Ewma)
+                throw UsageError("--ewma-weight: only with --controller ewma");
+            if (parser.value(QStringLiteral("ewma-weight")) == QLatin1String("auto")) {
+                choice.ewmaAuto = true;
+            } else {
+                const double w = parser.number(QStringLiteral("ewma-weight"), 0.0, 1.0);
+                if (w <= 0.0) throw UsageError("--ewma-weight: must be in (0, 1] or auto");
+                choice.ewmaWeight = w;
+            }
+        }
+    }
+
+    config::LoopScenario scenario = config::loadLoopScenario(choice.preset, choice.delay);
+    if (choice.ewmaAuto) scenario.control.ewmaWeightAuto = true;
+    const core::LoopConfig loop = scenario.loopConfig(choice.controller != core::ControllerKind::Open, std::nullopt);
+
+    core::LatheStudyOptions options;
+    options.controller = choice.controller;
+    options.ewmaWeight = choice.ewmaWeight;
+    options.parts = choice.parts;
+    options.warmupParts = choice.warmup;
+    options.speed = speed;
+    if (parser.isSet(QStringLiteral("profile"))) {
+        const double length = scenario.partLengthMm;
+        const int steps = static_cast<int>(std::floor(length / profileStep + 1e-9));
+        for (int i = 0; i <= steps; ++i)
+            options.profileZMm.push_back(std::min(length, i * profileStep));
+        if (options.profileZMm.back() < length - 1e-9) options.profileZMm.push_back(length);
+    }
+    options.history = history.get();
+    options.resume = resumePoint;
+    options.description = {choice.preset.toStdString(),
+                           core::controllerKindName(choice.controller),
+                           scenario.delay(),
+                           loop.nominalDiameterMm,
+                           loop.partLengthMm,
+                           loop.pointZMm,
+                           QJsonDocument(choice.toJson(scenario.delay())).toJson(QJsonDocument::Compact).toStdString()};
+
+    // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
+    // with the reason; what was stored stays stored and the run can be resumed.
+    const core::LatheStudyResult result =
+        core::runLatheStudy(scenario.control, scenario.shopSpec(choice.seed), loop, options);
     if (parser.json())
-        printJson(toJson(result));
+        printJson(toJson(result, parser.isSet(QStringLiteral("profile")), database));
     else
-        printText(preset, result, options.monteCarlo.seed);
+        printText(choice.preset, result, choice.seed, parser.isSet(QStringLiteral("profile")));
     return kExitOk;
 }
 
@@ -129,7 +307,9 @@ int run(const QStringList& arguments) {
 
 Command makeSimulateCommand() {
     return {QStringLiteral("simulate"),
-            QStringLiteral("Monte-Carlo run-to-run simulation: k_eff of LQG, EWMA or open loop (Table 2)"), run};
+            QStringLiteral("The closed loop on the built-in simulator: k_eff of LQG, EWMA or open loop (Table 2), "
+                           "the profile of the parts, a stored and resumable run"),
+            run};
 }
 
 }  // namespace tt::cli

@@ -12,4 +12,5 @@ target_sources(trueturn_core PRIVATE
     sim/lathe_station.cpp
     sim/lathe_shop.cpp
     sim/lathe_run.cpp
+    sim/lathe_study.cpp
 )
