@@ -21,7 +21,8 @@ public:
 
     /// Stable id stored with each instance ("gauge-serial").
     virtual QString pluginId() const = 0;
-    /// English name shown on the Devices page ("Gauge micrometer, serial").
+    /// English name of how the plugin connects, shown after the kind on the Devices page
+    /// ("Serial data cable", "Modbus TCP/RTU").
     virtual QString displayName() const = 0;
     /// The kinds this plugin creates.
     virtual QList<DeviceKind> kinds() const = 0;

@@ -25,7 +25,13 @@ SerialLink::SerialLink(QVariantMap settings, QString what, Callbacks callbacks)
     });
     QObject::connect(m_port.get(), &QSerialPort::errorOccurred, [this](QSerialPort::SerialPortError error) {
         if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port->isOpen()) return;
-        lost(QStringLiteral("the %1 on %2 was disconnected (%3)").arg(m_what, m_portName, m_port->errorString()));
+        // Qt's own text for a vanished port is the stale errno ("File exists"): say what happened.
+        const QString what = error == QSerialPort::ResourceError
+                                 ? QStringLiteral("the port went away: cable or adapter unplugged")
+                             : error == QSerialPort::ReadError  ? QStringLiteral("reading failed")
+                             : error == QSerialPort::WriteError ? QStringLiteral("writing failed")
+                                                                : m_port->errorString();
+        lost(QStringLiteral("the %1 on %2 was disconnected (%3)").arg(m_what, m_portName, what));
     });
 }
 
@@ -46,6 +52,7 @@ void SerialLink::open() {
 
 void SerialLink::close() {
     m_wanted = false;
+    m_disconnected.clear();
     m_retry.stop();
     if (m_port->isOpen()) m_port->close();
 }
@@ -64,6 +71,7 @@ void SerialLink::attempt() {
     applySerialLine(*m_port, m_settings);
     if (m_port->open(QIODevice::ReadWrite)) {
         m_port->clear();
+        m_disconnected.clear();
         m_backoffMs = kFirstBackoffMs;
         m_failedAttempts = 0;
         if (m_callbacks.onOpened) m_callbacks.onOpened();
@@ -72,13 +80,17 @@ void SerialLink::attempt() {
     ++m_failedAttempts;
     const QString reason = m_port->errorString();
     if (m_callbacks.onLost)
-        m_callbacks.onLost(QStringLiteral("cannot open %1 for the %2: %3").arg(m_portName, m_what, reason));
+        m_callbacks.onLost(m_disconnected.isEmpty()
+                               ? QStringLiteral("cannot open %1 for the %2: %3").arg(m_portName, m_what, reason)
+                               : QStringLiteral("%1; reopening (%2)").arg(m_disconnected, reason),
+                           false);
     scheduleRetry();
 }
 
 void SerialLink::lost(const QString& reason) {
     if (m_port->isOpen()) m_port->close();
-    if (m_callbacks.onLost) m_callbacks.onLost(reason);
+    m_disconnected = reason;
+    if (m_callbacks.onLost) m_callbacks.onLost(reason, true);
     scheduleRetry();
 }
 

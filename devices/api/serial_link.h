@@ -20,7 +20,8 @@ public:
     struct Callbacks {
         std::function<void(const QByteArray&)> onBytes;  ///< bytes arrived
         std::function<void()> onOpened;                  ///< the port is open (first time or again)
-        std::function<void(const QString&)> onLost;      ///< could not open, or lost; the reason
+        /// Could not open, or lost (`disconnected` true: it was open and went away); the reason.
+        std::function<void(const QString& reason, bool disconnected)> onLost;
     };
 
     /// `settings`: the serial fields (see serial_settings.h). `what`: the device for messages ("gauge").
@@ -55,6 +56,7 @@ private:
     int m_backoffMs = 250;
     int m_failedAttempts = 0;
     bool m_wanted = false;
+    QString m_disconnected;  ///< why the port was lost, kept while reopening fails
 };
 
 }  // namespace tt::devices

@@ -18,7 +18,7 @@ SerialGaugeDevice::SerialGaugeDevice(const QVariantMap& settings, const DeviceCo
     m_link = std::make_unique<SerialLink>(
         settings, QStringLiteral("gauge"),
         SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
-                              [this](const QString& reason) { lost(reason); }});
+                              [this](const QString& reason, bool disconnected) { lost(reason, disconnected); }});
     m_replyTimer.setSingleShot(true);
     QObject::connect(&m_replyTimer, &QTimer::timeout, [this] { timedOut(); });
 }
@@ -62,7 +62,8 @@ void SerialGaugeDevice::opened() {
     }
 }
 
-void SerialGaugeDevice::lost(const QString& reason) {
+void SerialGaugeDevice::lost(const QString& reason, bool disconnected) {
+    if (disconnected) reportError(reason);
     m_replyTimer.stop();
     m_decoder.reset();
     setState(core::DeviceState::Error, reason);

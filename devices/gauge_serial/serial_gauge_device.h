@@ -37,7 +37,7 @@ public:
 
 private:
     void opened();
-    void lost(const QString& reason);
+    void lost(const QString& reason, bool disconnected);
     void bytesArrived(const QByteArray& bytes);
     void timedOut();
     QString readyMessage() const;

@@ -10,7 +10,7 @@ namespace tt::devices {
 class ModbusFactory : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("modbus"); }
-    QString displayName() const override { return QStringLiteral("Drive or PLC, Modbus TCP/RTU"); }
+    QString displayName() const override { return QStringLiteral("Modbus TCP/RTU"); }
     QList<DeviceKind> kinds() const override { return {DeviceKind::DriveCurrent, DeviceKind::CorrectionOutput}; }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     QList<SettingIssue> validate(DeviceKind kind, const QVariantMap& settings, Validation depth) const override;

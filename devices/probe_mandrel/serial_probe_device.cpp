@@ -24,7 +24,7 @@ SerialProbeDevice::SerialProbeDevice(const QVariantMap& settings, const DeviceCo
     m_link = std::make_unique<SerialLink>(
         settings, QStringLiteral("probe mandrel"),
         SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
-                              [this](const QString& reason) { lost(reason); }});
+                              [this](const QString& reason, bool disconnected) { lost(reason, disconnected); }});
     m_timer.setInterval(kTickMs);
     m_timer.setTimerType(Qt::PreciseTimer);
     QObject::connect(&m_timer, &QTimer::timeout, [this] { tick(); });
@@ -65,7 +65,8 @@ void SerialProbeDevice::opened() {
     updateState();
 }
 
-void SerialProbeDevice::lost(const QString& reason) {
+void SerialProbeDevice::lost(const QString& reason, bool disconnected) {
+    if (disconnected) reportError(reason);
     m_timer.stop();
     m_linkProblem = reason;
     setState(core::DeviceState::Error, reason);

@@ -108,7 +108,7 @@ void SettingsForm::setSchema(const devices::SettingsSchema& schema, const QVaria
         row.editor = makeEditor(field);
         row.editor->setObjectName(QStringLiteral("field_") + field.key);
         row.editor->setToolTip(field.help);
-        row.editor->setMinimumWidth(260);
+        row.editor->setMinimumWidth(220);
         auto* editorLine = new QWidget(this);
         auto* line = new QHBoxLayout(editorLine);
         line->setContentsMargins(0, 0, 0, 0);

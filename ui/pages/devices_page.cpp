@@ -1,5 +1,6 @@
 #include "ui/pages/devices_page.h"
 
+#include <QAbstractItemView>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -182,6 +183,7 @@ void DevicesPage::buildUi() {
         "QLabel#DeviceStateBadge[tone=\"warn\"] { background: #b26a00; }"
         "QLabel#DeviceStateBadge[tone=\"fault\"] { background: #c62828; }"
         "QLabel#LiveValue { font-size: 24pt; font-weight: bold; color: #1f2a36; }"
+        "QLabel#LiveValue[tone=\"stale\"] { color: #8a96a3; }"
         "QLabel#LastError { color: #8e0000; }"
         "QLabel#TestResult { font-size: 14pt; font-weight: bold; }"
         "QLabel#TestResult[tone=\"ok\"] { color: #2e7d32; }"
@@ -189,12 +191,15 @@ void DevicesPage::buildUi() {
         "QLabel#TestResult[tone=\"warn\"] { color: #b26a00; }"
         "QLabel#FormProblems { color: #c62828; font-weight: bold; }"
         "QListWidget#deviceList { font-size: 14pt; }"
+        "QGroupBox QCheckBox { min-height: 40px; }"
+        "QGroupBox QCheckBox::indicator { width: 26px; height: 26px; }"
         "QListWidget#deviceList::item { min-height: 56px; padding: 4px; }"));
     for (QLabel* title : {m_listTitle, m_detailTitle, m_settingsTitle, m_statsTitle})
         title->setObjectName(QStringLiteral("SectionTitle"));
     m_list->setObjectName(QStringLiteral("deviceList"));
     m_list->setIconSize(QSize(28, 28));
     m_newType->setObjectName(QStringLiteral("newDeviceType"));
+    m_newType->view()->setMinimumWidth(520);
     m_add->setObjectName(QStringLiteral("addDevice"));
     m_remove->setObjectName(QStringLiteral("removeDevice"));
     m_remove->setProperty("role", QStringLiteral("danger"));
@@ -202,6 +207,7 @@ void DevicesPage::buildUi() {
     m_stateMessage->setObjectName(QStringLiteral("stateMessage"));
     m_stateMessage->setWordWrap(true);
     m_live->setObjectName(QStringLiteral("LiveValue"));
+    m_live->setWordWrap(true);
     m_lastError->setObjectName(QStringLiteral("LastError"));
     m_lastError->setWordWrap(true);
     m_name->setObjectName(QStringLiteral("deviceName"));
@@ -216,6 +222,7 @@ void DevicesPage::buildUi() {
     m_testResult->setWordWrap(true);
     m_stats->setObjectName(QStringLiteral("deviceCounters"));
     m_stats->setTextFormat(Qt::RichText);
+    m_stats->setWordWrap(true);
     m_typeText->setWordWrap(true);
 
     // Left: the instances and adding one.
@@ -242,7 +249,9 @@ void DevicesPage::buildUi() {
     status->setHorizontalSpacing(16);
     status->addWidget(m_stateLabel, 0, 0);
     auto* stateLine = new QHBoxLayout;
-    stateLine->addWidget(m_stateBadge);
+    m_stateBadge->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    stateLine->setSpacing(12);
+    stateLine->addWidget(m_stateBadge, 0, Qt::AlignTop);
     stateLine->addWidget(m_stateMessage, 1);
     status->addLayout(stateLine, 0, 1);
     status->addWidget(m_liveLabel, 1, 0);
@@ -267,16 +276,19 @@ void DevicesPage::buildUi() {
     nameLine->addRow(m_nameLabel, m_name);
     d->addLayout(nameLine);
     d->addWidget(m_form);
-    auto* faults = new QHBoxLayout(m_faults);
-    for (QCheckBox* box : {m_faultSilent, m_faultNoisy, m_faultStuck, m_faultMalformed, m_faultUnplugged})
-        faults->addWidget(box);
-    faults->addStretch(1);
+    auto* faults = new QGridLayout(m_faults);
+    int slot = 0;
+    for (QCheckBox* box : {m_faultSilent, m_faultNoisy, m_faultStuck, m_faultMalformed, m_faultUnplugged}) {
+        faults->addWidget(box, slot / 2, slot % 2);
+        ++slot;
+    }
     d->addWidget(m_faults);
     d->addWidget(m_statsTitle);
     d->addWidget(m_stats);
     d->addStretch(1);
     auto* scroll = new QScrollArea(this);
     scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setWidget(detail);
     m_detailStack->addWidget(m_empty);
@@ -388,7 +400,9 @@ void DevicesPage::startDraft() {
 void DevicesPage::showSelection() {
     m_testTimer.stop();
     m_testResult->clear();
+    m_testResult->hide();
     m_problems->clear();
+    m_problems->hide();
     if (!m_selection) {
         m_detailStack->setCurrentIndex(0);
         m_remove->setEnabled(false);
@@ -425,9 +439,9 @@ void DevicesPage::validateForm() {
     const QList<devices::SettingIssue> issues =
         plugin->validate(m_selection->kind, m_form->values(), devices::Validation::Full);
     m_form->showIssues(issues);
-    m_problems->setText(
-        issues.isEmpty() ? QString()
-                         : tr("%n setting(s) to correct (marked in red).", nullptr, static_cast<int>(issues.size())));
+    m_problems->setText(issues.isEmpty() ? QString()
+                                         : tr("Settings to correct: %1 (marked in red).").arg(issues.size()));
+    m_problems->setVisible(!issues.isEmpty());
     const bool edited =
         m_form->values() != devices::withDefaults(plugin->settingsSchema(m_selection->kind), m_savedValues) ||
         m_name->text().trimmed() != m_savedName;
@@ -450,6 +464,7 @@ void DevicesPage::apply() {
         }
     } catch (const std::invalid_argument& e) {
         m_problems->setText(QString::fromStdString(e.what()));
+        m_problems->setVisible(true);
         return;
     }
     if (devices::Device* d = selectedDevice()) d->open();
@@ -497,6 +512,7 @@ void DevicesPage::testConnection() {
         m_form->showIssues(issues);
         setTone(m_testResult, QStringLiteral("fault"));
         m_testResult->setText(tr("Not tested: correct the settings marked in red first."));
+        m_testResult->show();
         return;
     }
     if (m_testDevice) m_testDevice->close();
@@ -521,6 +537,7 @@ void DevicesPage::testConnection() {
     }
     setTone(m_testResult, QStringLiteral("warn"));
     m_testResult->setText(tr("Testing the connection…"));
+    m_testResult->show();
     m_test->setEnabled(false);
     m_testTarget->testConnection();
     m_testClock.start();
@@ -546,6 +563,7 @@ void DevicesPage::finishTest(bool ok, const QString& text) {
     m_test->setEnabled(true);
     setTone(m_testResult, ok ? QStringLiteral("ok") : QStringLiteral("fault"));
     m_testResult->setText(text);
+    m_testResult->show();
     if (m_testDevice) {
         m_testDevice->close();
         m_testDevice.reset();
@@ -587,7 +605,11 @@ void DevicesPage::refreshStatus() {
             break;
     }
     m_stateMessage->setText(QString::fromStdString(h.message));
-    m_live->setText(device->liveValue().isEmpty() ? QStringLiteral("—") : device->liveValue());
+    const QString value = device->liveValue();
+    setTone(m_live, h.state == DeviceState::Ready ? QStringLiteral("ok") : QStringLiteral("stale"));
+    m_live->setText(value.isEmpty()                 ? QStringLiteral("—")
+                    : h.state == DeviceState::Ready ? value
+                                                    : tr("%1 (last value)").arg(value));
     m_lastError->setText(device->lastError().isEmpty() ? tr("none") : device->lastError());
     QString table = QStringLiteral("<table cellspacing='0' cellpadding='3'>");
     for (const devices::DeviceStatistic& s : device->statistics())
