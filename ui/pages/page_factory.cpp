@@ -1,6 +1,7 @@
 #include "ui/pages/page_factory.h"
 
 #include "ui/pages/devices_page.h"
+#include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/settings_page.h"
@@ -12,6 +13,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
     switch (id) {
         case PageId::Run:
             return new RunPage(context, parent);
+        case PageId::Measurements:
+            return new MeasurementsPage(context, parent);
         case PageId::Settings:
             return new SettingsPage(context, parent);
         case PageId::Tools:

@@ -15,6 +15,7 @@
 #include "core/sim/run_to_run_analysis.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
+#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 
@@ -62,7 +63,7 @@ void LoopWorker::openHistory(const QString& path) {
     if (m_history && path == m_openDatabasePath) return;
     m_history.reset();
     m_database.reset();
-    m_database = std::make_unique<storage::Database>(storage::DatabaseConfig::sqlite(path));
+    m_database = openContextDatabase(path);
     m_history = std::make_unique<storage::SqlHistoryStore>(*m_database);
     m_openDatabasePath = path;
 }

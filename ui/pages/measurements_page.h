@@ -1,0 +1,61 @@
+#pragma once
+
+#include <memory>
+
+#include "ui/page.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QStackedWidget;
+class QTableView;
+
+namespace tt::storage {
+class Database;
+class SqlHistoryStore;
+}  // namespace tt::storage
+
+namespace tt::ui {
+
+class EmptyState;
+class MeasurementsModel;
+
+/// The recorded parts of a run and their measurements, read from the run history: a row per part and
+/// control point with the measured and nominal diameter, accepted or rejected with the reason, and the
+/// correction the part received. Refreshed whenever the page is shown.
+class MeasurementsPage : public Page {
+    Q_OBJECT
+public:
+    explicit MeasurementsPage(AppContext& context, QWidget* parent = nullptr);
+    ~MeasurementsPage() override;
+    QString title() const override;
+    void retranslate() override;
+
+    /// Reads the runs and the chosen run's parts again.
+    void refresh();
+    MeasurementsModel* model() const { return m_model; }
+    QComboBox* runs() const { return m_runs; }
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void loadRun();
+    bool openHistory();
+
+    std::unique_ptr<storage::Database> m_database;
+    std::unique_ptr<storage::SqlHistoryStore> m_history;
+    QString m_problem;
+    QLabel* m_runLabel;
+    QComboBox* m_runs;
+    QCheckBox* m_onlyProblems;
+    QPushButton* m_refresh;
+    QLabel* m_summary;
+    QStackedWidget* m_stack;
+    EmptyState* m_empty;
+    QTableView* m_table;
+    MeasurementsModel* m_model;
+};
+
+}  // namespace tt::ui
