@@ -37,6 +37,22 @@ TEST(ProbeFrame, LayoutIsSyncLengthSequenceTypePayloadCrc) {
     EXPECT_THROW(encodeFrame(0, 0x01, std::vector<std::uint8_t>(251)), std::invalid_argument);
 }
 
+TEST(ProbeFrame, TheExamplesOfTheProtocolDocument) {
+    // docs/protocols/probe-mandrel.md, "Frame": SET_RATE 200 Hz as host frame 7, and a sample as
+    // mandrel frame 42.
+    EXPECT_EQ(encodeFrame(7, MessageType::SetRate, encodeRate(200)),
+              (std::vector<std::uint8_t>{0xA5, 0x02, 0x07, 0x12, 0xC8, 0x00, 0x5C, 0xB6}));
+    SamplePayload s;
+    s.timeUs = 125000;
+    s.adcCode = {36728, 31769};
+    s.deflectionNm = {20000, -5000};
+    s.status = kStatusTableValid | kStatusStreaming;
+    EXPECT_EQ(encodeFrame(42, MessageType::Sample, encodeSample(s)),
+              (std::vector<std::uint8_t>{0xA5, 0x16, 0x2A, 0x01, 0x48, 0xE8, 0x01, 0x00, 0x78, 0x8F,
+                                         0x00, 0x00, 0x19, 0x7C, 0x00, 0x00, 0x20, 0x4E, 0x00, 0x00,
+                                         0x78, 0xEC, 0xFF, 0xFF, 0x11, 0x00, 0xAB, 0x0A}));
+}
+
 TEST(ProbeFrame, SampleRoundTripsThroughTheReader) {
     FrameReader reader;
     const auto frames = reader.feed(sampleFrame(0, 1234));

@@ -92,6 +92,7 @@ TEST_F(SerialProbeTest, HandshakeThenLinearisedSamplesAtTheSetRate) {
         EXPECT_NEAR(s.deflectionMm[0], 0.020, 1e-6);  // the emulator's default bending
         EXPECT_NEAR(s.deflectionMm[1], -0.005, 1e-6);
         EXPECT_EQ(s.adcCode[0], MandrelEmulator::adcCode(0.020));
+        EXPECT_EQ(s.adcCode[0], 36728);  // 32768 + 200000 * 0.02 - 5e6 * 0.02^3 (the emulator's bridge model)
     }
     const auto info = device->tableUploadTarget()->tableInfo();
     ASSERT_TRUE(info.has_value());
