@@ -1,6 +1,7 @@
 #include "ui/pages/page_factory.h"
 
 #include "ui/pages/devices_page.h"
+#include "ui/pages/calibration_page.h"
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/run_page.h"
@@ -19,6 +20,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new SettingsPage(context, parent);
         case PageId::Tools:
             return new ToolsPage(context, parent);
+        case PageId::Calibration:
+            return new CalibrationPage(context, parent);
         case PageId::Devices:
             return new DevicesPage(context, parent);
         default:

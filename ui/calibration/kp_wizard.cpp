@@ -1,0 +1,561 @@
+#include "ui/calibration/kp_wizard.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "core/model/tool_table.h"
+#include "core/storage/calibration_store.h"
+#include "core/storage/tool_store.h"
+#include "ui/app_state.h"
+#include "ui/calibration/chart_ranges.h"
+#include "ui/plot/chart.h"
+#include "ui/prompt.h"
+
+namespace tt::ui {
+
+KpDriveSource* KpWizardContext::drive() const {
+    if (drives.empty()) return nullptr;
+    return drives[static_cast<std::size_t>(std::clamp(session->driveIndex, 0, static_cast<int>(drives.size()) - 1))];
+}
+
+QString KpWizardContext::operatorName() const {
+    return app && app->state ? app->state->operatorName().trimmed() : QString();
+}
+
+namespace {
+
+QLabel* wrapped(QWidget* parent) {
+    auto* l = new QLabel(parent);
+    l->setWordWrap(true);
+    return l;
+}
+
+void colour(QLabel* label, bool problem) {
+    label->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
+}
+
+}  // namespace
+
+// --- 1. Setup -----------------------------------------------------------------------------------
+
+KpSetupPage::KpSetupPage(KpWizardContext& context, QWidget* parent)
+    : QWizardPage(parent),
+      m_ctx(context),
+      m_driveLabel(new QLabel(this)),
+      m_drive(new QComboBox(this)),
+      m_toolsLabel(new QLabel(this)),
+      m_tools(new QListWidget(this)),
+      m_instructions(wrapped(this)) {
+    m_drive->setObjectName(QStringLiteral("driveCombo"));
+    m_tools->setObjectName(QStringLiteral("kpTools"));
+    m_tools->setMinimumHeight(160);
+    m_tools->setStyleSheet(QStringLiteral("QListWidget::item { min-height: 40px; }"));
+    auto* form = new QFormLayout(this);
+    form->setVerticalSpacing(16);
+    form->addRow(m_driveLabel, m_drive);
+    form->addRow(m_toolsLabel, m_tools);
+    form->addRow(m_instructions);
+}
+
+void KpSetupPage::initializePage() {
+    const QSignalBlocker block(m_drive);
+    m_drive->clear();
+    for (KpDriveSource* d : m_ctx.drives)
+        m_drive->addItem(d->name());
+    m_drive->setCurrentIndex(std::clamp(m_ctx.session->driveIndex, 0, std::max(0, m_drive->count() - 1)));
+    m_tools->clear();
+    if (!m_ctx.tools) return;
+    for (const core::ToolRecord& t : m_ctx.tools->tools()) {
+        const QString id = QString::fromStdString(t.id);
+        auto* item = new QListWidgetItem(tr("%1 %2 — k_p now %3 N/A")
+                                             .arg(id, QString::fromStdString(t.name))
+                                             .arg(t.currentToForceGainNPerA, 0, 'f', 1),
+                                         m_tools);
+        item->setData(Qt::UserRole, id);
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+        item->setCheckState(m_ctx.session->toolIds.contains(id) ? Qt::Checked : Qt::Unchecked);
+    }
+}
+
+void KpSetupPage::setToolChecked(const QString& id, bool checked) {
+    for (int i = 0; i < m_tools->count(); ++i)
+        if (m_tools->item(i)->data(Qt::UserRole).toString() == id)
+            m_tools->item(i)->setCheckState(checked ? Qt::Checked : Qt::Unchecked);
+}
+
+bool KpSetupPage::validatePage() {
+    m_ctx.session->driveIndex = std::max(0, m_drive->currentIndex());
+    m_ctx.session->toolIds.clear();
+    for (int i = 0; i < m_tools->count(); ++i)
+        if (m_tools->item(i)->checkState() == Qt::Checked)
+            m_ctx.session->toolIds << m_tools->item(i)->data(Qt::UserRole).toString();
+    return true;
+}
+
+void KpSetupPage::retranslate() {
+    setTitle(tr("Drive and tools"));
+    setSubTitle(tr("k_p turns the cross-feed motor current into force: P = k_p (I_fwd − I_rev) / 2."));
+    m_driveLabel->setText(tr("Cross-feed drive"));
+    m_toolsLabel->setText(tr("Write the new k_p into"));
+    m_instructions->setText(
+        tr("Put a dynamometer or a hydraulic jack with a gauge between the tool block and the workpiece so it "
+           "pushes the tool towards the axis like the cutting force. Start the cross-feed dither (as for boring) and "
+           "keep it running; at each load the current is averaged at constant velocity in both directions."));
+}
+
+// --- 2. Loads -----------------------------------------------------------------------------------
+
+KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
+    : QWizardPage(parent),
+      m_ctx(context),
+      m_timer(new QTimer(this)),
+      m_loadLabel(new QLabel(this)),
+      m_load(new QDoubleSpinBox(this)),
+      m_measure(new QPushButton(this)),
+      m_typedLabel(new QLabel(this)),
+      m_typed(new QDoubleSpinBox(this)),
+      m_addTyped(new QPushButton(this)),
+      m_remove(new QPushButton(this)),
+      m_progress(new QProgressBar(this)),
+      m_table(new QTableWidget(0, 3, this)),
+      m_chart(new Chart(this)),
+      m_message(wrapped(this)) {
+    m_load->setObjectName(QStringLiteral("loadSpin"));
+    m_measure->setObjectName(QStringLiteral("measureLoad"));
+    m_measure->setProperty("role", QStringLiteral("primary"));
+    m_typed->setObjectName(QStringLiteral("typedCurrentSpin"));
+    m_addTyped->setObjectName(QStringLiteral("addTypedLoad"));
+    m_remove->setObjectName(QStringLiteral("removeLoad"));
+    m_table->setObjectName(QStringLiteral("kpPoints"));
+    m_message->setObjectName(QStringLiteral("kpMessage"));
+    m_load->setRange(-20000.0, 20000.0);
+    m_load->setDecimals(0);
+    m_load->setSingleStep(100.0);
+    m_load->setSuffix(QStringLiteral(" N"));
+    m_typed->setRange(-500.0, 500.0);
+    m_typed->setDecimals(3);
+    m_typed->setSuffix(QStringLiteral(" A"));
+    for (QDoubleSpinBox* s : {m_load, m_typed})
+        s->setMinimumWidth(170);
+    m_progress->setRange(0, 100);
+    m_table->verticalHeader()->setDefaultSectionSize(40);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->setVisible(false);
+    m_chart->setMinimumSize(440, 300);
+    auto* entry = new QGridLayout;
+    entry->addWidget(m_loadLabel, 0, 0);
+    entry->addWidget(m_load, 0, 1);
+    entry->addWidget(m_measure, 0, 2);
+    entry->addWidget(m_typedLabel, 1, 0);
+    entry->addWidget(m_typed, 1, 1);
+    entry->addWidget(m_addTyped, 1, 2);
+    auto* left = new QVBoxLayout;
+    left->addLayout(entry);
+    left->addWidget(m_progress);
+    left->addWidget(m_table, 1);
+    left->addWidget(m_remove);
+    auto* body = new QHBoxLayout;
+    body->addLayout(left, 2);
+    body->addWidget(m_chart, 3);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(body, 1);
+    layout->addWidget(m_message);
+    m_timer->setInterval(100);
+    connect(m_timer, &QTimer::timeout, this, [this] { step(0.1); });
+    connect(m_measure, &QPushButton::clicked, this, &KpLoadsPage::startMeasurement);
+    connect(m_addTyped, &QPushButton::clicked, this, &KpLoadsPage::addTypedPoint);
+    connect(m_remove, &QPushButton::clicked, this, &KpLoadsPage::removePoint);
+}
+
+void KpLoadsPage::initializePage() {
+    refresh();
+    retranslate();
+}
+
+void KpLoadsPage::cleanupPage() {
+    m_timer->stop();
+    m_measuring = false;
+}
+
+bool KpLoadsPage::isComplete() const {
+    return !m_measuring && m_ctx.session->points.size() >= 3;
+}
+
+void KpLoadsPage::setLoadN(double loadN) {
+    m_load->setValue(loadN);
+}
+
+void KpLoadsPage::setTypedCurrentDifference(double a) {
+    m_typed->setValue(a);
+}
+
+QString KpLoadsPage::message() const {
+    return m_message->text();
+}
+
+void KpLoadsPage::showMessage(const QString& text, bool problem) {
+    m_message->setText(text);
+    colour(m_message, problem);
+}
+
+bool KpLoadsPage::startMeasurement() {
+    KpDriveSource* d = m_ctx.drive();
+    if (!d || m_measuring) return false;
+    const core::DeviceHealth h = d->readout().health();
+    if (!h.ready()) {
+        showMessage(tr("The drive read-out is not ready: %1").arg(QString::fromStdString(h.message)), true);
+        return false;
+    }
+    if (d->canApplyLoad()) d->applyLoadN(m_load->value());
+    core::DitherEstimatorConfig unit;  // k_p = 1 and k = 1: the "force" is ΔI in A
+    unit.currentToForceNPerA = 1.0;
+    unit.stiffnessNPerMm = 1.0;
+    m_estimator.emplace(unit);
+    m_measuring = true;
+    m_elapsedS = 0.0;
+    m_sum = 0.0;
+    m_count = 0;
+    m_measure->setEnabled(false);
+    m_progress->setValue(0);
+    showMessage(tr("Measuring at %1 N: keep the load steady…").arg(m_load->value(), 0, 'f', 0), false);
+    m_timer->start();
+    emit completeChanged();
+    return true;
+}
+
+void KpLoadsPage::step(double seconds) {
+    KpDriveSource* d = m_ctx.drive();
+    if (!m_measuring || !d) return;
+    d->poll(seconds);
+    m_elapsedS += seconds;
+    while (const std::optional<core::DriveSample> s = d->readout().takeSample()) {
+        const core::DitherUpdate u = m_estimator->update(*s);
+        if (m_elapsedS > kSettleS && u.newEstimate) {  // the first second lets the load settle
+            m_sum += u.estimate->forceN;
+            ++m_count;
+        }
+    }
+    m_progress->setValue(static_cast<int>(std::lround(100.0 * std::min(1.0, m_elapsedS / (kSettleS + kWindowS)))));
+    if (m_elapsedS >= kSettleS + kWindowS - 1e-9) finishMeasurement();
+}
+
+bool KpLoadsPage::measureNow() {
+    if (!startMeasurement()) return false;
+    while (m_measuring)
+        step(0.1);
+    return m_count >= 3;
+}
+
+void KpLoadsPage::finishMeasurement() {
+    m_timer->stop();
+    m_measuring = false;
+    m_measure->setEnabled(true);
+    if (m_count < 3) {
+        showMessage(tr("No reliable current difference at %1 N: %2")
+                        .arg(m_load->value(), 0, 'f', 0)
+                        .arg(QString::fromStdString(m_estimator->state().reason)),
+                    true);
+    } else {
+        m_ctx.session->points.push_back({m_load->value(), m_sum / m_count, m_count});
+        m_ctx.session->fit.reset();
+        showMessage(tr("%1 N: ΔI = %2 A from %3 stroke pairs.")
+                        .arg(m_load->value(), 0, 'f', 0)
+                        .arg(m_sum / m_count, 0, 'f', 3)
+                        .arg(m_count),
+                    false);
+    }
+    refresh();
+}
+
+bool KpLoadsPage::addTypedPoint() {
+    m_ctx.session->points.push_back({m_load->value(), m_typed->value(), 0});
+    m_ctx.session->fit.reset();
+    refresh();
+    showMessage(tr("Typed point added."), false);
+    return true;
+}
+
+void KpLoadsPage::removePoint() {
+    auto& points = m_ctx.session->points;
+    if (points.empty()) return;
+    int row = m_table->currentRow();
+    if (row < 0 || row >= static_cast<int>(points.size())) row = static_cast<int>(points.size()) - 1;
+    points.erase(points.begin() + row);
+    m_ctx.session->fit.reset();
+    refresh();
+}
+
+void KpLoadsPage::refresh() {
+    const auto& points = m_ctx.session->points;
+    m_table->setRowCount(static_cast<int>(points.size()));
+    std::vector<double> xs, ys;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const int row = static_cast<int>(i);
+        m_table->setItem(row, 0, new QTableWidgetItem(QString::number(points[i].loadN, 'f', 0)));
+        m_table->setItem(row, 1, new QTableWidgetItem(QString::number(points[i].currentDifferenceA, 'f', 3)));
+        m_table->item(row, 0)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        m_table->item(row, 1)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        m_table->setItem(
+            row, 2,
+            new QTableWidgetItem(points[i].estimates > 0 ? tr("measured, %1 pairs").arg(points[i].estimates)
+                                                         : tr("typed")));
+        xs.push_back(points[i].loadN);
+        ys.push_back(points[i].currentDifferenceA);
+    }
+    m_chart->setSeries(QStringLiteral("points"), tr("known loads"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
+                       Chart::Style::Points);
+    showAllWithMargin(*m_chart, xs, ys, true, 0.3);
+    m_table->resizeColumnsToContents();
+    m_chart->refresh();
+    emit completeChanged();
+}
+
+void KpLoadsPage::retranslate() {
+    setTitle(tr("Known loads"));
+    KpDriveSource* d = m_ctx.drive();
+    setSubTitle(d && d->canApplyLoad()
+                    ? tr("Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.")
+                    : tr("Apply the load, enter what the gauge shows, measure. At least 3 loads, 0 included."));
+    m_loadLabel->setText(tr("Known load"));
+    m_measure->setText(tr("Measure"));
+    m_typedLabel->setText(tr("ΔI (typed)"));
+    m_addTyped->setText(tr("Add typed point"));
+    m_remove->setText(tr("Remove point"));
+    m_table->setHorizontalHeaderLabels({tr("Load, N"), tr("ΔI, A"), tr("Source")});
+    m_chart->setTitle(tr("Current difference against the load"));
+    m_chart->setAxisTitles(tr("Load, N"), tr("ΔI, A"));
+}
+
+// --- 3. Fit -------------------------------------------------------------------------------------
+
+KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
+    : QWizardPage(parent),
+      m_ctx(context),
+      m_explanation(wrapped(this)),
+      m_chart(new Chart(this)),
+      m_residuals(new Chart(this)) {
+    m_explanation->setObjectName(QStringLiteral("kpExplanation"));
+    m_explanation->setTextFormat(Qt::RichText);
+    m_chart->setMinimumSize(420, 300);
+    m_residuals->setMinimumSize(420, 300);
+    auto* charts = new QHBoxLayout;
+    charts->addWidget(m_chart);
+    charts->addWidget(m_residuals);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_explanation);
+    layout->addLayout(charts, 1);
+}
+
+void KpFitPage::initializePage() {
+    m_ctx.session->fit.reset();
+    std::vector<core::KpPoint> points;
+    for (const KpCapture& c : m_ctx.session->points)
+        points.push_back({c.loadN, c.currentDifferenceA});
+    m_chart->clear();
+    m_residuals->clear();
+    try {
+        m_ctx.session->fit = core::fitKp(points);
+    } catch (const std::invalid_argument& e) {
+        m_explanation->setText(QStringLiteral("<p style='color:#b71c1c'><b>%1</b></p>")
+                                   .arg(tr("Refused: %1").arg(QString::fromStdString(e.what()).toHtmlEscaped())));
+        emit completeChanged();
+        return;
+    }
+    const core::KpFit& f = *m_ctx.session->fit;
+    m_explanation->setText(tr("<p><b>k_p = %1 N/A</b> (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.</p>"
+                              "<p>The straight line P = k_p ΔI + offset is fitted by least squares; the offset "
+                              "should be small against the loads (it shows an asymmetry of the drive).</p>")
+                               .arg(f.kpNPerA, 0, 'f', 2)
+                               .arg(f.offsetN, 0, 'f', 1)
+                               .arg(f.r2, 0, 'f', 5)
+                               .arg(f.rmsResidualN, 0, 'f', 1)
+                               .arg(points.size()));
+    std::vector<double> xs, ys;
+    double lo = points.front().currentDifferenceA, hi = lo;
+    for (const core::KpPoint& p : points) {
+        xs.push_back(p.currentDifferenceA);
+        ys.push_back(p.loadN);
+        lo = std::min(lo, p.currentDifferenceA);
+        hi = std::max(hi, p.currentDifferenceA);
+    }
+    m_chart->setSeries(QStringLiteral("points"), tr("known loads"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
+                       Chart::Style::Points);
+    m_chart->setSeries(QStringLiteral("fit"), tr("k_p ΔI + offset"), {lo, hi},
+                       {f.kpNPerA * lo + f.offsetN, f.kpNPerA * hi + f.offsetN}, QColor(0xc6, 0x28, 0x28));
+    showAllWithMargin(*m_chart, xs, ys, true, 0.3);
+    m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), ys, f.residualsN, QColor(0x2e, 0x7d, 0x32),
+                           Chart::Style::Points);
+    showAllWithMargin(*m_residuals, ys, f.residualsN, true);
+    m_chart->refresh();
+    m_residuals->refresh();
+    emit completeChanged();
+}
+
+bool KpFitPage::isComplete() const {
+    return m_ctx.session->fit.has_value();
+}
+
+QString KpFitPage::explanation() const {
+    return m_explanation->text();
+}
+
+void KpFitPage::retranslate() {
+    setTitle(tr("Fit k_p"));
+    setSubTitle(tr("Force against the current difference."));
+    m_chart->setTitle(tr("Load against ΔI"));
+    m_chart->setAxisTitles(tr("ΔI, A"), tr("Load, N"));
+    m_residuals->setTitle(tr("Residuals"));
+    m_residuals->setAxisTitles(tr("Load, N"), tr("Load − fit, N"));
+}
+
+// --- 4. Save ------------------------------------------------------------------------------------
+
+KpSavePage::KpSavePage(KpWizardContext& context, QWidget* parent)
+    : QWizardPage(parent),
+      m_ctx(context),
+      m_summary(wrapped(this)),
+      m_save(new QPushButton(this)),
+      m_result(wrapped(this)) {
+    m_save->setObjectName(QStringLiteral("saveKp"));
+    m_save->setProperty("role", QStringLiteral("primary"));
+    m_result->setObjectName(QStringLiteral("kpSaveResult"));
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_summary);
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_save);
+    row->addStretch(1);
+    layout->addLayout(row);
+    layout->addWidget(m_result);
+    layout->addStretch(1);
+    connect(m_save, &QPushButton::clicked, this, &KpSavePage::save);
+}
+
+void KpSavePage::initializePage() {
+    m_save->setEnabled(!m_ctx.session->saved);
+    retranslate();
+}
+
+bool KpSavePage::isComplete() const {
+    return m_ctx.session->saved;
+}
+
+bool KpSavePage::save() {
+    if (m_ctx.session->saved || !m_ctx.session->fit) return m_ctx.session->saved;
+    const QString who = m_ctx.operatorName();
+    if (who.isEmpty()) {
+        if (m_ctx.app && m_ctx.app->prompt)
+            m_ctx.app->prompt->warn(this, tr("Save k_p"), tr("Enter your name on the Settings page first."));
+        m_result->setText(tr("Not saved: no operator name (Settings)."));
+        colour(m_result, true);
+        return false;
+    }
+    if (!m_ctx.calibrations || !m_ctx.tools) {
+        m_result->setText(tr("The calibration database is not open."));
+        colour(m_result, true);
+        return false;
+    }
+    const core::KpFit& f = *m_ctx.session->fit;
+    try {
+        std::vector<storage::ToolEdit> edits;
+        for (core::ToolRecord t : m_ctx.tools->tools()) {
+            if (!m_ctx.session->toolIds.contains(QString::fromStdString(t.id))) continue;
+            const std::string id = t.id;
+            t.currentToForceGainNPerA = f.kpNPerA;
+            edits.push_back({id, t});
+        }
+        if (!edits.empty()) m_ctx.tools->apply(edits, who);
+        storage::KpCalibrationRecord r;
+        r.createdBy = who;
+        KpDriveSource* d = m_ctx.drive();
+        r.drive = d ? d->name() : QString();
+        r.kpNPerA = f.kpNPerA;
+        r.offsetN = f.offsetN;
+        r.r2 = f.r2;
+        QString csv = QStringLiteral("load_n,current_difference_a\n");
+        for (const KpCapture& c : m_ctx.session->points)
+            csv += QStringLiteral("%1,%2\n").arg(c.loadN, 0, 'g', 10).arg(c.currentDifferenceA, 0, 'g', 10);
+        r.pointsCsv = csv;
+        r.appliedTo = m_ctx.session->toolIds.join(QLatin1Char(','));
+        m_ctx.calibrations->saveKp(r);
+    } catch (const std::exception& e) {
+        m_result->setText(tr("Not saved: %1").arg(QString::fromStdString(e.what())));
+        colour(m_result, true);
+        return false;
+    }
+    m_ctx.session->saved = true;
+    m_save->setEnabled(false);
+    m_result->setText(m_ctx.session->toolIds.isEmpty()
+                          ? tr("Saved. No tool was chosen, so the tool table is unchanged.")
+                          : tr("Saved; k_p %1 N/A written into %2 (recorded in the tool audit).")
+                                .arg(f.kpNPerA, 0, 'f', 2)
+                                .arg(m_ctx.session->toolIds.join(QStringLiteral(", "))));
+    colour(m_result, false);
+    emit completeChanged();
+    return true;
+}
+
+void KpSavePage::retranslate() {
+    setTitle(tr("Save k_p"));
+    setSubTitle(tr("The calibration is kept with your name; the chosen tools get the new k_p."));
+    m_save->setText(tr("Save and write into the tools"));
+    if (m_ctx.session->fit)
+        m_summary->setText(tr("k_p = %1 N/A, to be written into: %2.")
+                               .arg(m_ctx.session->fit->kpNPerA, 0, 'f', 2)
+                               .arg(m_ctx.session->toolIds.isEmpty()
+                                        ? tr("no tool (only the calibration is kept)")
+                                        : m_ctx.session->toolIds.join(QStringLiteral(", "))));
+}
+
+// --- The wizard ---------------------------------------------------------------------------------
+
+KpCalibrationWizard::KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<KpDriveSource*> drives,
+                                         storage::CalibrationStore* calibrations, storage::ToolStore* tools,
+                                         QWidget* parent)
+    : QWizard(parent), m_ctx{&app, &session, std::move(drives), calibrations, tools} {
+    setObjectName(QStringLiteral("kpWizard"));
+    setWizardStyle(QWizard::ClassicStyle);
+    setOption(QWizard::NoBackButtonOnStartPage, true);
+    m_setup = new KpSetupPage(m_ctx, this);
+    m_loads = new KpLoadsPage(m_ctx, this);
+    m_fit = new KpFitPage(m_ctx, this);
+    m_save = new KpSavePage(m_ctx, this);
+    setPage(SetupPage, m_setup);
+    setPage(LoadsPage, m_loads);
+    setPage(FitPage, m_fit);
+    setPage(SavePage, m_save);
+    retranslate();
+}
+
+void KpCalibrationWizard::retranslate() {
+    setWindowTitle(tr("k_p from known loads"));
+    setButtonText(QWizard::BackButton, tr("< Back"));
+    setButtonText(QWizard::NextButton, tr("Next >"));
+    setButtonText(QWizard::FinishButton, tr("Finish"));
+    setButtonText(QWizard::CancelButton, tr("Cancel"));
+    m_setup->retranslate();
+    m_loads->retranslate();
+    m_fit->retranslate();
+    m_save->retranslate();
+}
+
+void KpCalibrationWizard::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWizard::changeEvent(event);
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <QWizardPage>
+#include <optional>
+
+#include "core/calibration/probe_linearisation.h"
+
+class QComboBox;
+class QLabel;
+
+namespace tt::ui {
+
+class Chart;
+struct ProbeWizardContext;
+
+/// 4. Fit: the characteristic with degree 2, 3, 4 or chosen by cross-validation, the reason for
+/// the degree in words with each degree's leave-one-out error, the points with the fitted curve,
+/// and the residuals. A non-monotonic fit is refused here, saying where it turns.
+class ProbeFitPage : public QWizardPage {
+    Q_OBJECT
+public:
+    ProbeFitPage(ProbeWizardContext& context, QWidget* parent = nullptr);
+    void initializePage() override;
+    bool isComplete() const override;
+    void retranslate();
+
+    /// 0 = auto, else 2..4; refits.
+    void setDegree(int degree);
+    /// The explanation shown (degree choice and problems).
+    QString explanation() const;
+
+private:
+    void refit();
+
+    ProbeWizardContext& m_ctx;
+    QLabel* m_degreeLabel;
+    QComboBox* m_degree;
+    QLabel* m_explanation;
+    Chart* m_characteristic;
+    Chart* m_residuals;
+    std::optional<core::CharacteristicFit> m_fit;
+    QString m_problem;
+};
+
+}  // namespace tt::ui

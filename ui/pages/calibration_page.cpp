@@ -1,0 +1,281 @@
+#include "ui/pages/calibration_page.h"
+
+#include <QDateTime>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include "core/storage/calibration_store.h"
+#include "core/storage/tool_store.h"
+#include "ui/calibration/kp_drive_source.h"
+#include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/simulated_calibration_probe.h"
+#include "ui/pages/planned_page.h"
+#include "ui/prompt.h"
+#include "ui/tools/database_connection.h"
+
+namespace tt::ui {
+
+namespace {
+
+QTableWidget* listView(QWidget* parent, const char* name, int columns) {
+    auto* t = new QTableWidget(0, columns, parent);
+    t->setObjectName(QLatin1String(name));
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setSelectionBehavior(QAbstractItemView::SelectRows);
+    t->verticalHeader()->setVisible(false);
+    t->verticalHeader()->setDefaultSectionSize(40);
+    t->horizontalHeader()->setStretchLastSection(true);
+    return t;
+}
+
+QString localTime(const QString& iso) {
+    const QDateTime t = QDateTime::fromString(iso, Qt::ISODateWithMs);
+    return t.isValid() ? t.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")) : iso;
+}
+
+QString hex16(int v) {
+    return QStringLiteral("0x") + QString::number(v, 16).rightJustified(4, QLatin1Char('0')).toUpper();
+}
+
+}  // namespace
+
+CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
+    : Page(PageId::Calibration, context, parent),
+      m_simProbe(std::make_unique<SimulatedCalibrationProbe>(tr("Simulated probe mandrel"))),
+      m_simDrive(std::make_unique<SimulatedKpDrive>(tr("Simulated cross feed"))),
+      m_stack(new QStackedWidget(this)),
+      m_overview(new QWidget(this)),
+      m_probeTitle(new QLabel(m_overview)),
+      m_probeText(new QLabel(m_overview)),
+      m_probeStart(new QPushButton(m_overview)),
+      m_probeStartOver(new QPushButton(m_overview)),
+      m_tables(listView(m_overview, "probeTables", 8)),
+      m_kpTitle(new QLabel(m_overview)),
+      m_kpText(new QLabel(m_overview)),
+      m_kpStart(new QPushButton(m_overview)),
+      m_kpList(listView(m_overview, "kpCalibrations", 6)),
+      m_storeProblem(new QLabel(m_overview)) {
+    m_probeTitle->setObjectName(QStringLiteral("SectionTitle"));
+    m_kpTitle->setObjectName(QStringLiteral("SectionTitle"));
+    m_probeStart->setObjectName(QStringLiteral("startProbeWizard"));
+    m_probeStart->setProperty("role", QStringLiteral("primary"));
+    m_probeStartOver->setObjectName(QStringLiteral("probeStartOver"));
+    m_kpStart->setObjectName(QStringLiteral("startKpWizard"));
+    m_kpStart->setProperty("role", QStringLiteral("primary"));
+    m_storeProblem->setObjectName(QStringLiteral("calibrationStoreProblem"));
+    m_storeProblem->setStyleSheet(QStringLiteral("color: #b71c1c; font-weight: bold;"));
+    m_storeProblem->setWordWrap(true);
+    for (QLabel* l : {m_probeText, m_kpText})
+        l->setWordWrap(true);
+
+    auto* probeButtons = new QHBoxLayout;
+    probeButtons->addWidget(m_probeStart);
+    probeButtons->addWidget(m_probeStartOver);
+    probeButtons->addStretch(1);
+    auto* kpButtons = new QHBoxLayout;
+    kpButtons->addWidget(m_kpStart);
+    kpButtons->addStretch(1);
+    auto* layout = new QVBoxLayout(m_overview);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_storeProblem);
+    layout->addWidget(m_probeTitle);
+    layout->addWidget(m_probeText);
+    layout->addLayout(probeButtons);
+    layout->addWidget(m_tables, 3);
+    layout->addSpacing(12);
+    layout->addWidget(m_kpTitle);
+    layout->addWidget(m_kpText);
+    layout->addLayout(kpButtons);
+    layout->addWidget(m_kpList, 2);
+
+    m_stack->addWidget(m_overview);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(24, 16, 24, 16);
+    outer->addWidget(m_stack);
+
+    connect(m_probeStart, &QPushButton::clicked, this, &CalibrationPage::startProbeCalibration);
+    connect(m_probeStartOver, &QPushButton::clicked, this, &CalibrationPage::startOver);
+    connect(m_kpStart, &QPushButton::clicked, this, &CalibrationPage::startKpCalibration);
+    openStores();
+    retranslate();
+}
+
+CalibrationPage::~CalibrationPage() {
+    // The wizards refer to the stores and the probes: destroy them first.
+    delete m_probeWizard;
+    delete m_kpWizard;
+}
+
+QString CalibrationPage::title() const {
+    return pageTitle(PageId::Calibration);
+}
+
+CalibrationProbe* CalibrationPage::simulatedProbe() const {
+    return m_simProbe.get();
+}
+
+void CalibrationPage::openStores() {
+    try {
+        m_db = openContextDatabase(context().databasePath);
+        m_calibrations = std::make_unique<storage::CalibrationStore>(*m_db);
+        m_tools = std::make_unique<storage::ToolStore>(*m_db);
+    } catch (const std::exception& e) {
+        m_calibrations.reset();
+        m_tools.reset();
+        m_db.reset();
+        m_storeError = QString::fromStdString(e.what());
+    }
+}
+
+std::vector<CalibrationProbe*> CalibrationPage::probes() const {
+    std::vector<CalibrationProbe*> out{m_simProbe.get()};
+    out.insert(out.end(), m_extraProbes.begin(), m_extraProbes.end());
+    return out;
+}
+
+std::vector<KpDriveSource*> CalibrationPage::drives() const {
+    std::vector<KpDriveSource*> out{m_simDrive.get()};
+    out.insert(out.end(), m_extraDrives.begin(), m_extraDrives.end());
+    return out;
+}
+
+void CalibrationPage::setProbes(std::vector<CalibrationProbe*> probes) {
+    m_extraProbes = std::move(probes);
+    delete m_probeWizard;  // rebuilt with the new list on the next start
+    m_probeWizard = nullptr;
+}
+
+void CalibrationPage::setDrives(std::vector<KpDriveSource*> drives) {
+    m_extraDrives = std::move(drives);
+    delete m_kpWizard;
+    m_kpWizard = nullptr;
+}
+
+bool CalibrationPage::overviewShown() const {
+    return m_stack->currentWidget() == m_overview;
+}
+
+void CalibrationPage::showOverview() {
+    m_stack->setCurrentWidget(m_overview);
+    refreshLists();
+    retranslate();
+}
+
+void CalibrationPage::startProbeCalibration() {
+    if (!m_probeWizard) {
+        m_probeWizard = new ProbeCalibrationWizard(context(), m_probeSession, probes(), m_calibrations.get(), this);
+        m_probeWizard->setWindowFlags(Qt::Widget);  // a page of the main window, not a dialog
+        m_stack->addWidget(m_probeWizard);
+        connect(m_probeWizard, &QWizard::accepted, this, [this] {
+            m_probeSession.clear();  // saved and done
+            showOverview();
+        });
+        connect(m_probeWizard, &QWizard::rejected, this, [this] { showOverview(); });  // points kept
+    }
+    m_probeWizard->restart();
+    m_stack->setCurrentWidget(m_probeWizard);
+    m_probeWizard->show();
+}
+
+void CalibrationPage::startKpCalibration() {
+    if (!m_kpWizard) {
+        m_kpWizard =
+            new KpCalibrationWizard(context(), m_kpSession, drives(), m_calibrations.get(), m_tools.get(), this);
+        m_kpWizard->setWindowFlags(Qt::Widget);
+        m_stack->addWidget(m_kpWizard);
+        connect(m_kpWizard, &QWizard::accepted, this, [this] {
+            m_kpSession.clear();
+            showOverview();
+        });
+        connect(m_kpWizard, &QWizard::rejected, this, [this] { showOverview(); });
+    }
+    m_kpWizard->restart();
+    m_stack->setCurrentWidget(m_kpWizard);
+    m_kpWizard->show();
+}
+
+void CalibrationPage::startOver() {
+    if (m_probeSession.points.empty()) return;
+    if (context().prompt &&
+        context().prompt->ask(
+            this, tr("Start over"),
+            tr("Forget the %1 captured points of the unfinished calibration?").arg(m_probeSession.points.size())) !=
+            Prompt::Answer::Yes)
+        return;
+    m_probeSession.clear();
+    retranslate();
+}
+
+void CalibrationPage::refreshLists() {
+    m_tables->setRowCount(0);
+    m_kpList->setRowCount(0);
+    if (!m_calibrations) return;
+    const std::vector<storage::ProbeTableRecord> tables = m_calibrations->tables();
+    m_tables->setRowCount(static_cast<int>(tables.size()));
+    for (std::size_t i = 0; i < tables.size(); ++i) {
+        const storage::ProbeTableRecord& t = tables[i];
+        const QString upload = !t.readbackCrc ? tr("not uploaded")
+                               : t.verified   ? tr("verified, CRC %1").arg(hex16(*t.readbackCrc))
+                                              : tr("read-back CRC %1 does not match").arg(hex16(*t.readbackCrc));
+        const QStringList cells = {t.probe,
+                                   t.plane == 0 ? QStringLiteral("X") : QStringLiteral("Y"),
+                                   QString::number(t.version),
+                                   localTime(t.createdAt),
+                                   t.createdBy,
+                                   QString::number(t.degree),
+                                   QString::number(t.maxTableErrorUm, 'f', 2),
+                                   upload};
+        for (int c = 0; c < cells.size(); ++c)
+            m_tables->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
+    }
+    const std::vector<storage::KpCalibrationRecord> kps = m_calibrations->kpCalibrations();
+    m_kpList->setRowCount(static_cast<int>(kps.size()));
+    for (std::size_t i = 0; i < kps.size(); ++i) {
+        const storage::KpCalibrationRecord& k = kps[i];
+        const QStringList cells = {localTime(k.createdAt),
+                                   k.createdBy,
+                                   k.drive,
+                                   QString::number(k.kpNPerA, 'f', 2),
+                                   QString::number(k.r2, 'f', 5),
+                                   k.appliedTo.isEmpty() ? QStringLiteral("—") : k.appliedTo};
+        for (int c = 0; c < cells.size(); ++c)
+            m_kpList->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
+    }
+    m_tables->resizeColumnsToContents();
+    m_kpList->resizeColumnsToContents();
+}
+
+void CalibrationPage::retranslate() {
+    m_probeTitle->setText(tr("Probe mandrel linearisation"));
+    m_probeText->setText(
+        tr("Builds the table ADC code → deflection that the mandrel's microcontroller uses: "
+           "capture points against a dial indicator, fit the sensor's characteristic, save a new "
+           "table version and upload it with read-back of its CRC."));
+    const std::size_t kept = m_probeSession.points.size();
+    m_probeStart->setText(kept > 0 ? tr("Continue the calibration (%1 points kept)…").arg(kept)
+                                   : tr("Linearise a probe mandrel…"));
+    m_probeStartOver->setText(tr("Start over"));
+    m_probeStartOver->setVisible(kept > 0);
+    m_tables->setHorizontalHeaderLabels({tr("Probe"), tr("Plane"), tr("Version"), tr("Saved"), tr("By"), tr("Degree"),
+                                         tr("Table error, µm"), tr("In the mandrel")});
+    m_kpTitle->setText(tr("Current-to-force gain k_p"));
+    m_kpText->setText(
+        tr("Known loads on the cross slide against the motor current difference with dither; the "
+           "result is written into the tool table."));
+    m_kpStart->setText(tr("Calibrate k_p from known loads…"));
+    m_kpList->setHorizontalHeaderLabels({tr("When"), tr("By"), tr("Drive"), tr("k_p, N/A"), tr("R²"), tr("Tools")});
+    m_storeProblem->setVisible(!m_storeError.isEmpty());
+    m_storeProblem->setText(tr("The calibration database cannot be opened: %1. Tables can still be built and "
+                               "exported, not saved.")
+                                .arg(m_storeError));
+    if (m_probeWizard) m_probeWizard->retranslate();
+    if (m_kpWizard) m_kpWizard->retranslate();
+    refreshLists();
+}
+
+}  // namespace tt::ui
