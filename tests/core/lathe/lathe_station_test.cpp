@@ -15,7 +15,9 @@ namespace tt::core {
 namespace {
 
 struct Bench {
-    Bench() : sim(setup(), {0.0, 162.5, 325.0}, LatheDisturbanceModel::none(3)), station(sim, LatheMicrometer{}, 7, clock, {0.0, 162.5, 325.0}) {}
+    Bench()
+        : sim(setup(), {0.0, 162.5, 325.0}, LatheDisturbanceModel::none(3)),
+          station(sim, LatheMicrometer{}, 7, clock, {0.0, 162.5, 325.0}) {}
     static LatheSetup setup() {
         LatheSetup s;
         s.beamElementMm = 5.0;
@@ -96,7 +98,8 @@ TEST(LatheStatisticalProcess, IsTheDesignModelGainTimesCorrectionPlusDisturbance
     const std::vector<DisturbanceModel> points(2, DisturbanceModel({DisturbanceComponent::ar1(0.9, 0.0013)}));
     Eigen::VectorXd gains(2);
     gains << 2.0, 1.5;
-    LatheStatisticalProcess process({0.0, 325.0}, gains, LatheDisturbanceModel::fromPointModels(points), 27.0, 325.0, 4);
+    LatheStatisticalProcess process({0.0, 325.0}, gains, LatheDisturbanceModel::fromPointModels(points), 27.0, 325.0,
+                                    4);
     LatheDisturbance reference(LatheDisturbanceModel::fromPointModels(points), 4);
     const Eigen::VectorXd f = reference.diameterMm(12);
     const TurnedPart part = process.machine(PartCorrection{12, {0.0, 325.0}, {-0.01, 0.02}, {}});
