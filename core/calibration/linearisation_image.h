@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/calibration/probe_linearisation.h"
+#include "core/calibration/linearisation_table.h"
 
 namespace tt::core {
 

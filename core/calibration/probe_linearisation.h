@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "core/calibration/linearisation_table.h"
 #include "core/model/scaled_polynomial.h"
 
 namespace tt::core {
@@ -20,9 +21,6 @@ struct CalibrationPoint {
     int line = 0;              ///< source line in a file, 0 when typed or captured
 };
 
-/// The supported ADC resolutions of the mandrel's microcontroller, bits.
-inline constexpr int kMinAdcBits = 10;
-inline constexpr int kMaxAdcBits = 16;
 /// Degree 0 asks for the automatic choice by cross-validation.
 inline constexpr int kAutoDegree = 0;
 
@@ -89,20 +87,6 @@ struct CharacteristicFit {
 /// outside 0 .. 2^bits − 1, too few points or distinct references); a non-monotonic fit is
 /// returned with monotonicity.monotonic == false (buildTable refuses it).
 CharacteristicFit fitCharacteristic(const std::vector<CalibrationPoint>& points, int adcBits, int degree);
-
-/// The table ADC code → deflection that the mandrel's microcontroller reads (paper 001, fig. 5):
-/// 2^bits signed 16-bit entries of `scaleNm` nanometres each.
-struct LinearisationTable {
-    int adcBits = 0;
-    std::uint16_t scaleNm = 0;          ///< nanometres per table unit
-    std::vector<std::int16_t> entries;  ///< one per ADC code 0 .. 2^bits − 1
-
-    /// Deflection at a code, µm; throws std::out_of_range outside the table.
-    double deflectionUm(int code) const;
-    /// Deflection at a (possibly fractional, possibly out-of-range) code: clamped and linearly
-    /// interpolated, µm. What the host does with an averaged code.
-    double interpolatedUm(double code) const;
-};
 
 /// A complete linearisation: the fit, the table and its error figures.
 struct Linearisation {
