@@ -30,9 +30,12 @@ ProfilePanel::ProfilePanel(QWidget* parent) : QWidget(parent), m_profile(new Cha
     m_history->setObjectName(QStringLiteral("historyChart"));
     m_profile->setMinimumHeight(250);
     m_history->setMinimumHeight(200);
-    m_profile->setLegendBelow(3);
-    m_history->setLegendBelow(3);
     m_history->setYTickCount(3);
+    // Before the first run: the axes of a 325 mm shaft and of the strip, not arbitrary ones.
+    m_profile->setXRange(0.0, 325.0);
+    m_profile->setYRange(-0.05, 0.25);
+    m_history->setXRange(1.0, kHistoryParts);
+    m_history->setYRange(-0.05, 0.05);
     // The history strip is placed by the page (it may sit elsewhere than the profile).
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -59,6 +62,10 @@ void ProfilePanel::setRun(const RunLayout& layout) {
     m_lastStarted = 0;
     m_profile->clear();
     m_history->clear();
+    // The legends go under the plots once there is something to name (an empty legend there upsets the
+    // plot's layout).
+    m_profile->setLegendBelow(3);
+    m_history->setLegendBelow(3);
     drawFixed();
     m_profile->setXRange(0.0, layout.partLengthMm);
     m_profile->rescale(true);
