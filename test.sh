@@ -24,6 +24,6 @@ ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600
 # build without Qt; only the fuzz targets are built.
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRUETURN_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++
 cmake --build build-fuzz --target fuzz_targets -j "$(nproc)"
-ctest --test-dir build-fuzz --output-on-failure --timeout 120
+ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)" --timeout 120
 
 echo "test.sh: all tests passed in $(( $(date +%s) - started )) s"
