@@ -88,6 +88,8 @@ public:
 /// One device instance created by a plugin's factory: open/close, state, live value, and the
 /// engine port it implements. All I/O is asynchronous in the thread's event loop; nothing here
 /// blocks. Created with validated settings; changing settings means creating a new instance.
+/// Not thread-safe: use an instance (and its ports) only from the thread that created it, whose
+/// event loop runs its serial port, Modbus client and timers.
 class Device {
 public:
     virtual ~Device() = default;

@@ -10,7 +10,7 @@ namespace tt::devices {
 class SimulatorPlugin final : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("simulator"); }
-    QString displayName() const override { return QStringLiteral("Built-in simulator"); }
+    QString displayName() const override { return QStringLiteral("Simulator"); }
     QList<DeviceKind> kinds() const override { return allDeviceKinds(); }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;
