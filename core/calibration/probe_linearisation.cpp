@@ -140,11 +140,14 @@ DegreeScore score(const Data& d, int degree) {
     return s;
 }
 
-// One-standard-error rule on the mean squared LOO error.
-std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores) {
+// One-standard-error rule on the mean squared LOO error; a difference smaller than the ADC's own
+// resolution (half a code, `halfCodeUm` in µm) is no evidence for a higher degree either.
+std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores, double halfCodeUm) {
     const auto best = std::min_element(
         scores.begin(), scores.end(), [](const DegreeScore& a, const DegreeScore& b) { return a.cvRmsUm < b.cvRmsUm; });
-    const double limit = best->cvRmsUm * best->cvRmsUm + best->cvStandardErrorUm * best->cvStandardErrorUm;
+    const double se2 = best->cvStandardErrorUm * best->cvStandardErrorUm;
+    const double quantum2 = halfCodeUm * halfCodeUm;
+    const double limit = best->cvRmsUm * best->cvRmsUm + std::max(se2, quantum2);
     for (const DegreeScore& s : scores) {
         if (s.cvRmsUm * s.cvRmsUm > limit) continue;
         std::string reason =
@@ -152,8 +155,9 @@ std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores)
         if (s.degree == best->degree)
             reason += ", the lowest of the degrees tried";
         else
-            reason += " is within one standard error of the lowest (" + fmt(best->cvRmsUm, 2) + " µm at degree " +
-                      std::to_string(best->degree) + "), so the simpler curve is kept";
+            reason += std::string(" is within ") + (se2 >= quantum2 ? "one standard error" : "half an ADC code") +
+                      " of the lowest (" + fmt(best->cvRmsUm, 2) + " µm at degree " + std::to_string(best->degree) +
+                      "), so the simpler curve is kept";
         return {s.degree, reason};
     }
     return {best->degree, "degree " + std::to_string(best->degree) + " has the lowest leave-one-out error"};
@@ -259,7 +263,10 @@ CharacteristicFit fitCharacteristic(const std::vector<CalibrationPoint>& points,
     if (degree == kAutoDegree) {
         for (int d = kMinDegree; d <= kMaxDegree; ++d)
             if (supports(points, d)) fit.scores.push_back(score(data, d));
-        const auto [chosen, reason] = chooseDegree(fit.scores);
+        // Codes per µm over the calibrated range, from the points themselves.
+        const double slope = std::abs(data.code.maxCoeff() - data.code.minCoeff()) /
+                             std::max(fit.calibratedMaxUm - fit.calibratedMinUm, 1e-9);
+        const auto [chosen, reason] = chooseDegree(fit.scores, 0.5 / std::max(slope, 1e-12));
         fit.degree = chosen;
         fit.chosenAutomatically = true;
         fit.choiceReason = reason;

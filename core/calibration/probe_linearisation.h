@@ -82,7 +82,8 @@ struct CharacteristicFit {
 /// Checks the points and fits the characteristic of the given degree (2, 3, 4) or, with
 /// kAutoDegree, the degree with the best leave-one-out cross-validation under the one-standard-
 /// error rule (Hastie, Tibshirani, Friedman, "The Elements of Statistical Learning", §7.10):
-/// the lowest degree whose LOO error is within one standard error of the best. Checks the
+/// the lowest degree whose LOO error is within one standard error of the best — or within half an
+/// ADC code, below which the ADC cannot tell the curves apart. Checks the
 /// monotonicity over the ADC range. Throws LinearisationRefused for bad points (NaN, code
 /// outside 0 .. 2^bits − 1, too few points or distinct references); a non-monotonic fit is
 /// returned with monotonicity.monotonic == false (buildTable refuses it).

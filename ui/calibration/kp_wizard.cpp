@@ -62,7 +62,7 @@ KpSetupPage::KpSetupPage(KpWizardContext& context, QWidget* parent)
     m_drive->setObjectName(QStringLiteral("driveCombo"));
     m_tools->setObjectName(QStringLiteral("kpTools"));
     m_tools->setMinimumHeight(160);
-    m_tools->setStyleSheet(QStringLiteral("QListWidget::item { min-height: 40px; }"));
+    m_tools->setStyleSheet(QStringLiteral("QListWidget::indicator { width: 28px; height: 28px; }"));
     auto* form = new QFormLayout(this);
     form->setVerticalSpacing(16);
     form->addRow(m_driveLabel, m_drive);
@@ -85,6 +85,7 @@ void KpSetupPage::initializePage() {
                                              .arg(t.currentToForceGainNPerA, 0, 'f', 1),
                                          m_tools);
         item->setData(Qt::UserRole, id);
+        item->setSizeHint(QSize(0, 48));  // a row a gloved finger can hit
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(m_ctx.session->toolIds.contains(id) ? Qt::Checked : Qt::Unchecked);
     }

@@ -182,6 +182,8 @@ void ProbeReferencePage::retranslate() {
 ProbeAcceptPage::ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent)
     : QWizardPage(parent), m_ctx(context), m_summary(wrapped(this)), m_accept(new QCheckBox(this)) {
     m_accept->setObjectName(QStringLiteral("acceptCheck"));
+    m_accept->setStyleSheet(
+        QStringLiteral("QCheckBox { font-weight: bold; } QCheckBox::indicator { width: 28px; height: 28px; }"));
     m_summary->setObjectName(QStringLiteral("acceptSummary"));
     m_summary->setTextFormat(Qt::RichText);
     auto* layout = new QVBoxLayout(this);

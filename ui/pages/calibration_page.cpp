@@ -29,6 +29,7 @@ QTableWidget* listView(QWidget* parent, const char* name, int columns) {
     t->setSelectionBehavior(QAbstractItemView::SelectRows);
     t->verticalHeader()->setVisible(false);
     t->verticalHeader()->setDefaultSectionSize(40);
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     t->horizontalHeader()->setStretchLastSection(true);
     return t;
 }
@@ -246,8 +247,6 @@ void CalibrationPage::refreshLists() {
         for (int c = 0; c < cells.size(); ++c)
             m_kpList->setItem(static_cast<int>(i), c, new QTableWidgetItem(cells[c]));
     }
-    m_tables->resizeColumnsToContents();
-    m_kpList->resizeColumnsToContents();
 }
 
 void CalibrationPage::retranslate() {

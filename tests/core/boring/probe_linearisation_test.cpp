@@ -84,6 +84,17 @@ TEST(ProbeLinearisation, AutoPicksDegreeThreeForACubicOverManyNoiseDraws) {
     }
 }
 
+TEST(ProbeLinearisation, AutoIgnoresDifferencesBelowHalfAnAdcCode) {
+    // Almost noiseless codes (0.05 code RMS): leave-one-out errors of degrees 3 and 4 differ by
+    // hundredths of a code, which the ADC cannot resolve; the cubic is kept every time.
+    const Cubic truth;
+    for (unsigned seed = 1; seed <= 10; ++seed) {
+        const auto points = sample([&](double um) { return truth.code(um); }, -500.0, 500.0, 21, 0.05, seed);
+        const CharacteristicFit fit = fitCharacteristic(points, 12, kAutoDegree);
+        EXPECT_EQ(fit.degree, 3) << "seed " << seed << ": " << fit.choiceReason;
+    }
+}
+
 TEST(ProbeLinearisation, AutoKeepsDegreeTwoForAQuadratic) {
     // code = 2047.5 + 3 δ + 1e-3 δ²: increasing for δ > −1500 µm.
     const auto points =
