@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "core/control/in_process_compensation.h"
 #include "core/sim/boring_experiment.h"
 #include "core/sim/cross_feed_drive.h"
 #include "core/sim/dither_profile.h"
@@ -95,6 +96,37 @@ TEST(ProbeCalibrationRig, LinearisesTheSimulatedMandrelWithDegreeThree) {
     const Linearisation lin = linearise(points, 12, kAutoDegree);
     EXPECT_EQ(lin.fit.degree, 3) << lin.fit.choiceReason;  // the bridge is an odd cubic in the gap
     EXPECT_LT(lin.maxTableErrorUm, 2.0);
+}
+
+TEST(InProcessCompensation, HoldsTheLastOffsetWhileTheDriveReadoutIsDownAndResumes) {
+    const BoringScenario s = test::heavyBoring();
+    BoringMachine machine(s, true);
+    DitherEstimatorConfig config = s.estimator;
+    config.currentToForceNPerA = s.tool.currentToForceGainNPerA;
+    config.stiffnessNPerMm = effectiveStiffnessNPerMm(s.tool);
+    CurrentDeflectionSource source(machine.driveReadout(), config);
+    InProcessCompensator compensator(source, machine.output(), s.limits, s.plcCycleS);
+    auto run = [&](double seconds) {
+        CompensationCycle last;
+        for (int i = 0; i < static_cast<int>(seconds / s.plcCycleS); ++i) {
+            machine.advanceCycle();
+            last = compensator.cycle(machine.state().timeS);
+        }
+        return last;
+    };
+    run(30.0);  // into the bore, compensating
+    const double before = compensator.offsetMm();
+    ASSERT_GT(before, 0.08);
+    machine.setDriveHealth({DeviceState::Error, "no answer from the drive for 0.5 s"});
+    const CompensationCycle silent = run(5.0);
+    EXPECT_TRUE(silent.step.holding);
+    EXPECT_NE(silent.step.reason.find("no answer from the drive"), std::string::npos) << silent.step.reason;
+    EXPECT_DOUBLE_EQ(compensator.offsetMm(), before);
+    machine.setDriveHealth({DeviceState::Ready, {}});
+    const CompensationCycle back = run(5.0);
+    EXPECT_FALSE(back.step.holding) << back.step.reason;
+    // Meanwhile the force grew along the bore; the offset follows it again.
+    EXPECT_NEAR(compensator.offsetMm(), -machine.state().tipDeflectionXmm, 0.01);
 }
 
 class HeavyBoring : public ::testing::Test {
