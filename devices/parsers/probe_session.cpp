@@ -165,8 +165,11 @@ void ProbeSession::receive(std::span<const std::uint8_t> bytes, double nowS) {
         handleFrame(frame, nowS);
     }
     const FrameStats& st = m_reader.stats();
-    if (st.corrupt + st.malformed > 0 && m_lastError.empty())
-        m_lastError = "corrupt frames from the probe mandrel (" + std::to_string(st.corrupt) + ")";
+    if (st.corrupt + st.malformed > m_badFramesReported) {
+        m_badFramesReported = st.corrupt + st.malformed;
+        m_lastError = "corrupt frames from the probe mandrel (" + std::to_string(m_badFramesReported) +
+                      " so far); none of them used";
+    }
 }
 
 std::vector<core::ProbeSample> ProbeSession::takeSamples() {

@@ -116,6 +116,7 @@ private:
     std::uint64_t m_samplesDropped = 0;
     std::uint64_t m_badMessages = 0;
     std::uint64_t m_resends = 0;
+    std::uint64_t m_badFramesReported = 0;
 };
 
 /// Printable name of a link state ("streaming").

@@ -539,6 +539,7 @@ void DevicesPage::testConnection() {
     m_testResult->setText(tr("Testing the connection…"));
     m_testResult->show();
     m_test->setEnabled(false);
+    m_testStartValue = m_testTarget->liveValue();
     m_testTarget->testConnection();
     m_testClock.start();
     m_testTimer.start();
@@ -551,7 +552,8 @@ void DevicesPage::pollTest() {
     const QString value = m_testTarget->liveValue();
     if (h.state == DeviceState::Error) {
         finishTest(false, tr("No connection: %1").arg(message));
-    } else if (h.state == DeviceState::Ready && (!value.isEmpty() || m_testClock.elapsed() > kPushGaugeSettleMs)) {
+    } else if (h.state == DeviceState::Ready &&
+               ((!value.isEmpty() && value != m_testStartValue) || m_testClock.elapsed() > kPushGaugeSettleMs)) {
         finishTest(true, value.isEmpty() ? tr("Connected: %1").arg(message) : tr("Connected — %1").arg(value));
     } else if (m_testClock.elapsed() > kTestTimeoutMs) {
         finishTest(false, tr("No answer within %1 s: %2").arg(kTestTimeoutMs / 1000).arg(message));

@@ -86,6 +86,7 @@ private:
     std::unique_ptr<devices::Device> m_testDevice;
     devices::Device* m_testTarget = nullptr;
     QString m_reopenAfterTest;
+    QString m_testStartValue;  ///< the live value before the test: a new one proves the device answers
     QTimer m_testTimer;
     QElapsedTimer m_testClock;
     QTimer m_refresh;
