@@ -2,8 +2,8 @@
 
 #include "devices/api/gauge_settings.h"
 #include "devices/api/serial_settings.h"
-#include "devices/gauge_serial/request_string.h"
 #include "devices/gauge_serial/serial_gauge_device.h"
+#include "devices/parsers/request_string.h"
 
 namespace tt::devices {
 
@@ -29,8 +29,8 @@ QList<SettingIssue> GaugeSerialFactory::validate(DeviceKind kind, const QVariant
     QList<SettingIssue> issues = DevicePlugin::validate(kind, settings, depth);
     const QVariantMap values = withDefaults(settingsSchema(kind), settings);
     if (values.value(QStringLiteral("mode")).toString() == QLatin1String("polled")) {
-        const auto request = unescapeRequest(values.value(QStringLiteral("request")).toString());
-        if (!request || request->isEmpty())
+        const auto request = unescapeRequest(values.value(QStringLiteral("request")).toString().toStdString());
+        if (!request || request->empty())
             issues.append({QStringLiteral("request"),
                            QStringLiteral("Request string: '%1' is empty or has a bad escape (use \\r, \\n, \\xNN)")
                                .arg(values.value(QStringLiteral("request")).toString())});

@@ -1,7 +1,7 @@
 #include "devices/gauge_serial/serial_gauge_device.h"
 
 #include "devices/api/gauge_settings.h"
-#include "devices/gauge_serial/request_string.h"
+#include "devices/parsers/request_string.h"
 
 namespace tt::devices {
 
@@ -12,7 +12,8 @@ constexpr std::size_t kMaxQueued = 256;
 SerialGaugeDevice::SerialGaugeDevice(const QVariantMap& settings, const DeviceContext& context)
     : DeviceBase(DeviceKind::Gauge, context),
       m_polled(settings.value(QStringLiteral("mode")).toString() == QLatin1String("polled")),
-      m_request(unescapeRequest(settings.value(QStringLiteral("request")).toString()).value_or(QByteArray("\r"))),
+      m_request(QByteArray::fromStdString(
+          unescapeRequest(settings.value(QStringLiteral("request")).toString().toStdString()).value_or("\r"))),
       m_replyTimeoutMs(settings.value(QStringLiteral("replyTimeoutMs"), 1000).toInt()),
       m_decoder(gaugeFormat(settings), instrumentUnit(settings), jobUnit(settings)) {
     m_link = std::make_unique<SerialLink>(

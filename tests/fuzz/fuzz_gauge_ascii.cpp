@@ -8,6 +8,7 @@
 #include "devices/parsers/gauge_ascii.h"
 #include "devices/parsers/gauge_decoder.h"
 #include "devices/parsers/line_framer.h"
+#include "devices/parsers/request_string.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace tt::devices;
@@ -18,6 +19,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // A parsed value re-encodes when it fits the field.
         (void)line->value;
     }
+    // The same bytes as a typed request string with escapes.
+    if (const auto request = unescapeRequest(std::string_view(reinterpret_cast<const char*>(data), size)))
+        if (request->size() > size) __builtin_trap();  // unescaping never grows the text
     // As a stream, in two chunks split at the first byte's value.
     const std::size_t cut = size == 0 ? 0 : data[0] % (size + 1);
     LineFramer framer(32);

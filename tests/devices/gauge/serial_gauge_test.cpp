@@ -6,7 +6,6 @@
 
 #include "devices/api/steady_clock.h"
 #include "devices/gauge_serial/gauge_serial_factory.h"
-#include "devices/gauge_serial/request_string.h"
 #include "devices/simulator/micrometer_emulator.h"
 #include "support/pty_pair.h"
 
@@ -202,13 +201,6 @@ TEST_F(SerialGaugeTest, SettingsAreValidatedInTheUsersTerms) {
     EXPECT_NE(device->health().message.find("cannot open /dev/ttyNOPE7"), std::string::npos);
     EXPECT_THROW(factory.create(DeviceKind::Gauge, {{QStringLiteral("baud"), 9601}}, DeviceContext{&clock}),
                  std::invalid_argument);
-}
-
-TEST(RequestString, UnescapesAndRefusesBadEscapes) {
-    EXPECT_EQ(unescapeRequest(QStringLiteral("1\\r")), QByteArray("1\r"));
-    EXPECT_EQ(unescapeRequest(QStringLiteral("\\x02R\\x03")), QByteArray("\x02R\x03"));
-    EXPECT_FALSE(unescapeRequest(QStringLiteral("\\x2")).has_value());
-    EXPECT_FALSE(unescapeRequest(QStringLiteral("a\\")).has_value());
 }
 
 }  // namespace
