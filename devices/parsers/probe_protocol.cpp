@@ -256,8 +256,9 @@ std::vector<Frame> FrameReader::feed(std::span<const std::uint8_t> bytes) {
         }
         if (m_buffer.size() - pos < kHeaderBytes) break;
         const std::size_t length = m_buffer[pos + 1];
+        const std::uint64_t at = m_consumed + pos;  // position in the whole stream
         if (length > kMaxPayload) {
-            ++m_stats.malformed;
+            if (at >= m_badUntil) ++m_stats.malformed;  // not a false SYNC inside a frame already counted
             ++m_stats.discardedBytes;
             ++pos;
             continue;
@@ -269,7 +270,12 @@ std::vector<Frame> FrameReader::feed(std::span<const std::uint8_t> bytes) {
         const std::uint16_t received =
             static_cast<std::uint16_t>(m_buffer[pos + total - 2] | (m_buffer[pos + total - 1] << 8));
         if (expected != received) {
-            ++m_stats.corrupt;
+            // Count each corrupt frame once: a SYNC value inside a frame already found corrupt is
+            // a false start, discarded but not counted again.
+            if (at >= m_badUntil) {
+                ++m_stats.corrupt;
+                m_badUntil = at + total;
+            }
             ++m_stats.discardedBytes;
             ++pos;
             continue;
@@ -287,10 +293,12 @@ std::vector<Frame> FrameReader::feed(std::span<const std::uint8_t> bytes) {
         pos += total;
     }
     m_buffer.erase(m_buffer.begin(), m_buffer.begin() + static_cast<std::ptrdiff_t>(pos));
+    m_consumed += pos;
     return frames;
 }
 
 void FrameReader::reset() {
+    m_consumed += m_buffer.size();
     m_buffer.clear();
     m_haveSequence = false;
     m_staleInARow = 0;

@@ -142,7 +142,7 @@ ParseResult<int> decodeRate(std::span<const std::uint8_t> payload);
 /// Counters of what the frame reader saw. A frame that is lost or corrupt is never returned.
 struct FrameStats {
     std::uint64_t frames = 0;          ///< valid frames returned
-    std::uint64_t corrupt = 0;         ///< CRC mismatches
+    std::uint64_t corrupt = 0;         ///< frames failing the CRC check (each counted once)
     std::uint64_t malformed = 0;       ///< impossible length field (> 250)
     std::uint64_t lost = 0;            ///< gaps in the sequence numbers (includes corrupt frames)
     std::uint64_t duplicate = 0;       ///< repeated or older sequence numbers, dropped
@@ -165,6 +165,8 @@ private:
     bool acceptSequence(std::uint8_t sequence);
 
     std::vector<std::uint8_t> m_buffer;
+    std::uint64_t m_consumed = 0;  ///< stream bytes before m_buffer[0]
+    std::uint64_t m_badUntil = 0;  ///< stream position where the last corrupt frame ends
     FrameStats m_stats;
     bool m_haveSequence = false;
     std::uint8_t m_lastSequence = 0;

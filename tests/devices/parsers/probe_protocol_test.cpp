@@ -101,6 +101,27 @@ TEST(ProbeFrame, CorruptFramesAreCountedAndNeverReturned) {
     EXPECT_EQ(reader.stats().frames, 2u);
 }
 
+TEST(ProbeFrame, ACorruptFrameIsCountedOnceEvenWithSyncBytesInside) {
+    // A payload full of SYNC values with plausible lengths after them: after the CRC fails, every
+    // 0xA5 inside looks like a frame start; none of them may count as another corrupt frame.
+    std::vector<std::uint8_t> payload;
+    for (int i = 0; i < 10; ++i) {
+        payload.push_back(kSync);
+        payload.push_back(2);
+    }
+    auto bad = encodeFrame(5, 0x01, payload);
+    bad.back() ^= 0xFF;  // CRC broken
+    std::vector<std::uint8_t> stream = bad;
+    const auto good = sampleFrame(6);
+    stream.insert(stream.end(), good.begin(), good.end());
+    FrameReader reader;
+    const auto frames = reader.feed(stream);
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_EQ(frames[0].sequence, 6);
+    EXPECT_EQ(reader.stats().corrupt, 1u);
+    EXPECT_EQ(reader.stats().malformed, 0u);
+}
+
 TEST(ProbeFrame, LostAndDuplicatedFramesAreDetectedByTheSequence) {
     FrameReader reader;
     std::size_t used = 0;
