@@ -17,6 +17,12 @@ cmake --build build --target trueturn -j "$(nproc)"
 if [[ -z "${DISPLAY:-}" && -z "${WAYLAND_DISPLAY:-}" && -z "${QT_QPA_PLATFORM:-}" ]]; then
     echo "run.sh: no display found (DISPLAY is not set); running the headless closed-loop demo."
     echo "run.sh: for the operator terminal, run on a desktop or set QT_QPA_PLATFORM=offscreen."
-    exec build/app/trueturn simulate --preset paper-2012 --delay 2 --parts 200 --controller lqg "$@"
+    demo=(simulate --preset paper-2012-group1 --delay 2 --parts 200 --profile)
+    echo
+    echo "== Without control: the barrel-shaped shaft of the simulated lathe =="
+    build/app/trueturn "${demo[@]}" --controller open "$@"
+    echo
+    echo "== With TrueTurn's LQG run-to-run control =="
+    exec build/app/trueturn "${demo[@]}" --controller lqg "$@"
 fi
 exec build/app/trueturn "$@"
