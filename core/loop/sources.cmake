@@ -7,4 +7,7 @@ target_sources(trueturn_core PRIVATE
     loop/manual_gauge.cpp
     loop/loop_engine.cpp
     loop/loop_runner.cpp
+    loop/gauge_relay.cpp
+    loop/correction_relay.cpp
+    loop/operator_cycle.cpp
 )
