@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/common/crc16.h"
+#include "core/control/run_to_run_checks.h"
 
 namespace tt::core {
 
@@ -19,18 +19,6 @@ std::string mm(double v) {
     return out.str();
 }
 
-void requireSize(const PartMeasurement& measurement, int points, const char* who) {
-    if (measurement.deviationMm.size() != points)
-        throw std::invalid_argument(std::string(who) + ": a measurement needs " + std::to_string(points) +
-                                    " values, got " + std::to_string(measurement.deviationMm.size()));
-}
-
-void requireNextPart(bool started, std::int64_t lastPart, std::int64_t part, const char* who) {
-    if (started && part != lastPart + 1)
-        throw std::invalid_argument(std::string(who) + ": part numbers must increase by one (expected " +
-                                    std::to_string(lastPart + 1) + ", got " + std::to_string(part) + ")");
-}
-
 }  // namespace
 
 void EwmaOptions::validate() const {
@@ -42,8 +30,7 @@ void EwmaOptions::validate() const {
         throw std::invalid_argument("EWMA controller: the warning and alarm bands must be > 0 mm");
     if (warningMm > alarmMm)
         throw std::invalid_argument("EWMA controller: the warning band must not exceed the alarm band");
-    if (historyParts < 1 || historyParts > 4096)
-        throw std::invalid_argument("EWMA controller: the history must be 1 .. 4096 parts");
+    requireHistoryParts(historyParts, "EWMA controller");
 }
 
 EwmaController::EwmaController(const Eigen::VectorXd& gain, const CorrectionLimits& limits, const EwmaOptions& options)
@@ -63,38 +50,23 @@ EwmaController::EwmaController(const Eigen::VectorXd& gain, const CorrectionLimi
 }
 
 std::size_t EwmaController::slot(std::int64_t part) const {
-    const std::int64_t h = m_options.historyParts;
-    return static_cast<std::size_t>(((part % h) + h) % h);
+    return ringSlot(part, m_options.historyParts);
 }
 
 MeasurementVerdict EwmaController::addMeasurement(const PartMeasurement& measurement) {
-    requireSize(measurement, pointCount(), "EWMA controller");
+    requireMeasurementSize(measurement, pointCount(), "EWMA controller");
     const std::size_t m = static_cast<std::size_t>(pointCount());
-    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
     const std::int64_t part = measurement.partNumber;
-    std::string whole;
-    if (!m_started || part > m_lastPart)
-        whole = "part " + std::to_string(part) + " has not been machined yet";
-    else if (part < m_firstPart)
-        whole = "part " + std::to_string(part) + " was not machined under this controller";
-    else if (m_historyPart[slot(part)] != part)
-        whole = "part " + std::to_string(part) + " is too late: the controller keeps the last " +
-                std::to_string(m_options.historyParts) + " parts";
-    if (!whole.empty()) {
-        for (auto& r : verdict.reasons)
-            r = whole;
-        return verdict;
-    }
     const std::size_t s = slot(part);
+    const MachinedParts machined{m_started, m_firstPart, m_lastPart, m_options.historyParts};
+    if (const auto why = partRejection(machined, part, m_historyPart[s] == part))
+        return rejectEveryPoint(pointCount(), *why);
+    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
     for (std::size_t i = 0; i < m; ++i) {
         const Eigen::Index ii = static_cast<Eigen::Index>(i);
         const double v = measurement.deviationMm(ii);
-        if (const auto why = nonFiniteReason(v)) {
+        if (const auto why = valueRejection(v, m_historyMeasured[s * m + i] != 0, part)) {
             verdict.reasons[i] = *why;
-            continue;
-        }
-        if (m_historyMeasured[s * m + i]) {
-            verdict.reasons[i] = "point already measured for part " + std::to_string(part);
             continue;
         }
         if (std::abs(v) >= m_options.alarmMm) {
@@ -142,8 +114,7 @@ std::uint16_t EwmaController::fingerprint() const {
                                m_limits.maxStepMm,
                                static_cast<double>(m_options.historyParts)};
     config.insert(config.end(), m_gain.data(), m_gain.data() + m_gain.size());
-    return crc16Ccitt(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(config.data()),
-                                                    config.size() * sizeof(double)));
+    return configurationFingerprint(config);
 }
 
 ControllerState EwmaController::saveState() const {
@@ -200,7 +171,7 @@ OpenLoopController::OpenLoopController(int pointCount) : m_points(pointCount) {
 }
 
 MeasurementVerdict OpenLoopController::addMeasurement(const PartMeasurement& measurement) {
-    requireSize(measurement, m_points, "open loop");
+    requireMeasurementSize(measurement, m_points, "open loop");
     const std::size_t m = static_cast<std::size_t>(m_points);
     MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
     const bool machined = m_started && measurement.partNumber <= m_lastPart;

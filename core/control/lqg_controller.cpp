@@ -6,7 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/common/crc16.h"
+#include "core/control/run_to_run_checks.h"
 
 namespace tt::core {
 
@@ -52,8 +52,7 @@ private:
 void LqgControllerOptions::validate() const {
     if (!std::isfinite(gateSigma) || gateSigma <= 0.0)
         throw std::invalid_argument("LQG controller: the innovation gate must be > 0 sigma");
-    if (historyParts < 1 || historyParts > 4096)
-        throw std::invalid_argument("LQG controller: the history must be 1 .. 4096 parts");
+    requireHistoryParts(historyParts, "LQG controller");
 }
 
 LqgController::LqgController(const RunToRunPlant& plant, const LqgDesign& design, const CorrectionLimits& limits,
@@ -120,13 +119,11 @@ LqgController::LqgController(const RunToRunPlant& plant, const LqgDesign& design
 }
 
 std::size_t LqgController::historySlot(std::int64_t step) const {
-    const std::int64_t h = m_options.historyParts;
-    return static_cast<std::size_t>(((step % h) + h) % h);
+    return ringSlot(step, m_options.historyParts);
 }
 
 std::size_t LqgController::pendingSlot(std::int64_t step) const {
-    const std::int64_t z = m_delay;
-    return static_cast<std::size_t>(((step % z) + z) % z);
+    return ringSlot(step, m_delay);
 }
 
 void LqgController::measurementUpdate(Estimate& e, const double* values, const std::uint8_t* has) const {
@@ -249,25 +246,15 @@ void LqgController::loadHistory(std::size_t slot, Estimate& e) const {
 }
 
 MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurement) {
-    if (measurement.deviationMm.size() != m_points)
-        throw std::invalid_argument("LQG controller: a measurement needs " + std::to_string(m_points) +
-                                    " values, got " + std::to_string(measurement.deviationMm.size()));
+    requireMeasurementSize(measurement, m_points, "LQG controller");
     const std::size_t m = static_cast<std::size_t>(m_points);
-    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
     const std::int64_t part = measurement.partNumber;
-    auto rejectAll = [&](const std::string& why) {
-        for (auto& r : verdict.reasons)
-            r = why;
-        return verdict;
-    };
-    if (!m_started || part > m_lastPart)
-        return rejectAll("part " + std::to_string(part) + " has not been machined yet");
-    if (part < m_firstPart)
-        return rejectAll("part " + std::to_string(part) + " was not machined under this controller");
     const std::int64_t lead = part - m_nextStep;
-    if (lead < 0 && (part < m_nextStep - m_options.historyParts || m_historyStep[historySlot(part)] != part))
-        return rejectAll("part " + std::to_string(part) + " is too late: the controller keeps the last " +
-                         std::to_string(m_options.historyParts) + " parts");
+    const bool stillKept =
+        lead >= 0 || (part >= m_nextStep - m_options.historyParts && m_historyStep[historySlot(part)] == part);
+    const MachinedParts machined{m_started, m_firstPart, m_lastPart, m_options.historyParts};
+    if (const auto why = partRejection(machined, part, stillKept)) return rejectEveryPoint(m_points, *why);
+    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
 
     // Prediction of this part's measurement and where it is stored.
     Eigen::VectorXd predicted;
@@ -298,12 +285,8 @@ MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurem
     for (std::size_t i = 0; i < m; ++i) {
         const Eigen::Index ii = static_cast<Eigen::Index>(i);
         const double v = measurement.deviationMm(ii);
-        if (const auto why = nonFiniteReason(v)) {
+        if (const auto why = valueRejection(v, has[i] != 0, part)) {
             verdict.reasons[i] = *why;
-            continue;
-        }
-        if (has[i]) {
-            verdict.reasons[i] = "point already measured for part " + std::to_string(part);
             continue;
         }
         const double off = std::abs(v - predicted(ii)) / std::sqrt(variance(ii));
@@ -335,15 +318,13 @@ void LqgController::refilterFrom(std::int64_t step) {
 }
 
 Eigen::VectorXd LqgController::nextCorrection(std::int64_t partNumber) {
+    requireNextPart(m_started, m_lastPart, partNumber, "LQG controller");
     if (!m_started) {
         m_started = true;
         m_firstPart = partNumber;
         m_lastPart = partNumber - 1;
         m_nextStep = partNumber - m_delay;
     }
-    if (partNumber != m_lastPart + 1)
-        throw std::invalid_argument("LQG controller: part numbers must increase by one (expected " +
-                                    std::to_string(m_lastPart + 1) + ", got " + std::to_string(partNumber) + ")");
     const std::int64_t k = m_nextStep;
     const std::size_t m = static_cast<std::size_t>(m_points);
     const std::size_t pslot = pendingSlot(k);
@@ -394,8 +375,7 @@ std::uint16_t LqgController::fingerprint() const {
         config.insert(config.end(), b.A.data(), b.A.data() + b.A.size());
         config.insert(config.end(), b.P.data(), b.P.data() + b.P.size());
     }
-    return crc16Ccitt(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(config.data()),
-                                                    config.size() * sizeof(double)));
+    return configurationFingerprint(config);
 }
 
 ControllerState LqgController::saveState() const {

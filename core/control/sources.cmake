@@ -7,6 +7,7 @@ target_sources(trueturn_core PRIVATE
     control/run_to_run_plant.cpp
     control/lqg_design.cpp
     control/correction_limits.cpp
+    control/run_to_run_checks.cpp
     control/lqg_controller.cpp
     control/ewma_controller.cpp
     control/run_to_run_setup.cpp
