@@ -2,9 +2,10 @@
 
 #include <cmath>
 #include <cstddef>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "core/common/text_format.h"
 
 namespace tt::core {
 
@@ -13,9 +14,7 @@ namespace {
 constexpr double kMaxSamples = 1'000'000.0;
 
 std::string mm(double v) {
-    std::ostringstream out;
-    out << v << " mm";
-    return out.str();
+    return formatSignificant(v, 6) + " mm";
 }
 
 void checkRequest(const CorrectionPathRequest& r) {

@@ -1,9 +1,9 @@
 #include "core/control/ewma_controller.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/common/text_format.h"
 #include "core/control/run_to_run_checks.h"
 
 namespace tt::core {
@@ -13,10 +13,7 @@ namespace {
 constexpr double kEwmaStateFormat = 1.0;
 
 std::string mm(double v) {
-    std::ostringstream out;
-    out.precision(4);
-    out << v << " mm";
-    return out.str();
+    return formatSignificant(v, 4) + " mm";
 }
 
 }  // namespace

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/common/text_format.h"
 #include "core/control/run_to_run_checks.h"
 
 namespace tt::core {
@@ -19,13 +19,6 @@ constexpr std::int64_t kNoStep = std::numeric_limits<std::int64_t>::min();
 constexpr double kSteadyTolerance = 1e-10;
 
 using PointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxControlPoints, 1>;
-
-std::string formatSigma(double v) {
-    std::ostringstream out;
-    out.precision(3);
-    out << v;
-    return out.str();
-}
 
 /// Sequential reader of a saved state with a clear error when it runs short.
 class StateReader {
@@ -291,8 +284,8 @@ MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurem
         }
         const double off = std::abs(v - predicted(ii)) / std::sqrt(variance(ii));
         if (off > m_options.gateSigma) {
-            verdict.reasons[i] = "outlier: " + formatSigma(off) + " sigma from the prediction (gate " +
-                                 formatSigma(m_options.gateSigma) + " sigma)";
+            verdict.reasons[i] = "outlier: " + formatSignificant(off, 3) + " sigma from the prediction (gate " +
+                                 formatSignificant(m_options.gateSigma, 3) + " sigma)";
             continue;
         }
         values[i] = v;

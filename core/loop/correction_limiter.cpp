@@ -1,18 +1,11 @@
 #include "core/loop/correction_limiter.h"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
-namespace tt::core {
+#include "core/common/text_format.h"
 
-namespace {
-std::string mm3(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", v);
-    return text;
-}
-}  // namespace
+namespace tt::core {
 
 CorrectionLimiter::CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm)
     : m_limits(limits), m_pointZ(std::move(pointZMm)), m_last(m_pointZ.size(), 0.0) {}
@@ -30,18 +23,19 @@ LimiterOutcome CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
     out.appliedMm.resize(m_pointZ.size());
     for (std::size_t i = 0; i < m_pointZ.size(); ++i) {
         const double asked = computedMm(static_cast<Eigen::Index>(i));
-        const std::string where = "point " + std::to_string(i + 1) + " (x = " + mm3(m_pointZ[i]) + " mm)";
+        const std::string where = "point " + std::to_string(i + 1) + " (x = " + formatFixed(m_pointZ[i], 3) + " mm)";
         if (!std::isfinite(asked)) {
             out.appliedMm[i] = m_last[i];
-            out.notes.push_back("the controller gave no usable correction at " + where + "; holding " + mm3(m_last[i]) +
-                                " mm");
+            out.notes.push_back("the controller gave no usable correction at " + where + "; holding " +
+                                formatFixed(m_last[i], 3) + " mm");
             continue;
         }
         const Eigen::VectorXd one = Eigen::VectorXd::Constant(1, asked);
         const Eigen::VectorXd last = Eigen::VectorXd::Constant(1, m_last[i]);
         const double v = applyCorrectionLimits(one, last, m_limits).correctionMm(0);
         if (v != asked)
-            out.notes.push_back("correction at " + where + " limited from " + mm3(asked) + " to " + mm3(v) + " mm");
+            out.notes.push_back("correction at " + where + " limited from " + formatFixed(asked, 3) + " to " +
+                                formatFixed(v, 3) + " mm");
         out.appliedMm[i] = v;
     }
     m_last = out.appliedMm;

@@ -1,11 +1,11 @@
 #include "core/loop/loop_engine.h"
 
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
+#include "core/common/text_format.h"
 #include "core/control/correction_path_builder.h"
 
 namespace tt::core {
@@ -27,9 +27,7 @@ LoopEvent makeEvent(LoopEvent::Kind kind, std::int64_t part, std::string message
 }
 
 std::string minutesText(double seconds) {
-    char text[48];
-    std::snprintf(text, sizeof text, "%.1f min", seconds / 60.0);
-    return text;
+    return formatFixed(seconds / 60.0, 1) + " min";
 }
 
 }  // namespace
@@ -245,10 +243,8 @@ void LoopEngine::openSession() {
 void LoopEngine::collectReadings() {
     while (auto reading = m_ports.gauge.takeReading()) {
         if (m_awaiting.empty()) {
-            char text[64];
-            std::snprintf(text, sizeof text, "%.3f mm", reading->diameterMm);
-            alarm("reading-unexpected", std::string("a reading of ") + text +
-                                            " arrived but no part is waiting to be measured; it was ignored");
+            alarm("reading-unexpected", "a reading of " + formatFixed(reading->diameterMm, 3) +
+                                            " mm arrived but no part is waiting to be measured; it was ignored");
             continue;
         }
         if (!m_session) openSession();

@@ -1,20 +1,11 @@
 #include "core/loop/measurement_session.h"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
+#include "core/common/text_format.h"
+
 namespace tt::core {
-
-namespace {
-
-std::string mm3(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3f", v);
-    return text;
-}
-
-}  // namespace
 
 MeasurementSession::MeasurementSession(std::vector<double> pointXMm, double nominalDiameterMm, double plausibleWindowMm)
     : m_pointXMm(std::move(pointXMm)), m_nominalMm(nominalDiameterMm), m_windowMm(plausibleWindowMm) {
@@ -42,9 +33,9 @@ SessionAccept MeasurementSession::accept(const GaugeReading& reading) {
     if (!std::isfinite(reading.diameterMm)) return {false, *point, "the reading is not a number"};
     if (std::fabs(reading.diameterMm - m_nominalMm) > m_windowMm)
         return {false, *point,
-                "reading " + mm3(reading.diameterMm) + " mm is more than " + mm3(m_windowMm) + " mm from the nominal " +
-                    mm3(m_nominalMm) + " mm; check the point (x = " + mm3(m_pointXMm[*point]) +
-                    " mm) and measure again"};
+                "reading " + formatFixed(reading.diameterMm, 3) + " mm is more than " + formatFixed(m_windowMm, 3) +
+                    " mm from the nominal " + formatFixed(m_nominalMm, 3) +
+                    " mm; check the point (x = " + formatFixed(m_pointXMm[*point], 3) + " mm) and measure again"};
     m_readings[*point] = reading;
     m_retaking.reset();
     return {true, *point, {}};

@@ -2,8 +2,9 @@
 
 #include <cmath>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/common/text_format.h"
 
 namespace tt::core {
 
@@ -21,19 +22,13 @@ void requirePositive(double value, const char* what) {
         throw std::invalid_argument(std::string(what) + " must be a positive number");
 }
 
-std::string number(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
-
 bool within(double v, double lo, double hi) {
     return std::isfinite(v) && v >= lo && v <= hi;
 }
 
 std::string rangeProblem(const std::string& what, double v, double lo, double hi, const std::string& unit) {
-    return what + ": " + (std::isfinite(v) ? number(v) + " " + unit : std::string("not a number")) +
-           " must be between " + number(lo) + " and " + number(hi) + " " + unit;
+    return what + ": " + (std::isfinite(v) ? formatSignificant(v, 6) + " " + unit : std::string("not a number")) +
+           " must be between " + formatSignificant(lo, 6) + " and " + formatSignificant(hi, 6) + " " + unit;
 }
 
 bool isIsoDate(const std::string& s) {
@@ -126,13 +121,14 @@ std::vector<std::string> validateTool(const ToolRecord& tool) {
                                         kMaxYoungsModulusMpa, "MPa"));
     if (!(std::isfinite(tool.currentToForceGainNPerA) && tool.currentToForceGainNPerA > 0.0 &&
           tool.currentToForceGainNPerA <= kMaxGainNPerA))
-        problems.push_back("k_p: " + number(tool.currentToForceGainNPerA) + " N/A must be above 0 and at most " +
-                           number(kMaxGainNPerA) + " N/A");
+        problems.push_back("k_p: " + formatSignificant(tool.currentToForceGainNPerA, 6) +
+                           " N/A must be above 0 and at most " + formatSignificant(kMaxGainNPerA, 6) + " N/A");
     if (tool.measured) {
         const MeasuredStiffness& m = *tool.measured;
         if (!(std::isfinite(m.stiffnessNPerMm) && m.stiffnessNPerMm > 0.0 && m.stiffnessNPerMm <= kMaxStiffnessNPerMm))
-            problems.push_back("measured stiffness: " + number(m.stiffnessNPerMm) +
-                               " N/mm must be above 0 and at most " + number(kMaxStiffnessNPerMm) + " N/mm");
+            problems.push_back("measured stiffness: " + formatSignificant(m.stiffnessNPerMm, 6) +
+                               " N/mm must be above 0 and at most " + formatSignificant(kMaxStiffnessNPerMm, 6) +
+                               " N/mm");
         if (!isIsoDate(m.measuredOn))
             problems.push_back("measured on: '" + m.measuredOn + "' is not a date like 2025-03-14");
         if (m.measuredBy.empty()) problems.push_back("measured by: must name who measured the stiffness");

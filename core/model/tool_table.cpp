@@ -2,8 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
+
+#include "core/common/text_format.h"
 
 namespace tt::core {
 
@@ -16,9 +17,7 @@ std::string trim(const std::string& s) {
 }
 
 std::string number(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", v);
-    return buffer;
+    return formatSignificant(v, 10);
 }
 
 struct FieldInfo {
