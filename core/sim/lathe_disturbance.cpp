@@ -183,10 +183,10 @@ void LatheDisturbance::restart() {
         Eigen::MatrixXd p = solveDiscreteLyapunov(m_model.A, gw * gw.transpose());
         p = 0.5 * (p + p.transpose());
         const Eigen::MatrixXd factor = covarianceFactor(p);
-        auto g = latheGenerator(m_seed, LatheStream::InitialState);
+        NormalStream normals = latheNormals(m_seed, LatheStream::InitialState);
         Eigen::VectorXd e(n);
         for (Eigen::Index i = 0; i < n; ++i)
-            e(i) = standardNormal(g);
+            e(i) = normals.next();
         m_state = factor * e;
     }
     m_nextPart = 1;
@@ -194,10 +194,10 @@ void LatheDisturbance::restart() {
 }
 
 void LatheDisturbance::advance() {
-    auto g = latheGenerator(m_seed, LatheStream::Disturbance, static_cast<std::uint64_t>(m_nextPart));
+    NormalStream normals = latheNormals(m_seed, LatheStream::Disturbance, static_cast<std::uint64_t>(m_nextPart));
     Eigen::VectorXd e(m_noiseFactor.cols());
     for (Eigen::Index i = 0; i < e.size(); ++i)
-        e(i) = standardNormal(g);
+        e(i) = normals.next();
     const Eigen::VectorXd w = m_noiseFactor * e;
     Eigen::VectorXd f = m_model.H * w;
     if (m_model.A.rows() > 0) {

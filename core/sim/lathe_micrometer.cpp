@@ -33,9 +33,10 @@ double LatheMicrometerModel::sigmaMm(int pointIndex) const {
 }
 
 double LatheMicrometerModel::readMm(double trueDiameterMm, std::int64_t partNumber, int pointIndex, int attempt) const {
-    auto g = latheGenerator(m_seed, LatheStream::Micrometer, static_cast<std::uint64_t>(partNumber),
-                            (static_cast<std::uint64_t>(pointIndex) << 16) ^ static_cast<std::uint64_t>(attempt));
-    const double value = trueDiameterMm + sigmaMm(pointIndex) * standardNormal(g);
+    NormalStream normals =
+        latheNormals(m_seed, LatheStream::Micrometer, static_cast<std::uint64_t>(partNumber),
+                     (static_cast<std::uint64_t>(pointIndex) << 16) ^ static_cast<std::uint64_t>(attempt));
+    const double value = trueDiameterMm + sigmaMm(pointIndex) * normals.next();
     if (m_resolution <= 0.0) return value;
     return std::round(value / m_resolution) * m_resolution;
 }

@@ -74,8 +74,7 @@ double LatheSimulator::toolWearMm(std::int64_t partNumber) const {
 double LatheSimulator::toolChangeOffsetMm(std::int64_t partNumber) const {
     if (m_setup.wear.changeRepeatabilityMm <= 0.0) return 0.0;
     const auto edge = static_cast<std::uint64_t>((partNumber - 1) / m_setup.wear.toolLifeParts);
-    auto g = latheGenerator(m_setup.seed, LatheStream::ToolChange, edge);
-    return m_setup.wear.changeRepeatabilityMm * standardNormal(g);
+    return m_setup.wear.changeRepeatabilityMm * latheNormals(m_setup.seed, LatheStream::ToolChange, edge).next();
 }
 
 double LatheSimulator::finishedDiameterMm(std::size_t gridIndex, double commandedRadialMm) const {

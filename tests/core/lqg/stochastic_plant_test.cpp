@@ -37,7 +37,7 @@ TEST(NormalStream, StandardNormalMoments) {
 
 TEST(NormalStream, SaveAndRestoreResumeTheSameSequence) {
     NormalStream a(99);
-    a.next();  // leaves a cached second draw
+    a.next();  // a state in the middle of the stream
     const std::string state = a.saveState();
     NormalStream b(1);
     b.restoreState(state);
