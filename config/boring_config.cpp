@@ -3,7 +3,7 @@
 #include <QJsonArray>
 #include <stdexcept>
 
-#include "config/json_eigen.h"
+#include "config/json_section.h"
 #include "config/preset_library.h"
 #include "core/sim/boring_machine.h"
 
@@ -11,54 +11,10 @@ namespace tt::config {
 
 namespace {
 
-/// Reads the fields of one section, naming "section.field" in every error.
-class Section {
-public:
-    Section(const QJsonObject& preset, const QString& name) : m_name(name) {
-        const QJsonValue v = preset.value(name);
-        if (!v.isUndefined() && !v.isObject()) fail(QString(), "must be an object");
-        m_object = v.toObject();
-    }
-    bool has(const QString& key) const { return m_object.contains(key); }
-    double number(const QString& key, double fallback, double lo, double hi) const {
-        try {
-            return optionalNumber(m_object, key, fallback, lo, hi);
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument(m_name.toStdString() + "." + e.what());
-        }
-    }
-    double required(const QString& key, double lo, double hi) const {
-        try {
-            return requireNumber(m_object, key, lo, hi);
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument(m_name.toStdString() + "." + e.what());
-        }
-    }
-    int integer(const QString& key, int fallback, int lo, int hi) const {
-        const double v = number(key, fallback, lo, hi);
-        if (v != static_cast<int>(v)) fail(key, "must be a whole number");
-        return static_cast<int>(v);
-    }
-    std::string text(const QString& key, const std::string& fallback) const {
-        const QJsonValue v = m_object.value(key);
-        if (v.isUndefined()) return fallback;
-        if (!v.isString()) fail(key, "must be a string");
-        return v.toString().toStdString();
-    }
-    QJsonValue value(const QString& key) const { return m_object.value(key); }
-    [[noreturn]] void fail(const QString& key, const std::string& why) const {
-        throw std::invalid_argument(m_name.toStdString() + (key.isEmpty() ? "" : "." + key.toStdString()) + ": " + why);
-    }
-
-private:
-    QString m_name;
-    QJsonObject m_object;
-};
-
 core::ToolRecord readTool(const QJsonObject& preset) {
     if (!preset.value(QStringLiteral("tool")).isObject())
         throw std::invalid_argument("tool: missing (the boring bar: section, overhang, material, k_p)");
-    const Section s(preset, QStringLiteral("tool"));
+    const JsonSection s(preset, QStringLiteral("tool"));
     core::ToolRecord t;
     t.id = s.text(QStringLiteral("id"), "T1");
     t.name = s.text(QStringLiteral("name"), "");
@@ -86,7 +42,7 @@ core::ToolRecord readTool(const QJsonObject& preset) {
     return t;
 }
 
-std::vector<double> coefficients(const Section& s, const QString& key, const std::vector<double>& fallback) {
+std::vector<double> coefficients(const JsonSection& s, const QString& key, const std::vector<double>& fallback) {
     const QJsonValue v = s.value(key);
     if (v.isUndefined()) return fallback;
     if (!v.isArray()) s.fail(key, "must be an array of numbers c0, c1, ...");
@@ -99,7 +55,7 @@ std::vector<double> coefficients(const Section& s, const QString& key, const std
     return out;
 }
 
-int calibrationDegree(const Section& s) {
+int calibrationDegree(const JsonSection& s) {
     const QJsonValue v = s.value(QStringLiteral("degree"));
     if (v.isUndefined() || (v.isString() && v.toString() == QStringLiteral("auto"))) return core::kAutoDegree;
     if (v.isDouble() && (v.toDouble() == 2.0 || v.toDouble() == 3.0 || v.toDouble() == 4.0))
@@ -115,10 +71,10 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     sc.description = preset.value(QStringLiteral("description")).toString().toStdString();
     sc.tool = readTool(preset);
 
-    const Section bar(preset, QStringLiteral("bar"));
+    const JsonSection bar(preset, QStringLiteral("bar"));
     sc.trueStiffnessFactor = bar.number(QStringLiteral("true_stiffness_factor"), 1.0, 0.5, 1.5);
 
-    const Section cut(preset, QStringLiteral("cut"));
+    const JsonSection cut(preset, QStringLiteral("cut"));
     core::BoringCutConfig& c = sc.cut;
     c.boreLengthMm = cut.number(QStringLiteral("bore_length_mm"), c.boreLengthMm, 10.0, 5000.0);
     c.feedMmPerRev = cut.number(QStringLiteral("feed_mm_per_rev"), c.feedMmPerRev, 0.01, 2.0);
@@ -136,7 +92,7 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     c.entryRampMm = cut.number(QStringLiteral("entry_ramp_mm"), c.entryRampMm, 0.0, 50.0);
     c.gaugeMarginMm = cut.number(QStringLiteral("gauge_margin_mm"), c.gaugeMarginMm, 0.0, c.boreLengthMm / 2.0 - 1.0);
 
-    const Section drive(preset, QStringLiteral("drive"));
+    const JsonSection drive(preset, QStringLiteral("drive"));
     core::CrossFeedDriveConfig& d = sc.drive;
     d.slideMassKg = drive.number(QStringLiteral("slide_mass_kg"), d.slideMassKg, 1.0, 1e5);
     d.motorInertiaKg = drive.number(QStringLiteral("motor_inertia_kg"), d.motorInertiaKg, 0.0, 1e5);
@@ -155,13 +111,13 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     if (d.staticFrictionN < d.coulombFrictionN)
         drive.fail(QStringLiteral("static_friction_n"), "must be at least coulomb_friction_n");
 
-    const Section dither(preset, QStringLiteral("dither"));
+    const JsonSection dither(preset, QStringLiteral("dither"));
     sc.dither.amplitudeMm = dither.number(QStringLiteral("amplitude_mm"), sc.dither.amplitudeMm, 0.005, 0.05);
     sc.dither.periodS = dither.number(QStringLiteral("period_s"), sc.dither.periodS, 0.2, 2.0);
     sc.dither.constantVelocityFraction =
         dither.number(QStringLiteral("constant_velocity_fraction"), sc.dither.constantVelocityFraction, 0.2, 0.9);
 
-    const Section est(preset, QStringLiteral("estimator"));
+    const JsonSection est(preset, QStringLiteral("estimator"));
     core::DitherEstimatorConfig& e = sc.estimator;
     e.movingVelocityMmPerS = est.number(QStringLiteral("moving_velocity_mm_per_s"), e.movingVelocityMmPerS, 1e-6, 10.0);
     e.plateauTolerance = est.number(QStringLiteral("plateau_tolerance"), e.plateauTolerance, 0.01, 0.5);
@@ -173,7 +129,7 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     e.maxPairAgeS = est.number(QStringLiteral("max_pair_age_s"), e.maxPairAgeS, 0.1, 100.0);
     e.strokesAveraged = est.integer(QStringLiteral("strokes_averaged"), e.strokesAveraged, 1, 64);
 
-    const Section probe(preset, QStringLiteral("probe"));
+    const JsonSection probe(preset, QStringLiteral("probe"));
     core::InductiveProbeConfig& p = sc.probe;
     p.adcBits = probe.integer(QStringLiteral("adc_bits"), p.adcBits, core::kMinAdcBits, core::kMaxAdcBits);
     p.fullScaleGapMm = probe.number(QStringLiteral("full_scale_gap_mm"), p.fullScaleGapMm, 1e-3, 10.0);
@@ -188,7 +144,7 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
         probe.number(QStringLiteral("sensor_position_fraction"), p.sensorPositionFraction, 0.05, 1.0);
     p.sampleRateHz = probe.number(QStringLiteral("sample_rate_hz"), p.sampleRateHz, 1.0, 10000.0);
 
-    const Section cal(preset, QStringLiteral("calibration"));
+    const JsonSection cal(preset, QStringLiteral("calibration"));
     core::ProbeCalibrationConfig& k = sc.calibration;
     k.points = cal.integer(QStringLiteral("points"), k.points, 5, 1000);
     k.readingsPerPoint = cal.integer(QStringLiteral("readings_per_point"), k.readingsPerPoint, 1, 1000);
@@ -198,12 +154,12 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     k.referenceNoiseUm = cal.number(QStringLiteral("reference_noise_um"), k.referenceNoiseUm, 0.0, 100.0);
     k.degree = calibrationDegree(cal);
 
-    const Section comp(preset, QStringLiteral("compensation"));
+    const JsonSection comp(preset, QStringLiteral("compensation"));
     sc.limits.maxOffsetMm = comp.number(QStringLiteral("max_offset_mm"), sc.limits.maxOffsetMm, 1e-3, 10.0);
     sc.limits.maxRateMmPerS = comp.number(QStringLiteral("max_rate_mm_per_s"), sc.limits.maxRateMmPerS, 1e-4, 100.0);
     sc.plcCycleS = comp.number(QStringLiteral("plc_cycle_ms"), sc.plcCycleS * 1000.0, 10.0, 100.0) / 1000.0;
 
-    const Section sim(preset, QStringLiteral("simulation"));
+    const JsonSection sim(preset, QStringLiteral("simulation"));
     sc.simStepS = sim.number(QStringLiteral("step_ms"), sc.simStepS * 1000.0, 0.01, 1.0) / 1000.0;
     sc.seed = static_cast<unsigned long long>(sim.number(QStringLiteral("seed"), 1.0, 0.0, 9007199254740991.0));
     core::validateScenario(sc);

@@ -69,19 +69,26 @@ Eigen::VectorXd vectorFromJson(const QJsonValue& value, const QString& what) {
     return v;
 }
 
-double requireNumber(const QJsonObject& object, const QString& key, double minValue, double maxValue) {
-    const QJsonValue value = object.value(key);
-    if (value.isUndefined()) throw bad(key, "missing");
-    if (!value.isDouble() || !std::isfinite(value.toDouble())) throw bad(key, "must be a number");
+double numberAt(const QJsonValue& value, const QString& where, double minValue, double maxValue) {
+    if (value.isUndefined()) throw bad(where, "missing");
+    if (!value.isDouble() || !std::isfinite(value.toDouble())) throw bad(where, "must be a number");
     const double v = value.toDouble();
     if (v < minValue || v > maxValue)
-        throw bad(key, formatNumber(v) + " is outside " + formatNumber(minValue) + " .. " + formatNumber(maxValue));
+        throw bad(where, formatNumber(v) + " is outside " + formatNumber(minValue) + " .. " + formatNumber(maxValue));
     return v;
+}
+
+double requireNumber(const QJsonObject& object, const QString& key, double minValue, double maxValue) {
+    return numberAt(object.value(key), key, minValue, maxValue);
 }
 
 double optionalNumber(const QJsonObject& object, const QString& key, double fallback, double minValue,
                       double maxValue) {
     return object.contains(key) ? requireNumber(object, key, minValue, maxValue) : fallback;
+}
+
+QJsonValue finiteOrNull(double v) {
+    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
 }
 
 }  // namespace tt::config

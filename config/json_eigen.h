@@ -17,10 +17,16 @@ Eigen::MatrixXd matrixFromJson(const QJsonValue& value, const QString& what);
 /// Reads a flat numeric JSON array; throws std::invalid_argument naming `what`.
 Eigen::VectorXd vectorFromJson(const QJsonValue& value, const QString& what);
 
+/// The number at `where` (a field path for messages, "plant.points[2].x_mm"); throws
+/// std::invalid_argument "<where>: missing" / "must be a number" / "X is outside min .. max".
+double numberAt(const QJsonValue& value, const QString& where, double minValue, double maxValue);
 /// Required numeric field `key` of `object`; throws std::invalid_argument naming it when absent,
 /// not a number, or outside [minValue, maxValue].
 double requireNumber(const QJsonObject& object, const QString& key, double minValue, double maxValue);
 /// Optional numeric field with a default; same checks as requireNumber when present.
 double optionalNumber(const QJsonObject& object, const QString& key, double fallback, double minValue, double maxValue);
+
+/// `v` as a JSON number, or null when it is NaN or infinite (JSON has no such numbers).
+QJsonValue finiteOrNull(double v);
 
 }  // namespace tt::config

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "config/json_eigen.h"
+#include "config/json_section.h"
 #include "config/lathe_config.h"
 #include "config/plant_config.h"
 #include "config/preset_library.h"
@@ -23,14 +23,6 @@ QJsonObject withBase(const QJsonObject& preset) {
     return merged;
 }
 
-double loopNumber(const QJsonObject& loop, const char* key, double fallback, double minValue, double maxValue) {
-    try {
-        return optionalNumber(loop, QString::fromLatin1(key), fallback, minValue, maxValue);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(std::string("loop.") + e.what());
-    }
-}
-
 LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<int> delay) {
     LoopScenario s;
     s.preset = name;
@@ -45,23 +37,21 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
     if (s.json.contains(QStringLiteral("systematic_model")))
         s.systematicModel = systematicModelFromPreset(s.json).diameterError();
 
-    const QJsonValue loopValue = s.json.value(QStringLiteral("loop"));
-    if (!loopValue.isUndefined() && !loopValue.isObject()) throw std::invalid_argument("loop: must be an object");
-    const QJsonObject loop = loopValue.toObject();
+    const JsonSection loop(s.json, QStringLiteral("loop"));
     const QJsonObject plant = s.json.value(QStringLiteral("plant")).toObject();
     double length = s.lathe ? s.lathe->workpiece.lengthMm
                             : plant.value(QStringLiteral("part_length_mm")).toDouble(s.control.plant.points.back().xMm);
-    s.partLengthMm = loopNumber(loop, "part_length_mm", length, 1.0, 1e5);
-    s.nominalDiameterMm =
-        loopNumber(loop, "nominal_diameter_mm", s.lathe ? s.lathe->workpiece.finishDiameterMm : 27.0, 0.1, 1e4);
+    s.partLengthMm = loop.number(QStringLiteral("part_length_mm"), length, 1.0, 1e5);
+    s.nominalDiameterMm = loop.number(QStringLiteral("nominal_diameter_mm"),
+                                      s.lathe ? s.lathe->workpiece.finishDiameterMm : 27.0, 0.1, 1e4);
     if (s.lathe &&
         (s.partLengthMm != s.lathe->workpiece.lengthMm || s.nominalDiameterMm != s.lathe->workpiece.finishDiameterMm))
         throw std::invalid_argument("loop: the part length and nominal diameter must be the lathe's workpiece's");
-    s.plausibleRangeMm = loopNumber(loop, "plausible_range_mm", s.plausibleRangeMm, 1e-3, 100.0);
-    s.pathStepMm = loopNumber(loop, "path_step_mm", s.pathStepMm, 0.01, 100.0);
-    s.gaugeTimeoutS = loopNumber(loop, "gauge_timeout_s", s.gaugeTimeoutS, 1.0, 1e7);
-    s.toleranceMm = loopNumber(loop, "tolerance_mm", s.toleranceMm, 1e-4, 100.0);
-    if (loop.contains(QStringLiteral("interpolation"))) {
+    s.plausibleRangeMm = loop.number(QStringLiteral("plausible_range_mm"), s.plausibleRangeMm, 1e-3, 100.0);
+    s.pathStepMm = loop.number(QStringLiteral("path_step_mm"), s.pathStepMm, 0.01, 100.0);
+    s.gaugeTimeoutS = loop.number(QStringLiteral("gauge_timeout_s"), s.gaugeTimeoutS, 1.0, 1e7);
+    s.toleranceMm = loop.number(QStringLiteral("tolerance_mm"), s.toleranceMm, 1e-4, 100.0);
+    if (loop.has(QStringLiteral("interpolation"))) {
         const QJsonValue method = loop.value(QStringLiteral("interpolation"));
         if (!method.isString()) throw std::invalid_argument("loop.interpolation: must be \"pchip\" or \"spline\"");
         try {

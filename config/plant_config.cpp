@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "config/json_eigen.h"
 #include "config/preset_library.h"
 
 namespace tt::config {
@@ -31,22 +32,6 @@ QString child(const QString& where, const QString& key) {
 
 QString item(const QString& where, qsizetype index) {
     return where + QLatin1Char('[') + QString::number(index) + QLatin1Char(']');
-}
-
-std::string numberText(double v) {
-    std::string s = std::to_string(v);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
-}
-
-double numberAt(const QJsonValue& value, const QString& where, double minValue, double maxValue) {
-    if (value.isUndefined()) throw fieldError(where, "missing");
-    if (!value.isDouble() || !std::isfinite(value.toDouble())) throw fieldError(where, "must be a number");
-    const double v = value.toDouble();
-    if (v < minValue || v > maxValue)
-        throw fieldError(where, numberText(v) + " is outside " + numberText(minValue) + " .. " + numberText(maxValue));
-    return v;
 }
 
 double positiveAt(const QJsonValue& value, const QString& where, double maxValue = kInf) {

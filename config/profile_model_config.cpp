@@ -23,10 +23,6 @@ void requireMillimetres(const QJsonObject& section, const QString& key) {
         throw bad(key, "must be \"mm\" (got " + unit.toVariant().toString().toStdString() + ")");
 }
 
-QJsonValue finiteOrNull(double v) {
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
-}
-
 }  // namespace
 
 core::SystematicErrorModel systematicModelFromPreset(const QJsonObject& preset) {

@@ -9,6 +9,7 @@
 
 #include "app/cli/command.h"
 #include "app/cli/command_parser.h"
+#include "config/json_eigen.h"
 #include "config/preset_library.h"
 #include "config/profile_csv.h"
 #include "config/profile_model_config.h"
@@ -96,10 +97,8 @@ QJsonObject toJson(const QString& path, const FitOutcome& o, const core::Polynom
     if (!o.candidates.empty()) {
         QJsonArray selection;
         for (const core::DegreeCandidate& c : o.candidates)
-            selection.append(
-                QJsonObject{{QStringLiteral("degree"), c.degree},
-                            {QStringLiteral("press"),
-                             std::isfinite(c.press) ? QJsonValue(c.press) : QJsonValue(QJsonValue::Null)}});
+            selection.append(QJsonObject{{QStringLiteral("degree"), c.degree},
+                                         {QStringLiteral("press"), config::finiteOrNull(c.press)}});
         out.insert(QStringLiteral("selection"), selection);
     }
     out.insert(QStringLiteral("x_range_mm"), QJsonArray{xMin, xMax});

@@ -15,6 +15,7 @@
 
 #include "app/cli/command.h"
 #include "app/cli/command_parser.h"
+#include "config/json_eigen.h"
 #include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
 #include "core/sim/lathe_study.h"
@@ -68,10 +69,6 @@ struct RunChoice {
     }
 };
 
-QJsonValue finiteOrNull(double v) {
-    return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
-}
-
 QString g(double v, int precision = 4) {
     return std::isfinite(v) ? QString::number(v, 'g', precision) : QStringLiteral("n/a");
 }
@@ -88,15 +85,15 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
     QJsonArray points;
     for (const core::LatheStudyPoint& p : r.points)
         points.append(QJsonObject{{QStringLiteral("x_mm"), p.xMm},
-                                  {QStringLiteral("var_open"), finiteOrNull(p.varOpenMm2)},
-                                  {QStringLiteral("var_closed"), finiteOrNull(p.varClosedMm2)},
-                                  {QStringLiteral("k_eff"), finiteOrNull(p.kEff)},
-                                  {QStringLiteral("k_eff_analytic"), finiteOrNull(p.kEffAnalytic)}});
+                                  {QStringLiteral("var_open"), config::finiteOrNull(p.varOpenMm2)},
+                                  {QStringLiteral("var_closed"), config::finiteOrNull(p.varClosedMm2)},
+                                  {QStringLiteral("k_eff"), config::finiteOrNull(p.kEff)},
+                                  {QStringLiteral("k_eff_analytic"), config::finiteOrNull(p.kEffAnalytic)}});
     QJsonObject out{{QStringLiteral("controller"), QString::fromStdString(core::controllerKindName(r.controller))},
                     {QStringLiteral("delay"), r.delay},
                     {QStringLiteral("parts"), static_cast<qint64>(r.parts)},
                     {QStringLiteral("points"), points},
-                    {QStringLiteral("k_eff"), finiteOrNull(r.kEff)}};
+                    {QStringLiteral("k_eff"), config::finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
     if (profile) {
         QJsonArray rows;
