@@ -50,7 +50,7 @@ QJsonObject toJson(const QString& preset, const core::BoringScenario& s, const c
                                {QStringLiteral("degree"), r.calibration->degree},
                                {QStringLiteral("rms_residual_um"), r.calibration->rmsResidualUm},
                                {QStringLiteral("max_table_error_um"), r.calibration->maxTableErrorUm},
-                               {QStringLiteral("image_crc"), static_cast<int>(r.calibration->imageCrc)}});
+                               {QStringLiteral("image_crc"), static_cast<qint64>(r.calibration->imageCrc)}});
     return out;
 }
 

@@ -36,10 +36,6 @@ int parseDegree(const QString& text) {
     throw UsageError(QStringLiteral("--degree: '%1' is not 2, 3, 4 or auto").arg(text).toStdString());
 }
 
-QString hex16(std::uint16_t v) {
-    return QStringLiteral("0x") + QString::number(v, 16).rightJustified(4, QLatin1Char('0')).toUpper();
-}
-
 QJsonArray scoresJson(const core::CharacteristicFit& fit) {
     QJsonArray scores;
     for (const core::DegreeScore& s : fit.scores)
@@ -101,10 +97,11 @@ QJsonObject writeTable(const QString& path, const core::LinearisationTable& tabl
     else
         bytes = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
     writeFile(path, bytes);
-    return QJsonObject{{QStringLiteral("file"), path},
-                       {QStringLiteral("format"), suffix},
-                       {QStringLiteral("version"), static_cast<int>(info.version)},
-                       {QStringLiteral("image_crc"), hex16(core::tableImageCrc(image))}};
+    return QJsonObject{
+        {QStringLiteral("file"), path},
+        {QStringLiteral("format"), suffix},
+        {QStringLiteral("version"), static_cast<int>(info.version)},
+        {QStringLiteral("image_crc"), QString::fromStdString(core::crcText(core::tableImageCrc(image)))}};
 }
 
 void printText(const QString& path, const core::Linearisation& lin, const QJsonObject& written) {

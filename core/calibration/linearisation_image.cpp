@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 
 namespace tt::core {
 
@@ -35,10 +36,21 @@ std::uint64_t get(std::span<const std::uint8_t> b, std::size_t at, int bytes) {
     return v;
 }
 
-std::string hex16(std::uint16_t v) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "0x%04X", v);
-    return buf;
+constexpr std::size_t kCrc32At = 28;  ///< format 2: CRC-32C field in the header
+
+void checkFormat(std::uint8_t format) {
+    if (format != kTableImageFormat && format != kTableImageFormatCrc16)
+        throw std::invalid_argument("image format " + std::to_string(format) + " is not supported (1 or 2)");
+}
+
+/// Format 2: CRC-32C of the image without its CRC field (bytes 28..31).
+std::uint32_t format2Crc(std::span<const std::uint8_t> bytes) {
+    return crc32c(bytes.subspan(kCrc32At + 4), crc32c(bytes.first(kCrc32At)));
+}
+
+/// CRC width of a format, bits.
+int crcBits(std::uint8_t format) {
+    return format == kTableImageFormatCrc16 ? 16 : 32;
 }
 
 void checkTable(const LinearisationTable& table) {
@@ -58,13 +70,23 @@ bool decreasing(const LinearisationTable& table) {
 
 }  // namespace
 
-std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info) {
+std::size_t tableImageBytes(int adcBits, std::uint8_t format) {
+    checkFormat(format);
+    if (adcBits < kMinAdcBits || adcBits > kMaxAdcBits)
+        throw std::invalid_argument("table ADC resolution " + std::to_string(adcBits) + " bits is outside " +
+                                    std::to_string(kMinAdcBits) + " .. " + std::to_string(kMaxAdcBits));
+    return kTableImageHeaderBytes + 2 * (std::size_t{1} << adcBits) + (format == kTableImageFormatCrc16 ? 2 : 0);
+}
+
+std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info,
+                                           std::uint8_t format) {
+    checkFormat(format);
     checkTable(table);
     std::vector<std::uint8_t> out;
-    out.reserve(kTableImageHeaderBytes + 2 * table.entries.size() + 2);
+    out.reserve(tableImageBytes(table.adcBits, format));
     for (std::uint8_t m : kMagic)  // 0: magic "TTLT"
         out.push_back(m);
-    out.push_back(kTableImageFormat);                                  // 4: format
+    out.push_back(format);                                             // 4: format
     out.push_back(static_cast<std::uint8_t>(kTableImageHeaderBytes));  // 5: header size
     out.push_back(static_cast<std::uint8_t>(table.adcBits));           // 6: ADC bits
     out.push_back(info.plane);                                         // 7: plane
@@ -75,16 +97,24 @@ std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, cons
     out.push_back(info.degree);                                        // 22: degree
     out.push_back(decreasing(table) ? kFlagDecreasing : 0);            // 23: flags
     put32(out, static_cast<std::uint32_t>(table.entries.size()));      // 24: entry count
-    put32(out, 0);                                                     // 28: reserved
+    put32(out, 0);  // 28: format 2: CRC-32C (filled in below); format 1: reserved
     for (std::int16_t e : table.entries)
         put16(out, static_cast<std::uint16_t>(e));
-    put16(out, crc16Ccitt(out));
+    if (format == kTableImageFormatCrc16) {
+        put16(out, crc16Ccitt(out));
+    } else {
+        const std::uint32_t crc = format2Crc(out);
+        for (std::size_t i = 0; i < 4; ++i)
+            out[kCrc32At + i] = static_cast<std::uint8_t>((crc >> (8 * i)) & 0xFF);
+    }
     return out;
 }
 
-std::uint16_t tableImageCrc(std::span<const std::uint8_t> bytes) {
+std::uint32_t tableImageCrc(std::span<const std::uint8_t> bytes) {
+    if (bytes.size() >= kTableImageHeaderBytes && bytes[4] == kTableImageFormat)
+        return static_cast<std::uint32_t>(get(bytes, kCrc32At, 4));
     if (bytes.size() < 2) throw std::invalid_argument("the image is too short to carry a CRC");
-    return static_cast<std::uint16_t>(get(bytes, bytes.size() - 2, 2));
+    return static_cast<std::uint32_t>(get(bytes, bytes.size() - 2, 2));  // format 1: the trailing CRC-16
 }
 
 TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
@@ -92,9 +122,10 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
         throw std::invalid_argument("the image has " + std::to_string(bytes.size()) + " bytes, less than a header");
     for (std::size_t i = 0; i < 4; ++i)
         if (bytes[i] != kMagic[i]) throw std::invalid_argument("not a linearisation table image (no TTLT mark)");
-    if (bytes[4] != kTableImageFormat)
-        throw std::invalid_argument("image format " + std::to_string(bytes[4]) + " is not supported (expected " +
-                                    std::to_string(kTableImageFormat) + ")");
+    const std::uint8_t format = bytes[4];
+    if (format != kTableImageFormat && format != kTableImageFormatCrc16)
+        throw std::invalid_argument("image format " + std::to_string(format) +
+                                    " is not supported (this program reads formats 1 and 2)");
     if (bytes[5] != kTableImageHeaderBytes) throw std::invalid_argument("image header size is wrong");
     const int bits = bytes[6];
     if (bits < kMinAdcBits || bits > kMaxAdcBits)
@@ -104,16 +135,18 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
     if (count != (std::uint64_t{1} << bits))
         throw std::invalid_argument("image entry count " + std::to_string(count) + " does not match " +
                                     std::to_string(bits) + " bits");
-    const std::size_t expected = kTableImageHeaderBytes + 2 * count + 2;
+    const std::size_t expected = tableImageBytes(bits, format);
     if (bytes.size() != expected)
         throw std::invalid_argument("the image has " + std::to_string(bytes.size()) + " bytes, expected " +
                                     std::to_string(expected));
-    const std::uint16_t carried = tableImageCrc(bytes);
-    const std::uint16_t computed = crc16Ccitt(bytes.first(bytes.size() - 2));
+    const std::uint32_t carried = tableImageCrc(bytes);
+    const std::uint32_t computed =
+        format == kTableImageFormatCrc16 ? crc16Ccitt(bytes.first(bytes.size() - 2)) : format2Crc(bytes);
     if (carried != computed)
-        throw std::invalid_argument("CRC mismatch: image says " + hex16(carried) + ", content gives " +
-                                    hex16(computed));
+        throw std::invalid_argument("CRC mismatch: image says " + crcText(carried, crcBits(format)) +
+                                    ", content gives " + crcText(computed, crcBits(format)));
     TableImage image;
+    image.format = format;
     image.crc = carried;
     image.info.plane = bytes[7];
     image.info.version = static_cast<std::uint16_t>(get(bytes, 8, 2));
@@ -128,8 +161,17 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
     return image;
 }
 
-std::uint16_t tableUploadCrc(std::span<const std::uint8_t> image) {
-    return crc16Ccitt(image);
+std::uint32_t tableUploadCrc(std::span<const std::uint8_t> image) {
+    return crc32c(image);
+}
+
+std::string crcText(std::uint32_t crc, int bits) {
+    char buf[16];
+    if (bits == 16 && crc <= 0xFFFF)
+        std::snprintf(buf, sizeof buf, "0x%04X", static_cast<unsigned>(crc));
+    else
+        std::snprintf(buf, sizeof buf, "0x%08X", static_cast<unsigned>(crc));
+    return buf;
 }
 
 std::string tableToCsv(const LinearisationTable& table) {
@@ -157,7 +199,8 @@ std::string tableToCHeader(const LinearisationTable& table, const TableImageInfo
         << "#define TT_LIN_TABLE_SCALE_NM " << table.scaleNm << "\n"
         << "#define TT_LIN_TABLE_VERSION " << info.version << "u\n"
         << "#define TT_LIN_TABLE_CREATED " << info.createdUnixS << "LL\n"
-        << "#define TT_LIN_TABLE_IMAGE_CRC " << hex16(tableImageCrc(image)) << "u\n\n"
+        << "#define TT_LIN_TABLE_IMAGE_FORMAT " << int(kTableImageFormat) << "\n"
+        << "#define TT_LIN_TABLE_IMAGE_CRC " << crcText(tableImageCrc(image)) << "u /* CRC-32C */\n\n"
         << "static const int16_t tt_lin_table[TT_LIN_TABLE_ENTRIES] = {\n";
     for (std::size_t c = 0; c < table.entries.size(); ++c) {
         if (c % 12 == 0) out << "   ";

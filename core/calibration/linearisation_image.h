@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -18,38 +19,58 @@ struct TableImageInfo {
     std::uint8_t degree = 0;        ///< degree of the fitted characteristic
 };
 
-/// The binary image's fixed values.
-inline constexpr std::uint8_t kTableImageFormat = 1;
+/// The binary image's fixed values. Format 2 (written by default) carries a CRC-32C of the whole
+/// image in the header; format 1 (the first release, up to 14-bit tables on probe protocol 1)
+/// ends in a CRC-16. Both are read.
+inline constexpr std::uint8_t kTableImageFormat = 2;
+inline constexpr std::uint8_t kTableImageFormatCrc16 = 1;
 inline constexpr std::size_t kTableImageHeaderBytes = 32;
 
 /// A decoded image: the table, its identification and the CRC it carries.
 struct TableImage {
     TableImageInfo info;
     LinearisationTable table;
-    std::uint16_t crc = 0;  ///< CRC-16/CCITT-FALSE of header + entries (what the mandrel reports back)
+    std::uint8_t format = kTableImageFormat;
+    std::uint32_t crc = 0;  ///< format 2: CRC-32C at offset 28; format 1: the trailing CRC-16/CCITT-FALSE
 };
 
-/// The image uploaded to the mandrel over the probe protocol: 32-byte header, 2^bits int16
-/// entries, CRC-16/CCITT-FALSE; all little-endian. Layout: docs/protocols/linearisation-table.md.
-std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info);
+/// Size of an image of a `adcBits` table in `format`, bytes (format 2: 32 + 2 · 2^bits; format 1:
+/// two more for the trailing CRC). Throws std::invalid_argument for bits outside 10..16 or an
+/// unknown format.
+std::size_t tableImageBytes(int adcBits, std::uint8_t format = kTableImageFormat);
 
-/// Decodes and checks an image (magic, format, sizes, bits, CRC); throws std::invalid_argument
-/// saying what is wrong ("CRC mismatch: image says 0x1A2B, content gives 0x3C4D").
+/// The image uploaded to the mandrel over the probe protocol: 32-byte header, 2^bits int16
+/// entries, all little-endian; format 2 with the CRC-32C of everything else at offset 28, format 1
+/// with a trailing CRC-16/CCITT-FALSE (for mandrel firmware of probe protocol 1). Layout:
+/// docs/protocols/linearisation-table.md. Throws std::invalid_argument for an inconsistent table
+/// or an unknown format.
+std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info,
+                                           std::uint8_t format = kTableImageFormat);
+
+/// Decodes and checks an image of format 1 or 2 (magic, format, sizes, bits, CRC); throws
+/// std::invalid_argument saying what is wrong ("CRC mismatch: image says 0x1A2B3C4D, content
+/// gives 0x…").
 TableImage decodeTableImage(std::span<const std::uint8_t> bytes);
 
-/// The CRC an image carries (its last two bytes); throws std::invalid_argument when too short.
-std::uint16_t tableImageCrc(std::span<const std::uint8_t> bytes);
+/// The CRC an image carries (format 2: the CRC-32C at offset 28; format 1, and
+/// anything else: the last two bytes); throws std::invalid_argument when fewer than two bytes.
+std::uint32_t tableImageCrc(std::span<const std::uint8_t> bytes);
 
-/// The CRC the probe protocol announces for an upload and the mandrel reports back
-/// (TABLE_BEGIN / TABLE_INFO): CRC-16/CCITT-FALSE of every byte of the image, its own trailing
-/// CRC included (the image is opaque to the protocol).
-std::uint16_t tableUploadCrc(std::span<const std::uint8_t> image);
+/// The CRC the probe protocol announces for an upload and the mandrel reports back (protocol 2:
+/// TABLE_BEGIN_32 / TABLE_INFO_32): CRC-32C of every byte of the image, its own CRC included
+/// (the image is opaque to the protocol).
+std::uint32_t tableUploadCrc(std::span<const std::uint8_t> image);
+
+/// Printable CRC: "0x1A2B3C4D" (8 hex digits), or "0x1A2B" for a value that fits 16 bits when
+/// `bits` is 16.
+std::string crcText(std::uint32_t crc, int bits = 32);
 
 /// The table as CSV: header `adc_code,deflection_um`, one row per code.
 std::string tableToCsv(const LinearisationTable& table);
 
 /// The table as a C header for the mandrel's microcontroller (C99, <stdint.h>): the entries as
-/// `static const int16_t`, the scale, the size, the version and the image CRC as macros.
+/// `static const int16_t`, the scale, the size, the version, the image format and the CRC-32C of
+/// the format-2 image of the same table as macros.
 std::string tableToCHeader(const LinearisationTable& table, const TableImageInfo& info);
 
 }  // namespace tt::core

@@ -2,4 +2,5 @@
 target_sources(trueturn_core PRIVATE
     common/crc16.cpp
     common/text_format.cpp
+    common/crc32c.cpp
 )

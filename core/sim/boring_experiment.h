@@ -33,7 +33,7 @@ struct ProbeCalibrationSummary {
     int degree = 0;
     double rmsResidualUm = 0.0;
     double maxTableErrorUm = 0.0;
-    std::uint16_t imageCrc = 0;
+    std::uint32_t imageCrc = 0;  ///< CRC-32C the loaded table image carries (format 2)
 };
 
 /// Result of one simulated boring pass (issue 6, `trueturn boring`).

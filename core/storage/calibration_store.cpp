@@ -13,8 +13,8 @@ QString nowText() {
     return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
 }
 
-QVariant nullableInt(const std::optional<int>& v) {
-    return v ? QVariant(*v) : QVariant(QMetaType::fromType<int>());
+QVariant nullableInt(const std::optional<qint64>& v) {
+    return v ? QVariant(*v) : QVariant(QMetaType::fromType<qint64>());
 }
 
 const char* kTableColumns =
@@ -36,11 +36,11 @@ ProbeTableRecord readTable(const QSqlQuery& q) {
     r.maxTableErrorUm = q.value(10).toDouble();
     r.pointsCsv = q.value(11).toString();
     r.image = q.value(12).toByteArray();
-    r.imageCrc = q.value(13).toInt();
-    r.uploadCrc = q.value(14).toInt();
+    r.imageCrc = q.value(13).toLongLong();
+    r.uploadCrc = q.value(14).toLongLong();
     r.uploadedAt = q.value(15).toString();
     r.uploadedBy = q.value(16).toString();
-    if (!q.value(17).isNull()) r.readbackCrc = q.value(17).toInt();
+    if (!q.value(17).isNull()) r.readbackCrc = q.value(17).toLongLong();
     r.verified = q.value(18).toInt() != 0;
     return r;
 }
@@ -63,6 +63,15 @@ SchemaModule calibrationSchema() {
                  "CREATE TABLE kp_calibrations (id {pk}, created_at TEXT NOT NULL, created_by TEXT NOT NULL,"
                  " drive TEXT NOT NULL, kp_n_per_a {real} NOT NULL, offset_n {real} NOT NULL, r2 {real} NOT NULL,"
                  " points_csv TEXT NOT NULL, applied_to TEXT NOT NULL)"));
+         }});
+    // CRC-32C values (table image format 2, probe protocol 2) exceed a 32-bit signed integer.
+    // SQLite's INTEGER already holds 64 bits; PostgreSQL's is 32-bit.
+    module.migrations.push_back(
+        {2, QStringLiteral("64-bit CRC columns for CRC-32C"), [](Database& db) {
+             if (!db.isPostgres()) return;
+             db.exec(
+                 QStringLiteral("ALTER TABLE probe_tables ALTER COLUMN image_crc TYPE BIGINT,"
+                                " ALTER COLUMN upload_crc TYPE BIGINT, ALTER COLUMN readback_crc TYPE BIGINT"));
          }});
     return module;
 }
@@ -97,7 +106,8 @@ ProbeTableRecord CalibrationStore::saveTable(ProbeTableRecord r) {
     return r;
 }
 
-void CalibrationStore::recordUpload(qint64 tableId, const QString& who, std::optional<int> readbackCrc, bool verified) {
+void CalibrationStore::recordUpload(qint64 tableId, const QString& who, std::optional<qint64> readbackCrc,
+                                    bool verified) {
     m_db.exec(QStringLiteral("UPDATE probe_tables SET uploaded_at = ?, uploaded_by = ?, readback_crc = ?, verified = ?"
                              " WHERE id = ?"),
               {nowText(), who, nullableInt(readbackCrc), verified ? 1 : 0, tableId});

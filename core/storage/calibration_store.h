@@ -27,14 +27,14 @@ struct ProbeTableRecord {
     QString coefficients;  ///< "c0 c1 c2 ..." (code = Σ c_i d_µm^i), 17 digits
     double rmsResidualUm = 0.0;
     double maxTableErrorUm = 0.0;
-    QString pointsCsv;   ///< the calibration points (reference_um,adc_code)
-    QByteArray image;    ///< the binary table image (docs/protocols/linearisation-table.md)
-    int imageCrc = 0;    ///< CRC-16 the image carries
-    int uploadCrc = 0;   ///< CRC-16 of the whole image, announced in the upload
-    QString uploadedAt;  ///< empty until uploaded
+    QString pointsCsv;     ///< the calibration points (reference_um,adc_code)
+    QByteArray image;      ///< the binary table image (docs/protocols/linearisation-table.md)
+    qint64 imageCrc = 0;   ///< CRC the image carries (format 2: CRC-32C; format 1: CRC-16)
+    qint64 uploadCrc = 0;  ///< CRC-32C of the whole image, kept to check it before an upload
+    QString uploadedAt;    ///< empty until uploaded
     QString uploadedBy;
-    std::optional<int> readbackCrc;  ///< what the mandrel reported after the upload
-    bool verified = false;           ///< read-back version and CRC matched the image
+    std::optional<qint64> readbackCrc;  ///< what the mandrel reported (CRC-32C; CRC-16 from a protocol-1 mandrel)
+    bool verified = false;              ///< read-back version and CRC matched the image
 };
 
 /// One k_p calibration from known loads.
@@ -62,7 +62,7 @@ public:
     /// std::invalid_argument for an empty probe name, creator or image.
     ProbeTableRecord saveTable(ProbeTableRecord record);
     /// Records an upload and what the mandrel reported back.
-    void recordUpload(qint64 tableId, const QString& who, std::optional<int> readbackCrc, bool verified);
+    void recordUpload(qint64 tableId, const QString& who, std::optional<qint64> readbackCrc, bool verified);
     /// Every table of a probe (all probes when empty), newest first.
     std::vector<ProbeTableRecord> tables(const QString& probe = {});
 

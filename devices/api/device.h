@@ -45,26 +45,40 @@ struct TableUploadStatus {
     QString message;        ///< what is happening or why it failed
 };
 
-/// The table the probe mandrel reports (version and CRC-16 of its stored image).
+/// The table the probe mandrel reports: version, CRC-16 of its stored image (every protocol) and
+/// CRC-32C (probe protocol 2).
 struct MandrelTableInfo {
     std::uint16_t version = 0;
-    std::uint16_t crc = 0;
+    std::uint16_t crc = 0;  ///< CRC-16/CCITT-FALSE of the stored image
     std::uint32_t sizeBytes = 0;
     bool valid = false;
+    std::optional<std::uint32_t> crc32c;  ///< CRC-32C of the stored image; protocol 2 only
+};
+
+/// What the probe mandrel says about itself (probe protocol 2's DEVICE_INFO); a mandrel of the
+/// first protocol says only that it is one.
+struct MandrelInfo {
+    int protocol = 1;
+    std::optional<int> adcBits;       ///< its ADC resolution, when it says
+    std::uint32_t maxTableBytes = 0;  ///< largest table image it stores, bytes
 };
 
 /// Uploading the linearisation table (ADC code -> deflection, built by core/calibration) into
 /// the probe mandrel's microcontroller. The image is opaque to the device: it is chunked,
-/// sent, CRC-checked by the mandrel and verified by reading back its version and CRC.
+/// sent, CRC-checked by the mandrel and verified by reading back its version and CRC (CRC-32C on
+/// protocol 2, up to 256 KiB; CRC-16 on protocol 1, up to 64 KiB).
 class TableUploadTarget {
 public:
     virtual ~TableUploadTarget() = default;
-    /// Starts the upload (returns at once; follow uploadStatus()). Throws std::invalid_argument
-    /// when the image is empty, too large or its CRC-16 is not `crc`.
-    virtual void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) = 0;
+    /// Starts the upload (returns at once; follow uploadStatus()). `crc32c` is the CRC-32C of the
+    /// whole image as the caller has it on record. Throws std::invalid_argument when the image is
+    /// empty, too large for the mandrel or its CRC-32C is not `crc32c`.
+    virtual void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) = 0;
     virtual TableUploadStatus uploadStatus() const = 0;
     /// What the mandrel last reported; nullopt before it answered.
     virtual std::optional<MandrelTableInfo> tableInfo() const = 0;
+    /// The mandrel's protocol, ADC and capacity; nullopt until the handshake found out.
+    virtual std::optional<MandrelInfo> mandrelInfo() const = 0;
 };
 
 /// Inputs of the built-in simulator's devices, so a lathe simulator can drive them: the true

@@ -18,7 +18,17 @@ TableUploadStatus toUploadStatus(const probe::ProbeSession::UploadState& state) 
 
 std::optional<MandrelTableInfo> toTableInfo(const std::optional<probe::TableInfoPayload>& info) {
     if (!info) return std::nullopt;
-    return MandrelTableInfo{info->version, info->crc, info->sizeBytes, info->valid};
+    return MandrelTableInfo{info->version, info->crc, info->sizeBytes, info->valid, info->crc32c};
+}
+
+std::optional<MandrelInfo> toMandrelInfo(const probe::ProbeSession& session) {
+    const auto& mandrel = session.mandrel();
+    if (!mandrel) return std::nullopt;
+    MandrelInfo info;
+    info.protocol = mandrel->protocol;
+    info.maxTableBytes = static_cast<std::uint32_t>(mandrel->maxTableBytes);
+    if (const auto& device = session.deviceInfo()) info.adcBits = device->adcBits;
+    return info;
 }
 
 QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::uint64_t queueOverflow) {
@@ -32,14 +42,28 @@ QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::
         {QStringLiteral("Commands resent"), QString::number(session.resends())},
     };
     if (queueOverflow > 0) list.append({QStringLiteral("Samples not taken in time"), QString::number(queueOverflow)});
+    if (const auto& mandrel = session.mandrel())
+        list.append({QStringLiteral("Protocol"), mandrel->protocol >= 2
+                                                     ? QStringLiteral("%1 (tables up to %2 KiB, CRC-32C)")
+                                                           .arg(mandrel->protocol)
+                                                           .arg(mandrel->maxTableBytes / 1024)
+                                                     : QStringLiteral("1 (tables up to 64 KiB, CRC-16)")});
     if (const auto& info = session.tableInfo())
-        list.append({QStringLiteral("Linearisation table"),
-                     info->valid
-                         ? QStringLiteral("version %1, CRC 0x%2, %3 bytes")
-                               .arg(info->version)
-                               .arg(QString::number(info->crc, 16).toUpper().rightJustified(4, QLatin1Char('0')))
-                               .arg(info->sizeBytes)
-                         : QStringLiteral("none (raw ADC codes only)")});
+        list.append(
+            {QStringLiteral("Linearisation table"),
+             info->valid
+                 ? QStringLiteral("version %1, %2, %3 bytes")
+                       .arg(info->version)
+                       .arg(
+                           info->crc32c
+                               ? QStringLiteral("CRC-32C 0x%1")
+                                     .arg(QString::number(*info->crc32c, 16)
+                                              .toUpper()
+                                              .rightJustified(8, QLatin1Char('0')))
+                               : QStringLiteral("CRC 0x%1")
+                                     .arg(QString::number(info->crc, 16).toUpper().rightJustified(4, QLatin1Char('0'))))
+                       .arg(info->sizeBytes)
+                 : QStringLiteral("none (raw ADC codes only)")});
     return list;
 }
 

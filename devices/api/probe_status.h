@@ -12,6 +12,8 @@ namespace tt::devices {
 TableUploadStatus toUploadStatus(const probe::ProbeSession::UploadState& state);
 /// The device-API view of the table the mandrel reported.
 std::optional<MandrelTableInfo> toTableInfo(const std::optional<probe::TableInfoPayload>& info);
+/// The device-API view of what the session knows about the mandrel.
+std::optional<MandrelInfo> toMandrelInfo(const probe::ProbeSession& session);
 /// The Devices page counters of a probe session (frames, lost, duplicated, corrupt, ...).
 QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::uint64_t queueOverflow);
 

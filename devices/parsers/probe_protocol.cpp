@@ -1,9 +1,11 @@
 #include "devices/parsers/probe_protocol.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 #include "devices/parsers/byte_codec.h"
 
 namespace tt::devices::probe {
@@ -13,6 +15,12 @@ namespace {
 std::string hex16(std::uint16_t v) {
     char text[8];
     std::snprintf(text, sizeof text, "0x%04X", v);
+    return text;
+}
+
+std::string hex32(std::uint32_t v) {
+    char text[12];
+    std::snprintf(text, sizeof text, "0x%08X", static_cast<unsigned>(v));
     return text;
 }
 
@@ -32,6 +40,10 @@ std::string messageTypeName(std::uint8_t type) {
             return "ACK";
         case MessageType::TableInfo:
             return "TABLE_INFO";
+        case MessageType::DeviceInfo:
+            return "DEVICE_INFO";
+        case MessageType::TableInfo32:
+            return "TABLE_INFO_32";
         case MessageType::StartStream:
             return "START_STREAM";
         case MessageType::StopStream:
@@ -46,6 +58,12 @@ std::string messageTypeName(std::uint8_t type) {
             return "TABLE_CHUNK";
         case MessageType::TableCommit:
             return "TABLE_COMMIT";
+        case MessageType::ReadDeviceInfo:
+            return "READ_DEVICE_INFO";
+        case MessageType::TableBegin32:
+            return "TABLE_BEGIN_32";
+        case MessageType::ReadTableInfo32:
+            return "READ_TABLE_INFO_32";
     }
     char text[16];
     std::snprintf(text, sizeof text, "type 0x%02X", type);
@@ -146,7 +164,8 @@ std::vector<std::uint8_t> encodeTableInfo(const TableInfoPayload& info) {
 }
 
 ParseResult<TableInfoPayload> decodeTableInfo(std::span<const std::uint8_t> payload) {
-    if (payload.size() != 9) return wrongLength<TableInfoPayload>("TABLE_INFO", payload.size(), "9");
+    if (payload.size() != kTableInfoPayloadBytes)
+        return wrongLength<TableInfoPayload>("TABLE_INFO", payload.size(), "9");
     ByteReader r(payload);
     TableInfoPayload info;
     info.version = r.u16();
@@ -157,6 +176,64 @@ ParseResult<TableInfoPayload> decodeTableInfo(std::span<const std::uint8_t> payl
         return ParseResult<TableInfoPayload>::failure("TABLE_INFO has unknown flags " + std::to_string(flags));
     info.valid = flags == 1;
     return ParseResult<TableInfoPayload>::success(info);
+}
+
+std::vector<std::uint8_t> encodeTableInfo32(const TableInfoPayload& info) {
+    if (!info.crc32c) throw std::invalid_argument("TABLE_INFO_32 needs the CRC-32C of the stored image");
+    ByteWriter w;
+    w.u16(info.version);
+    w.u32(*info.crc32c);
+    w.u16(info.crc);
+    w.u32(info.sizeBytes);
+    w.u8(info.valid ? 1 : 0);
+    return w.take();
+}
+
+ParseResult<TableInfoPayload> decodeTableInfo32(std::span<const std::uint8_t> payload) {
+    if (payload.size() != kTableInfo32PayloadBytes)
+        return wrongLength<TableInfoPayload>("TABLE_INFO_32", payload.size(), "13");
+    ByteReader r(payload);
+    TableInfoPayload info;
+    info.version = r.u16();
+    info.crc32c = r.u32();
+    info.crc = r.u16();
+    info.sizeBytes = r.u32();
+    const std::uint8_t flags = r.u8();
+    if (flags > 1)
+        return ParseResult<TableInfoPayload>::failure("TABLE_INFO_32 has unknown flags " + std::to_string(flags));
+    info.valid = flags == 1;
+    return ParseResult<TableInfoPayload>::success(info);
+}
+
+std::vector<std::uint8_t> encodeDeviceInfo(const DeviceInfoPayload& info) {
+    ByteWriter w;
+    w.u8(info.protocol);
+    w.u8(info.adcBits);
+    w.u32(info.maxTableBytes);
+    return w.take();
+}
+
+ParseResult<DeviceInfoPayload> decodeDeviceInfo(std::span<const std::uint8_t> payload) {
+    if (payload.size() != kDeviceInfoPayloadBytes)
+        return wrongLength<DeviceInfoPayload>("DEVICE_INFO", payload.size(), "6");
+    ByteReader r(payload);
+    DeviceInfoPayload info;
+    info.protocol = r.u8();
+    info.adcBits = r.u8();
+    info.maxTableBytes = r.u32();
+    if (info.protocol < 2)
+        return ParseResult<DeviceInfoPayload>::failure("DEVICE_INFO names protocol " + std::to_string(info.protocol) +
+                                                       "; it exists from protocol 2 on");
+    if (info.adcBits < 8 || info.adcBits > 24)
+        return ParseResult<DeviceInfoPayload>::failure("DEVICE_INFO gives an ADC of " + std::to_string(info.adcBits) +
+                                                       " bits, outside 8 .. 24");
+    if (info.maxTableBytes == 0)
+        return ParseResult<DeviceInfoPayload>::failure("DEVICE_INFO says the mandrel stores no table");
+    return ParseResult<DeviceInfoPayload>::success(info);
+}
+
+MandrelCapabilities MandrelCapabilities::from(const DeviceInfoPayload& info) {
+    return {info.protocol, std::min<std::size_t>(info.maxTableBytes, kMaxTableBytes32)};
 }
 
 std::vector<std::uint8_t> encodeTableBegin(const TableBeginPayload& begin) {
@@ -175,6 +252,25 @@ ParseResult<TableBeginPayload> decodeTableBegin(std::span<const std::uint8_t> pa
     b.crc = r.u16();
     b.sizeBytes = r.u32();
     return ParseResult<TableBeginPayload>::success(b);
+}
+
+std::vector<std::uint8_t> encodeTableBegin32(const TableBegin32Payload& begin) {
+    ByteWriter w;
+    w.u16(begin.version);
+    w.u32(begin.crc32c);
+    w.u32(begin.sizeBytes);
+    return w.take();
+}
+
+ParseResult<TableBegin32Payload> decodeTableBegin32(std::span<const std::uint8_t> payload) {
+    if (payload.size() != kTableBegin32PayloadBytes)
+        return wrongLength<TableBegin32Payload>("TABLE_BEGIN_32", payload.size(), "10");
+    ByteReader r(payload);
+    TableBegin32Payload b;
+    b.version = r.u16();
+    b.crc32c = r.u32();
+    b.sizeBytes = r.u32();
+    return ParseResult<TableBegin32Payload>::success(b);
 }
 
 std::vector<std::uint8_t> encodeTableChunk(const TableChunkPayload& chunk) {
@@ -306,27 +402,53 @@ void FrameReader::reset() {
 
 // ---- TableUploader ----
 
-TableUploader::TableUploader(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc,
-                             std::size_t chunkBytes)
-    : m_image(std::move(image)), m_version(version), m_crc(crc), m_chunkBytes(chunkBytes) {
+namespace {
+
+std::string tooLarge(std::size_t size, const MandrelCapabilities& mandrel) {
+    std::string text = "linearisation table upload: the image has " + std::to_string(size) + " bytes; the mandrel";
+    if (mandrel.protocol < 2)
+        return text + " speaks probe protocol 1, which stores at most 65536 bytes (tables of up to 14 bits); a " +
+               "table of 15 or 16 bits needs mandrel firmware of protocol 2";
+    return text + " stores at most " + std::to_string(mandrel.maxTableBytes);
+}
+
+}  // namespace
+
+TableUploader::TableUploader(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c,
+                             const MandrelCapabilities& mandrel, std::size_t chunkBytes)
+    : m_image(std::move(image)),
+      m_version(version),
+      m_crc32c(crc32c),
+      m_crc16(0),
+      m_mandrel(mandrel),
+      m_chunkBytes(chunkBytes) {
     if (m_image.empty()) throw std::invalid_argument("linearisation table upload: the table image is empty");
-    if (m_image.size() > kMaxTableBytes)
-        throw std::invalid_argument("linearisation table upload: the image has " + std::to_string(m_image.size()) +
-                                    " bytes; the mandrel stores at most 65536");
+    if (m_image.size() > m_mandrel.maxTableBytes) throw std::invalid_argument(tooLarge(m_image.size(), m_mandrel));
     if (m_chunkBytes == 0 || m_chunkBytes > kMaxChunkBytes)
         throw std::invalid_argument("linearisation table upload: chunks must hold 1 to 128 bytes");
-    const std::uint16_t actual = core::crc16Ccitt(m_image);
-    if (actual != m_crc)
-        throw std::invalid_argument("linearisation table upload: the image's CRC is " + hex16(actual) +
-                                    ", not the stated " + hex16(m_crc) + "; the image is corrupt");
+    const std::uint32_t actual = core::crc32c(m_image);
+    if (actual != m_crc32c)
+        throw std::invalid_argument("linearisation table upload: the image's CRC-32C is " + hex32(actual) +
+                                    ", not the stated " + hex32(m_crc32c) + "; the image is corrupt");
+    m_crc16 = core::crc16Ccitt(m_image);
     m_chunkCount = (m_image.size() + m_chunkBytes - 1) / m_chunkBytes;
 }
 
+void TableUploader::setMandrel(const MandrelCapabilities& mandrel) {
+    if (m_phase != Phase::Begin) return;
+    m_mandrel = mandrel;
+    if (m_image.size() > m_mandrel.maxTableBytes) fail(tooLarge(m_image.size(), m_mandrel));
+}
+
 TableUploader::Command TableUploader::current() const {
+    const bool wide = m_mandrel.protocol >= 2;
     switch (m_phase) {
         case Phase::Begin:
+            if (wide)
+                return {MessageType::TableBegin32,
+                        encodeTableBegin32({m_version, m_crc32c, static_cast<std::uint32_t>(m_image.size())})};
             return {MessageType::TableBegin,
-                    encodeTableBegin({m_version, m_crc, static_cast<std::uint32_t>(m_image.size())})};
+                    encodeTableBegin({m_version, m_crc16, static_cast<std::uint32_t>(m_image.size())})};
         case Phase::Chunks: {
             const std::size_t offset = m_nextChunk * m_chunkBytes;
             const std::size_t size = std::min(m_chunkBytes, m_image.size() - offset);
@@ -339,7 +461,7 @@ TableUploader::Command TableUploader::current() const {
         case Phase::Commit:
             return {MessageType::TableCommit, {}};
         case Phase::Verify:
-            return {MessageType::ReadTableInfo, {}};
+            return {wide ? MessageType::ReadTableInfo32 : MessageType::ReadTableInfo, {}};
         case Phase::Done:
         case Phase::Failed:
             break;
@@ -382,10 +504,15 @@ void TableUploader::onAck(const AckPayload& ack) {
 
 void TableUploader::onTableInfo(const TableInfoPayload& info) {
     if (m_phase != Phase::Verify) return;
-    if (!info.valid || info.version != m_version || info.crc != m_crc || info.sizeBytes != m_image.size()) {
-        fail("verification failed: the mandrel reports table version " + std::to_string(info.version) + ", CRC " +
-             hex16(info.crc) + ", " + std::to_string(info.sizeBytes) + " bytes" + (info.valid ? "" : " (invalid)") +
-             "; expected version " + std::to_string(m_version) + ", CRC " + hex16(m_crc) + ", " +
+    const bool wide = m_mandrel.protocol >= 2;
+    if (wide && !info.crc32c) return;  // a plain TABLE_INFO (e.g. asked for by Test connection): wait for ours
+    const bool crcMatches = wide ? *info.crc32c == m_crc32c : info.crc == m_crc16;
+    if (!info.valid || info.version != m_version || !crcMatches || info.sizeBytes != m_image.size()) {
+        const std::string got = wide ? "CRC-32C " + hex32(*info.crc32c) : "CRC " + hex16(info.crc);
+        const std::string expected = wide ? "CRC-32C " + hex32(m_crc32c) : "CRC " + hex16(m_crc16);
+        fail("verification failed: the mandrel reports table version " + std::to_string(info.version) + ", " + got +
+             ", " + std::to_string(info.sizeBytes) + " bytes" + (info.valid ? "" : " (invalid)") +
+             "; expected version " + std::to_string(m_version) + ", " + expected + ", " +
              std::to_string(m_image.size()) + " bytes");
         return;
     }

@@ -13,14 +13,19 @@ std::string seconds(double s) {
     return text;
 }
 
-std::string hex16(std::uint16_t v) {
-    char text[8];
-    std::snprintf(text, sizeof text, "0x%04X", v);
+/// "CRC-32C 0x1A2B3C4D" when the mandrel reported one, else "CRC 0x1A2B".
+std::string crcText(const TableInfoPayload& info) {
+    char text[32];
+    if (info.crc32c)
+        std::snprintf(text, sizeof text, "CRC-32C 0x%08X", static_cast<unsigned>(*info.crc32c));
+    else
+        std::snprintf(text, sizeof text, "CRC 0x%04X", static_cast<unsigned>(info.crc));
     return text;
 }
 
 bool isUploadCommand(MessageType type) {
-    return type == MessageType::TableBegin || type == MessageType::TableChunk || type == MessageType::TableCommit;
+    return type == MessageType::TableBegin || type == MessageType::TableBegin32 || type == MessageType::TableChunk ||
+           type == MessageType::TableCommit;
 }
 
 }  // namespace
@@ -53,6 +58,9 @@ void ProbeSession::start(double nowS) {
     m_reader.reset();
     m_queue.clear();
     m_outstanding.reset();
+    m_deviceInfo.reset();
+    m_mandrel.reset();  // the mandrel may have been exchanged or re-flashed while the port was closed
+    m_queue.push_back({MessageType::ReadDeviceInfo, {}});
     m_queue.push_back({MessageType::ReadTableInfo, {}});
     m_queue.push_back({MessageType::SetRate, encodeRate(m_config.rateHz)});
     m_queue.push_back({MessageType::StartStream, {}});
@@ -74,12 +82,14 @@ void ProbeSession::stop(double) {
 }
 
 void ProbeSession::requestTableInfo() {
-    m_queue.push_back({MessageType::ReadTableInfo, {}});
+    m_queue.push_back({MessageType::ReadTableInfo, {}});  // becomes READ_TABLE_INFO_32 for protocol 2 when sent
 }
 
-void ProbeSession::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
+void ProbeSession::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
     if (m_uploader && !m_uploader->finished()) throw std::logic_error("a table upload is already running");
-    m_uploader.emplace(std::move(image), version, crc);
+    // Until the handshake has found the mandrel's protocol, assume the newest; the uploader is
+    // told before it sends anything (the handshake runs first).
+    m_uploader.emplace(std::move(image), version, crc32c, m_mandrel.value_or(MandrelCapabilities{}));
 }
 
 ProbeSession::UploadState ProbeSession::uploadState() const {
@@ -91,9 +101,9 @@ ProbeSession::UploadState ProbeSession::uploadState() const {
     switch (m_uploader->phase()) {
         case TableUploader::Phase::Done:
             s.message =
-                "table uploaded and verified" + (m_tableInfo ? " (version " + std::to_string(m_tableInfo->version) +
-                                                                   ", CRC " + hex16(m_tableInfo->crc) + ")"
-                                                             : std::string());
+                "table uploaded and verified" +
+                (m_tableInfo ? " (version " + std::to_string(m_tableInfo->version) + ", " + crcText(*m_tableInfo) + ")"
+                             : std::string());
             break;
         case TableUploader::Phase::Failed:
             s.message = "table upload failed: " + m_uploader->failure();
@@ -139,6 +149,8 @@ std::vector<std::uint8_t> ProbeSession::poll(double nowS) {
         if (!m_queue.empty()) {
             m_outstanding = m_queue.front();
             m_queue.pop_front();
+            if (m_outstanding->type == MessageType::ReadTableInfo && m_mandrel && m_mandrel->protocol >= 2)
+                m_outstanding->type = MessageType::ReadTableInfo32;
         } else if (m_uploader && !m_uploader->finished() && m_link != Link::Idle) {
             const TableUploader::Command c = m_uploader->current();
             m_outstanding = Pending{c.type, c.payload};
@@ -178,31 +190,31 @@ std::vector<core::ProbeSample> ProbeSession::takeSamples() {
     return out;
 }
 
+template <typename T>
+std::optional<T> ProbeSession::decoded(const ParseResult<T>& result) {
+    if (result) return result.value();
+    ++m_badMessages;
+    m_lastError = result.error();
+    return std::nullopt;
+}
+
 void ProbeSession::handleFrame(const Frame& frame, double nowS) {
     switch (static_cast<MessageType>(frame.type)) {
         case MessageType::Sample:
             handleSample(frame, nowS);
             return;
-        case MessageType::Ack: {
-            const auto ack = decodeAck(frame.payload);
-            if (!ack) {
-                ++m_badMessages;
-                m_lastError = ack.error();
-                return;
-            }
-            handleAck(ack.value());
+        case MessageType::Ack:
+            if (const auto ack = decoded(decodeAck(frame.payload))) handleAck(*ack);
             return;
-        }
-        case MessageType::TableInfo: {
-            const auto info = decodeTableInfo(frame.payload);
-            if (!info) {
-                ++m_badMessages;
-                m_lastError = info.error();
-                return;
-            }
-            handleTableInfo(info.value());
+        case MessageType::TableInfo:
+            if (const auto info = decoded(decodeTableInfo(frame.payload))) handleTableInfo(*info);
             return;
-        }
+        case MessageType::TableInfo32:
+            if (const auto info = decoded(decodeTableInfo32(frame.payload))) handleTableInfo(*info);
+            return;
+        case MessageType::DeviceInfo:
+            if (const auto info = decoded(decodeDeviceInfo(frame.payload))) handleDeviceInfo(*info);
+            return;
         default:
             break;
     }
@@ -247,6 +259,15 @@ void ProbeSession::finishCommand() {
 void ProbeSession::handleAck(const AckPayload& ack) {
     if (!m_outstanding || ack.command != static_cast<std::uint8_t>(m_outstanding->type)) return;  // late ACK
     const MessageType type = m_outstanding->type;
+    if (type == MessageType::ReadDeviceInfo) {
+        // A protocol-1 mandrel does not know the command: that is the answer, not an error.
+        if (ack.result == AckResult::UnknownCommand)
+            learnMandrel(MandrelCapabilities::protocol1());
+        else
+            m_lastError = "the probe mandrel refused READ_DEVICE_INFO: " + std::string(ackResultName(ack.result));
+        finishCommand();
+        return;
+    }
     if (isUploadCommand(type) && m_uploader && !m_uploader->finished()) {
         const auto phaseBefore = m_uploader->phase();
         const double progressBefore = m_uploader->progress();
@@ -267,7 +288,20 @@ void ProbeSession::handleAck(const AckPayload& ack) {
 void ProbeSession::handleTableInfo(const TableInfoPayload& info) {
     m_tableInfo = info;
     if (m_uploader && m_uploader->phase() == TableUploader::Phase::Verify) m_uploader->onTableInfo(info);
-    if (m_outstanding && m_outstanding->type == MessageType::ReadTableInfo) finishCommand();
+    if (m_outstanding &&
+        (m_outstanding->type == MessageType::ReadTableInfo || m_outstanding->type == MessageType::ReadTableInfo32))
+        finishCommand();
+}
+
+void ProbeSession::handleDeviceInfo(const DeviceInfoPayload& info) {
+    m_deviceInfo = info;
+    learnMandrel(MandrelCapabilities::from(info));
+    if (m_outstanding && m_outstanding->type == MessageType::ReadDeviceInfo) finishCommand();
+}
+
+void ProbeSession::learnMandrel(const MandrelCapabilities& mandrel) {
+    m_mandrel = mandrel;
+    if (m_uploader && !m_uploader->finished()) m_uploader->setMandrel(mandrel);
 }
 
 }  // namespace tt::devices::probe

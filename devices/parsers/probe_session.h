@@ -21,8 +21,9 @@ struct SessionConfig {
     double restartAfterS = 1.0;    ///< after giving up, start the handshake again this much later
 };
 
-/// The host side of the probe-mandrel protocol, independent of the wire: the handshake (read
-/// the table info, set the rate, start streaming), one command in flight at a time with
+/// The host side of the probe-mandrel protocol, independent of the wire: the handshake (ask
+/// what the mandrel is, which tells protocol 2 from protocol 1; read the table info, set the
+/// rate, start streaming), one command in flight at a time with
 /// timeouts and resends, decoding of samples (lost, duplicated, corrupt frames never used; an
 /// over-range or excitation-fault sample is counted and dropped), the silence watchdog, and
 /// table uploads (TableUploader). The caller moves bytes: poll() gives what to send, receive()
@@ -32,7 +33,7 @@ class ProbeSession {
 public:
     enum class Link {
         Idle,       ///< not started, or stopped
-        Handshake,  ///< reading the table, setting the rate, starting the stream
+        Handshake,  ///< asking what the mandrel is, reading the table, setting the rate, starting the stream
         Streaming,  ///< samples arrive
         Silent,     ///< streaming but nothing arrived for silenceTimeoutS
         Failed,     ///< a command got no reply after maxTries; restarts after restartAfterS
@@ -67,12 +68,19 @@ public:
     /// The last problem with a frame or a sample (corrupt, refused command), kept.
     const std::string& lastError() const { return m_lastError; }
     const std::optional<TableInfoPayload>& tableInfo() const { return m_tableInfo; }
-    /// Queues READ_TABLE_INFO (e.g. for Test connection).
+    /// Queues READ_TABLE_INFO, or READ_TABLE_INFO_32 for a protocol-2 mandrel (e.g. for Test
+    /// connection).
     void requestTableInfo();
+    /// The mandrel's DEVICE_INFO (protocol 2); nullopt before it answered or for protocol 1.
+    const std::optional<DeviceInfoPayload>& deviceInfo() const { return m_deviceInfo; }
+    /// The mandrel's protocol as far as known (nullopt until the handshake found out).
+    const std::optional<MandrelCapabilities>& mandrel() const { return m_mandrel; }
 
-    /// Starts uploading a linearisation table (see TableUploader; throws std::invalid_argument
-    /// for an empty, oversized or corrupt image, or std::logic_error while one is running).
-    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc);
+    /// Starts uploading a linearisation table, `crc32c` = CRC-32C of the whole image (see
+    /// TableUploader; throws std::invalid_argument for an empty, oversized or corrupt image, or
+    /// std::logic_error while one is running). The upload runs when the handshake has found the
+    /// mandrel's protocol.
+    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c);
     UploadState uploadState() const;
 
     const FrameStats& frameStats() const { return m_reader.stats(); }
@@ -90,6 +98,11 @@ private:
     void handleSample(const Frame& frame, double nowS);
     void handleAck(const AckPayload& ack);
     void handleTableInfo(const TableInfoPayload& info);
+    void handleDeviceInfo(const DeviceInfoPayload& info);
+    void learnMandrel(const MandrelCapabilities& mandrel);
+    /// Decodes a reply payload; counts and records a bad one.
+    template <typename T>
+    std::optional<T> decoded(const ParseResult<T>& result);
     void finishCommand();
     std::vector<std::uint8_t> sendCommand(const Pending& command, double nowS);
     void giveUp(double nowS);
@@ -108,6 +121,8 @@ private:
     double m_restartAtS = 0.0;
     bool m_streamingWanted = false;
     std::optional<TableInfoPayload> m_tableInfo;
+    std::optional<DeviceInfoPayload> m_deviceInfo;
+    std::optional<MandrelCapabilities> m_mandrel;
     std::optional<SamplePayload> m_lastSample;
     std::vector<core::ProbeSample> m_samples;
     std::optional<TableUploader> m_uploader;

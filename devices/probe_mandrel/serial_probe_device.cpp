@@ -75,6 +75,11 @@ void SerialProbeDevice::lost(const QString& reason, bool disconnected) {
 void SerialProbeDevice::bytesArrived(const QByteArray& bytes) {
     const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.constData());
     m_session.receive({data, static_cast<std::size_t>(bytes.size())}, now());
+    // A reply may free the line for the next command (the next chunk of an upload): send it now
+    // rather than at the next tick, so an upload runs at the speed of the line.
+    const std::vector<std::uint8_t> out = m_session.poll(now());
+    if (!out.empty())
+        m_link->write(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())));
 }
 
 void SerialProbeDevice::tick() {
@@ -124,8 +129,8 @@ std::optional<core::ProbeSample> SerialProbeDevice::takeSample() {
     return s;
 }
 
-void SerialProbeDevice::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
-    m_session.uploadTable(std::move(image), version, crc);
+void SerialProbeDevice::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
+    m_session.uploadTable(std::move(image), version, crc32c);
 }
 
 TableUploadStatus SerialProbeDevice::uploadStatus() const {
@@ -134,6 +139,10 @@ TableUploadStatus SerialProbeDevice::uploadStatus() const {
 
 std::optional<MandrelTableInfo> SerialProbeDevice::tableInfo() const {
     return toTableInfo(m_session.tableInfo());
+}
+
+std::optional<MandrelInfo> SerialProbeDevice::mandrelInfo() const {
+    return toMandrelInfo(m_session);
 }
 
 QList<DeviceStatistic> SerialProbeDevice::statistics() const {

@@ -31,9 +31,10 @@ public:
     TableUploadTarget* tableUploadTarget() override { return this; }
     QList<DeviceStatistic> statistics() const override;
 
-    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) override;
+    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) override;
     TableUploadStatus uploadStatus() const override;
     std::optional<MandrelTableInfo> tableInfo() const override;
+    std::optional<MandrelInfo> mandrelInfo() const override;
 
 private:
     void opened();

@@ -3,34 +3,91 @@
 #include <algorithm>
 #include <cmath>
 
+#include <stdexcept>
+
+#include "core/calibration/linearisation_image.h"
+#include "core/calibration/probe_linearisation.h"
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
+#include "core/sim/inductive_probe.h"
 
 namespace tt::devices {
 
 using namespace probe;
 
-MandrelEmulator::MandrelEmulator() {
+namespace {
+
+/// The bridge and ADC of the emulated mandrel (static characteristic only: no noise, no filter).
+const core::InductiveProbe& bridge() {
+    static const core::InductiveProbe probe = [] {
+        core::InductiveProbeConfig c;
+        c.adcBits = MandrelEmulator::kAdcBits;
+        c.fullScaleGapMm = MandrelEmulator::kFullScaleGapMm;
+        c.bridgeCoefficients = {0.0, MandrelEmulator::kLinearTerm, 0.0, MandrelEmulator::kCubicTerm};
+        c.sensorPositionFraction = MandrelEmulator::kSensorPositionFraction;
+        return core::InductiveProbe(c, 1);
+    }();
+    return probe;
+}
+
+}  // namespace
+
+MandrelEmulator::MandrelEmulator(int protocol) : m_protocol(protocol) {
+    if (protocol != 1 && protocol != kProtocolVersion)
+        throw std::invalid_argument("the emulated mandrel speaks probe protocol 1 or 2");
     m_source = [](double) { return std::array<double, 2>{0.020, -0.005}; };
+}
+
+double MandrelEmulator::exactCode(double deflectionMm) {
+    return bridge().staticCode(deflectionMm);
+}
+
+double MandrelEmulator::fullScaleDeflectionMm() {
+    return kFullScaleGapMm / core::sensorToTipRatio(kSensorPositionFraction);
 }
 
 void MandrelEmulator::setDeflectionSource(std::function<std::array<double, 2>(double)> source) {
     if (source) m_source = std::move(source);
 }
 
-std::int32_t MandrelEmulator::adcCode(double deflectionMm) {
-    const double code = kMidCode + kCountsPerMm * deflectionMm + kCubicCountsPerMm3 * std::pow(deflectionMm, 3);
-    return static_cast<std::int32_t>(std::clamp(std::round(code), 0.0, static_cast<double>(kMaxCode)));
+const std::vector<std::uint8_t>& MandrelEmulator::deliveryTableImage() {
+    static const std::vector<std::uint8_t> image = [] {
+        std::vector<core::CalibrationPoint> points;
+        const double spanMm = 0.9 * fullScaleDeflectionMm();
+        for (int i = 0; i <= 40; ++i) {
+            const double mm = -spanMm + 2.0 * spanMm * i / 40.0;
+            points.push_back({mm * 1000.0, exactCode(mm), 0});
+        }
+        const core::Linearisation lin = core::linearise(points, kAdcBits, 3);
+        core::TableImageInfo info;
+        info.version = 1;
+        info.degree = 3;
+        return core::encodeTableImage(lin.table, info);
+    }();
+    return image;
 }
 
-void MandrelEmulator::preloadTable(std::vector<std::uint8_t> image, std::uint16_t version) {
+std::int32_t MandrelEmulator::adcCode(double deflectionMm) {
+    return static_cast<std::int32_t>(
+        std::clamp(std::round(exactCode(deflectionMm)), 0.0, static_cast<double>(kMaxCode)));
+}
+
+void MandrelEmulator::store(std::vector<std::uint8_t> image, std::uint16_t version) {
     m_table = std::move(image);
     m_tableVersion = version;
-    m_tableCrc = core::crc16Ccitt(m_table);
+    m_tableCrc = core::crc16Ccitt(m_table);  // what the flash really holds
+    m_tableCrc32 = core::crc32c(m_table);
     m_tableValid = !m_table.empty();
 }
 
+void MandrelEmulator::preloadTable(std::vector<std::uint8_t> image, std::uint16_t version) {
+    store(std::move(image), version);
+}
+
 TableInfoPayload MandrelEmulator::tableInfo() const {
-    return {m_tableVersion, m_tableCrc, static_cast<std::uint32_t>(m_table.size()), m_tableValid};
+    TableInfoPayload info{m_tableVersion, m_tableCrc, static_cast<std::uint32_t>(m_table.size()), m_tableValid, {}};
+    if (m_protocol >= 2) info.crc32c = m_tableCrc32;
+    return info;
 }
 
 std::vector<std::uint8_t> MandrelEmulator::send(MessageType type, const std::vector<std::uint8_t>& payload) {
@@ -71,6 +128,7 @@ std::vector<std::uint8_t> MandrelEmulator::receive(std::span<const std::uint8_t>
 std::vector<std::uint8_t> MandrelEmulator::handle(const Frame& frame) {
     ++m_commands;
     const std::uint8_t cmd = frame.type;
+    const bool v2 = m_protocol >= 2;
     switch (static_cast<MessageType>(cmd)) {
         case MessageType::StartStream:
             m_streaming = true;
@@ -87,46 +145,84 @@ std::vector<std::uint8_t> MandrelEmulator::handle(const Frame& frame) {
         }
         case MessageType::ReadTableInfo:
             return send(MessageType::TableInfo, encodeTableInfo(tableInfo()));
+        case MessageType::ReadTableInfo32:
+            if (!v2) break;
+            return send(MessageType::TableInfo32, encodeTableInfo32(tableInfo()));
+        case MessageType::ReadDeviceInfo:
+            if (!v2) break;
+            return send(MessageType::DeviceInfo,
+                        encodeDeviceInfo({static_cast<std::uint8_t>(m_protocol), static_cast<std::uint8_t>(kAdcBits),
+                                          static_cast<std::uint32_t>(kMaxTableBytes32)}));
         case MessageType::TableBegin: {
             const auto begin = decodeTableBegin(frame.payload);
             if (!begin) return ack(cmd, AckResult::BadLength);
-            if (begin->sizeBytes == 0 || begin->sizeBytes > kMaxTableBytes) return ack(cmd, AckResult::BadArgument);
-            m_uploading = true;
-            m_upload = begin.value();
-            m_pending.clear();
-            return ack(cmd, AckResult::Ok, 0);
+            m_uploadCrc16 = begin->crc;
+            m_uploadCrc32.reset();
+            return handleBegin(cmd, begin->version, begin->sizeBytes, kMaxTableBytes);
         }
-        case MessageType::TableChunk: {
-            const auto chunk = decodeTableChunk(frame.payload);
-            if (!chunk) return ack(cmd, AckResult::BadLength);
-            const auto received = static_cast<std::uint32_t>(m_pending.size());
-            if (!m_uploading) return ack(cmd, AckResult::NoUpload, received);
-            const auto size = static_cast<std::uint32_t>(chunk->bytes.size());
-            if (chunk->offset + size == received && chunk->offset <= received)  // the last chunk again
-                return ack(cmd, AckResult::Ok, received);
-            if (chunk->offset != received) return ack(cmd, AckResult::OutOfOrder, received);
-            if (received + size > m_upload.sizeBytes) return ack(cmd, AckResult::BadArgument, received);
-            m_pending.insert(m_pending.end(), chunk->bytes.begin(), chunk->bytes.end());
-            return ack(cmd, AckResult::Ok, static_cast<std::uint32_t>(m_pending.size()));
+        case MessageType::TableBegin32: {
+            if (!v2) break;
+            const auto begin = decodeTableBegin32(frame.payload);
+            if (!begin) return ack(cmd, AckResult::BadLength);
+            m_uploadCrc16.reset();
+            m_uploadCrc32 = begin->crc32c;
+            return handleBegin(cmd, begin->version, begin->sizeBytes, kMaxTableBytes32);
         }
-        case MessageType::TableCommit: {
-            if (!m_uploading) return ack(cmd, AckResult::NoUpload);
-            m_uploading = false;
-            if (m_pending.size() != m_upload.sizeBytes) return ack(cmd, AckResult::BadLength);
-            if (core::crc16Ccitt(m_pending) != m_upload.crc) return ack(cmd, AckResult::CrcMismatch);
-            m_table = m_pending;
-            if (m_faultyFlash) m_table[m_table.size() / 2] ^= 0x01;
-            m_tableVersion = m_upload.version;
-            m_tableCrc = core::crc16Ccitt(m_table);  // what the flash really holds
-            m_tableValid = true;
-            return ack(cmd, AckResult::Ok);
-        }
+        case MessageType::TableChunk:
+            return handleChunk(frame);
+        case MessageType::TableCommit:
+            return handleCommit(cmd);
         case MessageType::Sample:
         case MessageType::Ack:
         case MessageType::TableInfo:
+        case MessageType::TableInfo32:
+        case MessageType::DeviceInfo:
             break;
     }
     return ack(cmd, AckResult::UnknownCommand);
+}
+
+std::vector<std::uint8_t> MandrelEmulator::handleBegin(std::uint8_t command, std::uint16_t version,
+                                                       std::uint32_t sizeBytes, std::size_t maxBytes) {
+    if (sizeBytes == 0 || sizeBytes > maxBytes) {
+        m_uploading = false;
+        return ack(command, AckResult::BadArgument);
+    }
+    m_uploading = true;
+    m_uploadVersion = version;
+    m_uploadSize = sizeBytes;
+    m_pending.clear();
+    m_pending.reserve(sizeBytes);
+    return ack(command, AckResult::Ok, 0);
+}
+
+std::vector<std::uint8_t> MandrelEmulator::handleChunk(const Frame& frame) {
+    const std::uint8_t cmd = frame.type;
+    const auto chunk = decodeTableChunk(frame.payload);
+    if (!chunk) return ack(cmd, AckResult::BadLength);
+    const auto received = static_cast<std::uint32_t>(m_pending.size());
+    if (!m_uploading) return ack(cmd, AckResult::NoUpload, received);
+    const auto size = static_cast<std::uint32_t>(chunk->bytes.size());
+    if (chunk->offset + size == received && chunk->offset <= received)  // the last chunk again
+        return ack(cmd, AckResult::Ok, received);
+    if (chunk->offset != received) return ack(cmd, AckResult::OutOfOrder, received);
+    if (received + size > m_uploadSize) return ack(cmd, AckResult::BadArgument, received);
+    m_pending.insert(m_pending.end(), chunk->bytes.begin(), chunk->bytes.end());
+    return ack(cmd, AckResult::Ok, static_cast<std::uint32_t>(m_pending.size()));
+}
+
+std::vector<std::uint8_t> MandrelEmulator::handleCommit(std::uint8_t command) {
+    if (!m_uploading) return ack(command, AckResult::NoUpload);
+    m_uploading = false;
+    if (m_pending.size() != m_uploadSize) return ack(command, AckResult::BadLength);
+    const bool crcMatches =
+        m_uploadCrc32 ? core::crc32c(m_pending) == *m_uploadCrc32 : core::crc16Ccitt(m_pending) == *m_uploadCrc16;
+    if (!crcMatches) return ack(command, AckResult::CrcMismatch);
+    std::vector<std::uint8_t> flash = std::move(m_pending);
+    m_pending.clear();
+    if (m_faultyFlash) flash[flash.size() / 2] ^= 0x01;
+    store(std::move(flash), m_uploadVersion);
+    return ack(command, AckResult::Ok);
 }
 
 SamplePayload MandrelEmulator::makeSample(double timeS) {

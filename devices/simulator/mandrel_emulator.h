@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -15,19 +16,28 @@ namespace tt::devices {
 /// answering with their version and CRC. Used by the simulator's probe and, over a
 /// pseudo-terminal, by the tests of the probe-mandrel plugin. Pure C++, no I/O.
 ///
-/// The sensor model (paper 001): a differential inductive bridge whose static transfer function
-/// is nonlinear but symmetric about the middle, code = mid + k1 d + k3 d^3 (16-bit ADC, clamped,
-/// over-range flagged). With a valid table stored, the linearised deflection reported is the
-/// model's true deflection (the emulator does not interpret the image, whose format belongs to
-/// core/calibration); without one the deflection is 0 and the table-valid bit is clear.
+/// The sensor model (paper 001): the differential inductive bridge of core::InductiveProbe with
+/// a static characteristic symmetric about the middle, bridge ratio r(u) = 1.15 u − 0.15 u³ of the
+/// normalised gap u (monotonic over the whole ADC range: r' = 1.15 − 0.45 u² ≥ 0.70 for |u| ≤ 1,
+/// the turning points at u = ±1.63 lie beyond the ADC's limits), coils at 0.9 of the overhang,
+/// 0.25 mm gap at full scale (±0.294 mm at the tool tip), ratiometric 16-bit ADC, codes clamped
+/// to 0..65535 and over-range flagged. With a valid table stored, the linearised deflection
+/// reported is the model's true deflection (the emulator does not interpret the image, whose
+/// format belongs to core/calibration); without one the deflection is 0 and the table-valid bit
+/// is clear. Speaks probe protocol 2 (DEVICE_INFO, uploads up to 256 KiB with CRC-32C) or, for
+/// tests of older firmware, protocol 1.
 class MandrelEmulator {
 public:
-    static constexpr double kCountsPerMm = 200000.0;      ///< k1: ADC counts per mm of deflection
-    static constexpr double kCubicCountsPerMm3 = -5.0e6;  ///< k3: nonlinearity, counts per mm^3
-    static constexpr std::int32_t kMidCode = 32768;       ///< code at zero deflection
+    static constexpr int kAdcBits = 16;
     static constexpr std::int32_t kMaxCode = 65535;
+    static constexpr double kFullScaleGapMm = 0.25;         ///< gap change at u = ±1
+    static constexpr double kSensorPositionFraction = 0.9;  ///< coils along the overhang (0 clamp .. 1 tip)
+    static constexpr double kLinearTerm = 1.15;             ///< c1 of r(u)
+    static constexpr double kCubicTerm = -0.15;             ///< c3 of r(u)
 
-    MandrelEmulator();
+    /// `protocol` 2 (default) or 1 (firmware of the first protocol: no DEVICE_INFO, uploads up to
+    /// 64 KiB with CRC-16). Throws std::invalid_argument otherwise.
+    explicit MandrelEmulator(int protocol = probe::kProtocolVersion);
 
     /// True deflection of both planes at a time, mm (default: 0.020 mm and -0.005 mm).
     void setDeflectionSource(std::function<std::array<double, 2>(double timeS)> source);
@@ -36,8 +46,16 @@ public:
     /// Advances the emulator's clock by `dtS` seconds; returns the sample frames due.
     std::vector<std::uint8_t> advance(double dtS);
 
-    /// ADC code of a deflection (the bridge model above), clamped to 0..65535.
+    /// ADC code of a tool tip deflection, mm (the bridge model above), rounded, clamped to 0..65535.
     static std::int32_t adcCode(double deflectionMm);
+    /// The same without rounding (what a calibration against a perfect reference sees).
+    static double exactCode(double deflectionMm);
+    /// Tool tip deflection at which the ADC reaches its limits, mm.
+    static double fullScaleDeflectionMm();
+    /// The table a mandrel is delivered with: the bridge above calibrated against a perfect
+    /// reference at 41 points over ±90 % of full scale, fitted with degree 3 (core/calibration)
+    /// and encoded as a format-2 image of 2^16 entries, version 1 (131 104 bytes).
+    static const std::vector<std::uint8_t>& deliveryTableImage();
 
     // Faults, for tests and the simulator.
     void corruptNextFrames(int count) { m_corrupt += count; }      ///< flip a bit in their payload
@@ -51,6 +69,7 @@ public:
     /// Stores a table as if uploaded earlier (power-up state).
     void preloadTable(std::vector<std::uint8_t> image, std::uint16_t version);
 
+    int protocol() const { return m_protocol; }
     bool streaming() const { return m_streaming; }
     int rateHz() const { return m_rateHz; }
     probe::TableInfoPayload tableInfo() const;
@@ -71,12 +90,23 @@ private:
     double m_nextSampleS = 0.0;
     bool m_streaming = false;
     int m_rateHz = 100;
+    std::vector<std::uint8_t> handleBegin(std::uint8_t command, std::uint16_t version, std::uint32_t sizeBytes,
+                                          std::size_t maxBytes);
+    std::vector<std::uint8_t> handleChunk(const probe::Frame& frame);
+    std::vector<std::uint8_t> handleCommit(std::uint8_t command);
+    void store(std::vector<std::uint8_t> image, std::uint16_t version);
+
+    int m_protocol;
     std::vector<std::uint8_t> m_table;
     std::uint16_t m_tableVersion = 0;
     std::uint16_t m_tableCrc = 0;
+    std::uint32_t m_tableCrc32 = 0;
     bool m_tableValid = false;
     bool m_uploading = false;
-    probe::TableBeginPayload m_upload;
+    std::uint16_t m_uploadVersion = 0;
+    std::uint32_t m_uploadSize = 0;
+    std::optional<std::uint16_t> m_uploadCrc16;  ///< announced by TABLE_BEGIN
+    std::optional<std::uint32_t> m_uploadCrc32;  ///< announced by TABLE_BEGIN_32
     std::vector<std::uint8_t> m_pending;
     int m_corrupt = 0;
     int m_drop = 0;

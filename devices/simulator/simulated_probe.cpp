@@ -5,6 +5,9 @@ namespace tt::devices {
 namespace {
 
 constexpr std::size_t kMaxQueued = 8192;
+/// Commands answered per tick: the in-memory wire is fast, so an upload moves on by several
+/// chunks per 10 ms tick (a 16-bit table of 1025 chunks takes about 0.7 s).
+constexpr int kRoundTripsPerTick = 16;
 
 probe::SessionConfig sessionConfig(const QVariantMap& settings) {
     probe::SessionConfig c;
@@ -28,7 +31,7 @@ SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext&
         return d;
     });
     // Stand-alone the mandrel already holds a calibrated table (version 1), as on delivery.
-    m_emulator.preloadTable(std::vector<std::uint8_t>(64, 0x5A), 1);
+    m_emulator.preloadTable(MandrelEmulator::deliveryTableImage(), 1);
 }
 
 void SimulatedProbe::setDeflectionSource(std::function<std::array<double, 2>(double)> source) {
@@ -55,12 +58,14 @@ void SimulatedProbe::exchange(double nowS) {
     m_emulator.setSilent(faults().silent);
     m_emulator.setStuck(faults().stuck);
     if (faults().malformed) m_emulator.corruptNextFrames(1);
-    const std::vector<std::uint8_t> commands = m_session.poll(nowS);
-    std::vector<std::uint8_t> wire = m_emulator.receive(commands);
+    for (int i = 0; i < kRoundTripsPerTick; ++i) {
+        const std::vector<std::uint8_t> commands = m_session.poll(nowS);  // also runs the watchdogs
+        if (commands.empty()) break;
+        m_session.receive(m_emulator.receive(commands), nowS);
+    }
     const std::vector<std::uint8_t> samples = m_emulator.advance(nowS - m_lastTickS);
-    wire.insert(wire.end(), samples.begin(), samples.end());
     m_lastTickS = nowS;
-    m_session.receive(wire, nowS);
+    m_session.receive(samples, nowS);
 }
 
 void SimulatedProbe::tick() {
@@ -102,8 +107,8 @@ std::optional<core::ProbeSample> SimulatedProbe::takeSample() {
     return s;
 }
 
-void SimulatedProbe::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
-    m_session.uploadTable(std::move(image), version, crc);
+void SimulatedProbe::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
+    m_session.uploadTable(std::move(image), version, crc32c);
 }
 
 TableUploadStatus SimulatedProbe::uploadStatus() const {
@@ -112,6 +117,10 @@ TableUploadStatus SimulatedProbe::uploadStatus() const {
 
 std::optional<MandrelTableInfo> SimulatedProbe::tableInfo() const {
     return toTableInfo(m_session.tableInfo());
+}
+
+std::optional<MandrelInfo> SimulatedProbe::mandrelInfo() const {
+    return toMandrelInfo(m_session);
 }
 
 QList<DeviceStatistic> SimulatedProbe::statistics() const {

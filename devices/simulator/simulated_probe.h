@@ -28,9 +28,10 @@ public:
     QList<DeviceStatistic> statistics() const override;
     void setDeflectionSource(std::function<std::array<double, 2>(double)> source) override;
 
-    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) override;
+    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) override;
     TableUploadStatus uploadStatus() const override;
     std::optional<MandrelTableInfo> tableInfo() const override;
+    std::optional<MandrelInfo> mandrelInfo() const override;
 
     /// The emulated microcontroller (tests inspect the stored table).
     const MandrelEmulator& emulator() const { return m_emulator; }

@@ -21,7 +21,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             (void)decodeSample(f.payload);
             (void)decodeAck(f.payload);
             (void)decodeTableInfo(f.payload);
+            (void)decodeTableInfo32(f.payload);
+            (void)decodeDeviceInfo(f.payload);
             (void)decodeTableBegin(f.payload);
+            (void)decodeTableBegin32(f.payload);
             (void)decodeTableChunk(f.payload);
             (void)decodeRate(f.payload);
             (void)messageTypeName(f.type);

@@ -3,8 +3,10 @@
 #include <QString>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "core/calibration/linearisation_image.h"
 #include "core/ports/deflection_probe.h"
 
 namespace tt::ui {
@@ -17,12 +19,21 @@ struct ProbeUploadStatus {
     QString message;
 };
 
-/// What the mandrel reports about the table it holds (version and CRC-16 of the stored image).
+/// What the mandrel reports about the table it holds: version, CRC-16 of the stored image, and
+/// its CRC-32C when the mandrel speaks probe protocol 2.
 struct ProbeTableReadback {
     std::uint16_t version = 0;
-    std::uint16_t crc = 0;
+    std::uint16_t crc16 = 0;
+    std::optional<std::uint32_t> crc32c;
     std::uint32_t sizeBytes = 0;
     bool valid = false;
+
+    /// The CRC the upload is verified with: the CRC-32C, or the CRC-16 of a protocol-1 mandrel.
+    std::uint32_t crc() const { return crc32c ? *crc32c : crc16; }
+    /// "CRC-32C 0x1A2B3C4D" or "CRC-16 0x1A2B".
+    QString crcText() const;
+    /// True when the mandrel holds `image` as table `version`, valid, with the same size and CRC.
+    bool matches(int version, std::span<const std::uint8_t> image) const;
 };
 
 /// A probe mandrel as the calibration wizard sees it: live samples through the engine's port
@@ -39,9 +50,13 @@ public:
     virtual core::DeflectionProbe& port() = 0;
 
     virtual bool canUpload() const = 0;
-    /// Starts uploading `image` (opaque bytes) as table `version`; `crc` = CRC-16/CCITT-FALSE of the
-    /// whole image. Throws std::invalid_argument with the reason (too large, CRC wrong, busy).
-    virtual void startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) = 0;
+    /// Starts uploading `image` (opaque bytes) as table `version`; `crc32c` = CRC-32C of the whole
+    /// image (the record's upload CRC). Throws std::invalid_argument with the reason (too large
+    /// for the mandrel, CRC wrong, busy).
+    virtual void startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) = 0;
+    /// The table image format the mandrel's firmware reads (docs/protocols/linearisation-table.md):
+    /// 2, or 1 for a mandrel of probe protocol 1.
+    virtual std::uint8_t imageFormat() const { return core::kTableImageFormat; }
     virtual ProbeUploadStatus uploadStatus() const = 0;
     /// Asks the mandrel again which table it holds; the answer arrives in readback().
     virtual void requestReadback() = 0;

@@ -11,6 +11,21 @@ DeviceCalibrationProbe::DeviceCalibrationProbe(devices::Device& device, const QS
     if (!device.deflectionProbe()) throw std::invalid_argument("the device is not a probe mandrel");
 }
 
+std::optional<int> DeviceCalibrationProbe::adcBits() const {
+    if (m_bits) return m_bits;
+    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
+    const std::optional<devices::MandrelInfo> info = target ? target->mandrelInfo() : std::nullopt;
+    if (info && info->adcBits && *info->adcBits >= core::kMinAdcBits && *info->adcBits <= core::kMaxAdcBits)
+        return info->adcBits;
+    return std::nullopt;
+}
+
+std::uint8_t DeviceCalibrationProbe::imageFormat() const {
+    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
+    const std::optional<devices::MandrelInfo> info = target ? target->mandrelInfo() : std::nullopt;
+    return info && info->protocol < 2 ? core::kTableImageFormatCrc16 : core::kTableImageFormat;
+}
+
 core::DeflectionProbe& DeviceCalibrationProbe::port() {
     return *m_device.deflectionProbe();
 }
@@ -19,10 +34,10 @@ bool DeviceCalibrationProbe::canUpload() const {
     return m_device.tableUploadTarget() != nullptr;
 }
 
-void DeviceCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
+void DeviceCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
     devices::TableUploadTarget* target = m_device.tableUploadTarget();
     if (!target) throw std::invalid_argument("this probe cannot take a table upload");
-    target->uploadTable(std::move(image), version, crc);
+    target->uploadTable(std::move(image), version, crc32c);
 }
 
 ProbeUploadStatus DeviceCalibrationProbe::uploadStatus() const {
@@ -58,7 +73,7 @@ std::optional<ProbeTableReadback> DeviceCalibrationProbe::readback() const {
     if (!target) return std::nullopt;
     const std::optional<devices::MandrelTableInfo> info = target->tableInfo();
     if (!info) return std::nullopt;
-    return ProbeTableReadback{info->version, info->crc, info->sizeBytes, info->valid};
+    return ProbeTableReadback{info->version, info->crc, info->crc32c, info->sizeBytes, info->valid};
 }
 
 }  // namespace tt::ui

@@ -39,10 +39,6 @@ QString ProbeWizardContext::operatorName() const {
 
 namespace {
 
-QString hex16(int v) {
-    return QStringLiteral("0x") + QString::number(v, 16).rightJustified(4, QLatin1Char('0')).toUpper();
-}
-
 QLabel* wrapped(QWidget* parent) {
     auto* l = new QLabel(parent);
     l->setWordWrap(true);
@@ -342,7 +338,7 @@ bool ProbeSavePage::save() {
         info.createdUnixS = QDateTime::currentSecsSinceEpoch();
         info.plane = static_cast<std::uint8_t>(r.plane);
         info.degree = static_cast<std::uint8_t>(lin.fit.degree);
-        m_image = core::encodeTableImage(lin.table, info);
+        m_image = core::encodeTableImage(lin.table, info, p ? p->imageFormat() : core::kTableImageFormat);
         r.image = QByteArray(reinterpret_cast<const char*>(m_image.data()), static_cast<qsizetype>(m_image.size()));
         r.imageCrc = core::tableImageCrc(m_image);
         r.uploadCrc = core::tableUploadCrc(m_image);
@@ -372,7 +368,7 @@ bool ProbeSavePage::upload() {
     const QByteArray& bytes = s.image;
     m_image.assign(bytes.begin(), bytes.end());
     try {
-        p->startUpload(m_image, static_cast<std::uint16_t>(s.version), static_cast<std::uint16_t>(s.uploadCrc));
+        p->startUpload(m_image, static_cast<std::uint16_t>(s.version), static_cast<std::uint32_t>(s.uploadCrc));
     } catch (const std::exception& e) {
         showResult(tr("Upload refused: %1").arg(QString::fromStdString(e.what())), true);
         return false;
@@ -408,23 +404,23 @@ void ProbeSavePage::pollUpload() {
     }
     p->requestReadback();
     const std::optional<ProbeTableReadback> back = p->readback();
-    const bool verified = back && back->valid && back->version == s.version && back->crc == s.uploadCrc;
+    const bool verified = back && back->matches(s.version, m_image);
     m_ctx.session->uploadVerified = verified;
     if (m_ctx.store)
-        m_ctx.store->recordUpload(s.id, m_ctx.operatorName(), back ? std::optional<int>(back->crc) : std::nullopt,
+        m_ctx.store->recordUpload(s.id, m_ctx.operatorName(), back ? std::optional<qint64>(back->crc()) : std::nullopt,
                                   verified);
     if (verified)
-        showResult(tr("Verified: the mandrel reports version %1, CRC %2, the same as the image sent.")
+        showResult(tr("Verified: the mandrel reports version %1, %2, the same as the image sent.")
                        .arg(back->version)
-                       .arg(hex16(back->crc)),
+                       .arg(back->crcText()),
                    false);
     else
-        showResult(back ? tr("Read-back does not match: the mandrel reports version %1, CRC %2; the image has version "
-                             "%3, CRC %4. Upload again.")
+        showResult(back ? tr("Read-back does not match: the mandrel reports version %1, %2; the image has version "
+                             "%3, CRC-32C %4. Upload again.")
                               .arg(back->version)
-                              .arg(hex16(back->crc))
+                              .arg(back->crcText())
                               .arg(s.version)
-                              .arg(hex16(s.uploadCrc))
+                              .arg(QString::fromStdString(core::crcText(static_cast<std::uint32_t>(s.uploadCrc))))
                         : tr("The mandrel did not report its table; upload again."),
                    true);
     m_upload->setEnabled(!verified);

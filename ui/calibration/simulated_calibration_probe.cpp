@@ -5,13 +5,14 @@
 
 #include "core/calibration/linearisation_image.h"
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 
 namespace tt::ui {
 
 namespace {
 constexpr std::size_t kChunkBytes = 128;
 constexpr double kChunkS = 0.01;
-constexpr std::size_t kMaxImageBytes = 64 * 1024;  ///< what the mandrel's flash holds (probe protocol)
+constexpr std::size_t kMaxImageBytes = 256 * 1024;  ///< what the mandrel's flash holds (probe protocol 2)
 }  // namespace
 
 SimulatedCalibrationProbe::SimulatedCalibrationProbe(const QString& name, const core::InductiveProbeConfig& config,
@@ -71,14 +72,15 @@ void SimulatedCalibrationProbe::poll(double seconds) {
     if (m_sentBytes == m_incoming.size()) finishUpload();
 }
 
-void SimulatedCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) {
+void SimulatedCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std::uint16_t version,
+                                            std::uint32_t crc32c) {
     if (m_disconnected) throw std::invalid_argument("the mandrel does not answer");
     if (m_upload.phase == ProbeUploadStatus::Phase::Running)
         throw std::invalid_argument("an upload is already running");
     if (image.empty() || image.size() > kMaxImageBytes)
         throw std::invalid_argument("the image has " + std::to_string(image.size()) +
-                                    " bytes; the mandrel stores 1 .. 65536");
-    if (core::crc16Ccitt(image) != crc) throw std::invalid_argument("the image does not have the announced CRC");
+                                    " bytes; the mandrel stores 1 .. 262144");
+    if (core::crc32c(image) != crc32c) throw std::invalid_argument("the image does not have the announced CRC");
     m_incoming = std::move(image);
     m_incomingVersion = version;
     m_sentBytes = 0;
@@ -89,7 +91,7 @@ void SimulatedCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std
 void SimulatedCalibrationProbe::finishUpload() {
     std::vector<std::uint8_t> stored = m_incoming;
     if (m_faultyFlash && stored.size() > 40) stored[40] ^= 0x10;
-    m_readback = ProbeTableReadback{m_incomingVersion, core::crc16Ccitt(stored),
+    m_readback = ProbeTableReadback{m_incomingVersion, core::crc16Ccitt(stored), core::crc32c(stored),
                                     static_cast<std::uint32_t>(stored.size()), false};
     try {
         const core::TableImage image = core::decodeTableImage(stored);

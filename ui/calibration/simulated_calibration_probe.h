@@ -11,7 +11,8 @@ namespace tt::ui {
 /// The built-in simulated probe mandrel for the calibration wizard: core::InductiveProbe (the
 /// differential bridge with its nonlinear characteristic, ratiometric ADC and noise) on a
 /// calibration stand whose screw jack bends the bar, and a microcontroller that takes table
-/// uploads in 128-byte chunks (10 ms each), checks the image and reports its version and CRC.
+/// uploads in 128-byte chunks (10 ms each), checks the image and reports its version and CRCs
+/// (probe protocol 2: images up to 256 KiB, CRC-32C).
 /// Time advances only through poll(), so tests are deterministic.
 class SimulatedCalibrationProbe final : public CalibrationProbe, private core::DeflectionProbe {
 public:
@@ -23,7 +24,7 @@ public:
     std::optional<int> adcBits() const override { return m_sensor.config().adcBits; }
     core::DeflectionProbe& port() override { return *this; }
     bool canUpload() const override { return true; }
-    void startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint16_t crc) override;
+    void startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) override;
     ProbeUploadStatus uploadStatus() const override { return m_upload; }
     void requestReadback() override {}
     std::optional<ProbeTableReadback> readback() const override { return m_readback; }

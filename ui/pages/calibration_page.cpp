@@ -9,6 +9,7 @@
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include "core/calibration/linearisation_image.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
 #include "ui/calibration/kp_drive_source.h"
@@ -39,8 +40,9 @@ QString localTime(const QString& iso) {
     return t.isValid() ? t.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")) : iso;
 }
 
-QString hex16(int v) {
-    return QStringLiteral("0x") + QString::number(v, 16).rightJustified(4, QLatin1Char('0')).toUpper();
+/// A stored CRC: 4 hex digits for a CRC-16 (protocol-1 mandrels), 8 for a CRC-32C.
+QString crcText(qint64 v) {
+    return QString::fromStdString(core::crcText(static_cast<std::uint32_t>(v), v <= 0xFFFF ? 16 : 32));
 }
 
 }  // namespace
@@ -221,8 +223,8 @@ void CalibrationPage::refreshLists() {
     for (std::size_t i = 0; i < tables.size(); ++i) {
         const storage::ProbeTableRecord& t = tables[i];
         const QString upload = !t.readbackCrc ? tr("not uploaded")
-                               : t.verified   ? tr("verified, CRC %1").arg(hex16(*t.readbackCrc))
-                                              : tr("read-back CRC %1 does not match").arg(hex16(*t.readbackCrc));
+                               : t.verified   ? tr("verified, CRC %1").arg(crcText(*t.readbackCrc))
+                                              : tr("read-back CRC %1 does not match").arg(crcText(*t.readbackCrc));
         const QStringList cells = {t.probe,
                                    t.plane == 0 ? QStringLiteral("X") : QStringLiteral("Y"),
                                    QString::number(t.version),

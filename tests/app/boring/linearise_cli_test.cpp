@@ -109,13 +109,15 @@ TEST_F(LineariseCommand, WritesABinaryImageCarryingItsCrcAndACHeader) {
     QFile file(bin);
     ASSERT_TRUE(file.open(QIODevice::ReadOnly));
     const QByteArray image = file.readAll();
-    ASSERT_EQ(image.size(), 32 + 2 * 4096 + 2);
+    ASSERT_EQ(image.size(), 32 + 2 * 4096);  // format 2 (docs/protocols/linearisation-table.md)
     EXPECT_EQ(image.left(4), QByteArray("TTLT"));
+    EXPECT_EQ(static_cast<unsigned char>(image[4]), 2u);  // format
     EXPECT_EQ(static_cast<unsigned char>(image[8]), 5u);  // table version, little-endian
-    const unsigned crc = static_cast<unsigned char>(image[image.size() - 2]) |
-                         (static_cast<unsigned char>(image[image.size() - 1]) << 8);
+    unsigned long crc = 0;                                // CRC-32C at offset 28, little-endian
+    for (int i = 3; i >= 0; --i)
+        crc = (crc << 8) | static_cast<unsigned char>(image[28 + i]);
     EXPECT_EQ(r.json().value(QStringLiteral("out")).toObject().value(QStringLiteral("image_crc")).toString(),
-              QStringLiteral("0x") + QString::number(crc, 16).rightJustified(4, QLatin1Char('0')).toUpper());
+              QStringLiteral("0x") + QString::number(crc, 16).rightJustified(8, QLatin1Char('0')).toUpper());
     const QString header = m_dir.filePath(QStringLiteral("table.h"));
     ASSERT_EQ(runTrueturn({QStringLiteral("linearise"), points, QStringLiteral("--adc-bits"), QStringLiteral("12"),
                            QStringLiteral("--out"), header})

@@ -12,7 +12,7 @@
 
 #include "core/calibration/calibration_csv.h"
 #include "core/calibration/linearisation_image.h"
-#include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 
 namespace tt::core {
 namespace {
@@ -223,16 +223,18 @@ TEST(LinearisationImage, RoundTripsAndCarriesTheCrcOfItsContent) {
         linearise(sample([&](double um) { return truth.code(um); }, -500.0, 500.0, 21, 1.0, 1), 12, 3);
     const TableImageInfo info{7, 1'741'900'000, 0, 3};
     const std::vector<std::uint8_t> image = encodeTableImage(lin.table, info);
-    // Layout (docs/protocols/linearisation-table.md): 32-byte header, 4096 × 2 bytes, CRC.
-    ASSERT_EQ(image.size(), 32u + 2u * 4096u + 2u);
+    // Layout (docs/protocols/linearisation-table.md): 32-byte header with the CRC-32C, 4096 × 2 bytes.
+    ASSERT_EQ(image.size(), 32u + 2u * 4096u);
     EXPECT_EQ(std::string(image.begin(), image.begin() + 4), "TTLT");
-    EXPECT_EQ(image[4], 1);   // format
+    EXPECT_EQ(image[4], 2);   // format
     EXPECT_EQ(image[5], 32);  // header bytes
     EXPECT_EQ(image[6], 12);  // ADC bits
     EXPECT_EQ(image[8], 7);   // version, little-endian
     EXPECT_EQ(image[24] | (image[25] << 8), 4096);
-    const std::uint16_t crc = crc16Ccitt(std::span(image).first(image.size() - 2));
+    // CRC-32C of every byte but the CRC field itself (offset 28..31).
+    const std::uint32_t crc = crc32c(std::span(image).subspan(32), crc32c(std::span(image).first(28)));
     EXPECT_EQ(tableImageCrc(image), crc);
+    EXPECT_EQ(image[28] | (image[29] << 8) | (image[30] << 16) | (std::uint32_t{image[31]} << 24), crc);
 
     const TableImage back = decodeTableImage(image);
     EXPECT_EQ(back.crc, crc);
@@ -269,7 +271,7 @@ TEST(LinearisationImage, CsvAndCHeaderExports) {
     EXPECT_NE(header.find("#define TT_LIN_TABLE_ENTRIES 4096u"), std::string::npos);
     EXPECT_NE(header.find("static const int16_t tt_lin_table[TT_LIN_TABLE_ENTRIES]"), std::string::npos);
     char crc[16];
-    std::snprintf(crc, sizeof crc, "0x%04X", tableImageCrc(encodeTableImage(lin.table, info)));
+    std::snprintf(crc, sizeof crc, "0x%08X", tableImageCrc(encodeTableImage(lin.table, info)));
     EXPECT_NE(header.find(std::string("#define TT_LIN_TABLE_IMAGE_CRC ") + crc), std::string::npos);
     // Every entry is written: 4096 numbers separated by 4095 commas inside the braces.
     const std::string body = header.substr(header.find('{'), header.find('}') - header.find('{'));

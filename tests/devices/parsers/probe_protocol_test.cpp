@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 
 namespace tt::devices::probe {
 namespace {
@@ -167,7 +168,7 @@ TEST(ProbePayloads, RoundTripAndRefuseWrongLengths) {
     EXPECT_EQ(ack->result, AckResult::OutOfOrder);
     EXPECT_EQ(ack->detail, 256u);
     EXPECT_FALSE(decodeAck(std::vector<std::uint8_t>{0x15, 9, 0, 0, 0, 0}));
-    const auto info = decodeTableInfo(encodeTableInfo({3, 0xBEEF, 1024, true}));
+    const auto info = decodeTableInfo(encodeTableInfo({3, 0xBEEF, 1024, true, std::nullopt}));
     ASSERT_TRUE(info);
     EXPECT_EQ(info->version, 3);
     EXPECT_EQ(info->crc, 0xBEEF);
@@ -191,10 +192,11 @@ std::vector<std::uint8_t> image(std::size_t n) {
     return v;
 }
 
+// Protocol 1 (TABLE_BEGIN and TABLE_INFO with the CRC-16); protocol 2: tests/devices/probe16/.
 TEST(TableUploader, WalksBeginChunksCommitVerify) {
     const auto img = image(300);
     const std::uint16_t crc = core::crc16Ccitt(img);
-    TableUploader up(img, 4, crc);
+    TableUploader up(img, 4, core::crc32c(img), MandrelCapabilities::protocol1());
     ASSERT_EQ(up.chunkCount(), 3u);  // 128 + 128 + 44
     EXPECT_EQ(up.current().type, MessageType::TableBegin);
     const auto begin = decodeTableBegin(up.current().payload);
@@ -213,7 +215,7 @@ TEST(TableUploader, WalksBeginChunksCommitVerify) {
     EXPECT_EQ(up.current().type, MessageType::TableCommit);
     up.onAck({0x16, AckResult::Ok, 0});
     EXPECT_EQ(up.current().type, MessageType::ReadTableInfo);
-    up.onTableInfo({4, crc, 300, true});
+    up.onTableInfo({4, crc, 300, true, std::nullopt});
     EXPECT_EQ(up.phase(), TableUploader::Phase::Done);
     EXPECT_DOUBLE_EQ(up.progress(), 1.0);
 }
@@ -221,17 +223,19 @@ TEST(TableUploader, WalksBeginChunksCommitVerify) {
 TEST(TableUploader, FailsOnRefusalOrAWrongTableAndNeverSendsACorruptImage) {
     const auto img = image(10);
     const std::uint16_t crc = core::crc16Ccitt(img);
-    EXPECT_THROW(TableUploader(img, 1, static_cast<std::uint16_t>(crc ^ 1)), std::invalid_argument);
-    EXPECT_THROW(TableUploader({}, 1, 0), std::invalid_argument);
-    TableUploader refused(img, 1, crc);
+    const std::uint32_t record = core::crc32c(img);
+    const MandrelCapabilities v1 = MandrelCapabilities::protocol1();
+    EXPECT_THROW(TableUploader(img, 1, record ^ 1, v1), std::invalid_argument);
+    EXPECT_THROW(TableUploader({}, 1, 0, v1), std::invalid_argument);
+    TableUploader refused(img, 1, record, v1);
     refused.onAck({0x14, AckResult::BadArgument, 0});
     EXPECT_EQ(refused.phase(), TableUploader::Phase::Failed);
     EXPECT_NE(refused.failure().find("value out of range"), std::string::npos);
-    TableUploader wrong(img, 2, crc);
+    TableUploader wrong(img, 2, record, v1);
     wrong.onAck({0x14, AckResult::Ok, 0});
     wrong.onAck({0x15, AckResult::Ok, 10});
     wrong.onAck({0x16, AckResult::Ok, 0});
-    wrong.onTableInfo({1, crc, 10, true});  // the mandrel still has version 1
+    wrong.onTableInfo({1, crc, 10, true, std::nullopt});  // the mandrel still has version 1
     EXPECT_EQ(wrong.phase(), TableUploader::Phase::Failed);
     EXPECT_NE(wrong.failure().find("version 1"), std::string::npos) << wrong.failure();
 }

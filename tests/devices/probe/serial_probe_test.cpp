@@ -8,37 +8,16 @@
 #include <numeric>
 
 #include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 #include "devices/api/steady_clock.h"
 #include "devices/probe_mandrel/probe_mandrel_factory.h"
 #include "devices/simulator/mandrel_emulator.h"
-#include "support/pty_pair.h"
+#include "support/mandrel_on_pty.h"
 
 namespace tt::devices {
 namespace {
 
-/// The emulated mandrel behind a pseudo-terminal: answers commands, streams in real time.
-class MandrelOnPty {
-public:
-    explicit MandrelOnPty(const QString& name) : pty(name) {
-        pty.onBytes([this](const QByteArray& bytes) {
-            pty.send(mandrel.receive(
-                {reinterpret_cast<const std::uint8_t*>(bytes.constData()), static_cast<std::size_t>(bytes.size())}));
-        });
-        clock.start();
-        timer.setInterval(5);
-        QObject::connect(&timer, &QTimer::timeout, [this] {
-            const double t = clock.nsecsElapsed() * 1e-9;
-            pty.send(mandrel.advance(t - last));
-            last = t;
-        });
-        timer.start();
-    }
-    test::PtyPair pty;
-    MandrelEmulator mandrel;
-    QTimer timer;
-    QElapsedTimer clock;
-    double last = 0.0;
-};
+using test::MandrelOnPty;
 
 class SerialProbeTest : public ::testing::Test {
 protected:
@@ -92,7 +71,9 @@ TEST_F(SerialProbeTest, HandshakeThenLinearisedSamplesAtTheSetRate) {
         EXPECT_NEAR(s.deflectionMm[0], 0.020, 1e-6);  // the emulator's default bending
         EXPECT_NEAR(s.deflectionMm[1], -0.005, 1e-6);
         EXPECT_EQ(s.adcCode[0], MandrelEmulator::adcCode(0.020));
-        EXPECT_EQ(s.adcCode[0], 36728);  // 32768 + 200000 * 0.02 - 5e6 * 0.02^3 (the emulator's bridge model)
+        // The emulator's bridge: u = 0.02 mm * 0.8505 (coils at 0.9 of the overhang) / 0.25 mm,
+        // r = 1.15 u - 0.15 u^3, code = (1 + r) / 2 * 65535 = 35329.88.
+        EXPECT_EQ(s.adcCode[0], 35330);
     }
     const auto info = device->tableUploadTarget()->tableInfo();
     ASSERT_TRUE(info.has_value());
@@ -152,7 +133,7 @@ TEST_F(SerialProbeTest, TableUploadIsChunkedStoredAndVerified) {
     ASSERT_TRUE(waitState(*device, core::DeviceState::Ready));
     std::vector<std::uint8_t> image(1000);
     std::iota(image.begin(), image.end(), std::uint8_t{0});
-    const std::uint16_t crc = core::crc16Ccitt(image);
+    const std::uint32_t crc = core::crc32c(image);
     TableUploadTarget* target = device->tableUploadTarget();
     target->uploadTable(image, 7, crc);
     ASSERT_TRUE(
@@ -161,7 +142,8 @@ TEST_F(SerialProbeTest, TableUploadIsChunkedStoredAndVerified) {
         << target->uploadStatus().message.toStdString();
     EXPECT_EQ(end.mandrel.tableImage(), image);
     EXPECT_EQ(end.mandrel.tableInfo().version, 7);
-    EXPECT_EQ(target->tableInfo()->crc, crc);
+    EXPECT_EQ(target->tableInfo()->crc32c, crc);  // protocol 2 reads back the CRC-32C
+    EXPECT_EQ(target->tableInfo()->crc, core::crc16Ccitt(image));
     // Samples are linearised from now on.
     (void)collect(*device->deflectionProbe(), 50);
     const auto samples = collect(*device->deflectionProbe(), 50);
@@ -176,7 +158,7 @@ TEST_F(SerialProbeTest, UploadWithChunkErrorsOnTheLineStillSucceedsByResending) 
     ASSERT_TRUE(waitState(*device, core::DeviceState::Ready));
     std::vector<std::uint8_t> image(600, 0xAB);
     TableUploadTarget* target = device->tableUploadTarget();
-    target->uploadTable(image, 2, core::crc16Ccitt(image));
+    target->uploadTable(image, 2, core::crc32c(image));
     end.mandrel.corruptNextFrames(3);  // some ACKs (and samples) get corrupted on the way back
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return target->uploadStatus().phase != TableUploadStatus::Phase::Running; }, 5000));
@@ -193,7 +175,7 @@ TEST_F(SerialProbeTest, AFlashErrorInTheMandrelFailsVerification) {
     ASSERT_TRUE(waitState(*device, core::DeviceState::Ready));
     std::vector<std::uint8_t> image(300, 0x11);
     TableUploadTarget* target = device->tableUploadTarget();
-    target->uploadTable(image, 4, core::crc16Ccitt(image));
+    target->uploadTable(image, 4, core::crc32c(image));
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return target->uploadStatus().phase != TableUploadStatus::Phase::Running; }, 5000));
     EXPECT_EQ(target->uploadStatus().phase, TableUploadStatus::Phase::Failed);
@@ -219,7 +201,7 @@ TEST_F(SerialProbeTest, AMandrelThatNeverAnswersIsReportedByCommand) {
     auto device = make(pty.portName());
     device->open();
     ASSERT_TRUE(waitState(*device, core::DeviceState::Error));
-    EXPECT_NE(device->health().message.find("does not answer READ_TABLE_INFO (3 tries)"), std::string::npos)
+    EXPECT_NE(device->health().message.find("does not answer READ_DEVICE_INFO (3 tries)"), std::string::npos)
         << device->health().message;
 }
 

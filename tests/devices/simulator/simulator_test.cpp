@@ -6,7 +6,7 @@
 #include <QTest>
 #include <numeric>
 
-#include "core/common/crc16.h"
+#include "core/common/crc32c.h"
 #include "devices/api/steady_clock.h"
 #include "devices/simulator/simulated_drive.h"
 #include "devices/simulator/simulated_output.h"
@@ -153,7 +153,7 @@ TEST_F(SimulatorTest, ProbeTakesATableUpload) {
     auto d = make(DeviceKind::Probe);
     std::vector<std::uint8_t> image(500);
     std::iota(image.begin(), image.end(), std::uint8_t{3});
-    d->tableUploadTarget()->uploadTable(image, 9, core::crc16Ccitt(image));
+    d->tableUploadTarget()->uploadTable(image, 9, core::crc32c(image));
     ASSERT_TRUE(QTest::qWaitFor(
         [&] { return d->tableUploadTarget()->uploadStatus().phase == TableUploadStatus::Phase::Done; }, 3000))
         << d->tableUploadTarget()->uploadStatus().message.toStdString();

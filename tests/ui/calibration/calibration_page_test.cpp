@@ -322,16 +322,17 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
     core::TableImageInfo info;
     info.version = 4;
     const std::vector<std::uint8_t> image = core::encodeTableImage(lin.table, info);
-    const std::uint16_t crc = core::tableUploadCrc(image);
+    const std::uint32_t crc = core::tableUploadCrc(image);
     probe.startUpload(image, 4, crc);
     ASSERT_TRUE(QTest::qWaitFor([&] { return probe.uploadStatus().phase == ProbeUploadStatus::Phase::Done; }, 10000))
         << probe.uploadStatus().message.toStdString();
     probe.requestReadback();
     ASSERT_TRUE(probe.readback().has_value());
     EXPECT_EQ(probe.readback()->version, 4);
-    EXPECT_EQ(probe.readback()->crc, crc);
+    EXPECT_EQ(probe.readback()->crc32c, crc);  // probe protocol 2 reads back the CRC-32C
     EXPECT_TRUE(probe.readback()->valid);
-    EXPECT_THROW(probe.startUpload(image, 5, static_cast<std::uint16_t>(crc ^ 1)), std::invalid_argument);
+    EXPECT_TRUE(probe.readback()->matches(4, image));
+    EXPECT_THROW(probe.startUpload(image, 5, crc ^ 1), std::invalid_argument);
 }
 
 }  // namespace
