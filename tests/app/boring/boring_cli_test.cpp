@@ -5,13 +5,13 @@
 
 #include <QFile>
 #include <QJsonObject>
-#include <QTemporaryDir>
 
-#include "cli_runner.h"
+#include "cli_test.h"
 
 namespace {
 
 using tt::test::CliResult;
+using tt::test::expectRefused;
 using tt::test::runTrueturn;
 
 QJsonObject boring(const QString& method) {
@@ -26,7 +26,9 @@ double maxError(const QJsonObject& j) {
     return j.value(QStringLiteral("bore_error_mm")).toObject().value(QStringLiteral("max")).toDouble();
 }
 
-TEST(BoringCommand, CompensationFromCurrentAndFromProbeCutsTheBoreErrorByEightyPercent) {
+class BoringCommand : public tt::test::CliTest {};
+
+TEST_F(BoringCommand, CompensationFromCurrentAndFromProbeCutsTheBoreErrorByEightyPercent) {
     const QJsonObject none = boring(QStringLiteral("none"));
     const QJsonObject current = boring(QStringLiteral("current"));
     const QJsonObject probe = boring(QStringLiteral("probe"));
@@ -46,9 +48,8 @@ TEST(BoringCommand, CompensationFromCurrentAndFromProbeCutsTheBoreErrorByEightyP
     EXPECT_EQ(probe.value(QStringLiteral("probe_calibration")).toObject().value(QStringLiteral("degree")).toInt(), 3);
 }
 
-TEST(BoringCommand, WritesATraceAndPrintsText) {
-    QTemporaryDir dir;
-    const QString trace = dir.filePath(QStringLiteral("trace.csv"));
+TEST_F(BoringCommand, WritesATraceAndPrintsText) {
+    const QString trace = path(QStringLiteral("trace.csv"));
     const CliResult r = runTrueturn({QStringLiteral("boring"), QStringLiteral("--method"), QStringLiteral("probe"),
                                      QStringLiteral("--trace"), trace});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
@@ -63,26 +64,17 @@ TEST(BoringCommand, WritesATraceAndPrintsText) {
     EXPECT_GT(rows, 20000);  // 500 mm at 0.95 mm/s and a 20 ms PLC cycle: about 26 000 cycles
 }
 
-TEST(BoringCommand, RefusesBadOptionsAndPresets) {
-    QTemporaryDir dir;
-    CliResult r = runTrueturn({QStringLiteral("boring"), QStringLiteral("--method"), QStringLiteral("laser")});
-    EXPECT_EQ(r.exitCode, 2);
-    EXPECT_TRUE(r.err.contains(QStringLiteral("--method: 'laser' is not one of current, probe, none")))
-        << qPrintable(r.err);
-    r = runTrueturn({QStringLiteral("boring"), QStringLiteral("--preset"), QStringLiteral("no-such-preset")});
-    EXPECT_EQ(r.exitCode, 2);
-    EXPECT_TRUE(r.err.contains(QStringLiteral("unknown preset 'no-such-preset'"))) << qPrintable(r.err);
-    const QString bad = dir.filePath(QStringLiteral("bad.json"));
-    QFile file(bad);
-    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-    file.write(R"({"tool": {"section": "round", "diameter_mm": 80, "overhang_mm": 800, "youngs_modulus_mpa": 210000,
+TEST_F(BoringCommand, RefusesBadOptionsAndPresets) {
+    expectRefused({QStringLiteral("boring"), QStringLiteral("--method"), QStringLiteral("laser")},
+                  QStringLiteral("--method: 'laser' is not one of current, probe, none"));
+    expectRefused({QStringLiteral("boring"), QStringLiteral("--preset"), QStringLiteral("no-such-preset")},
+                  QStringLiteral("unknown preset 'no-such-preset'"));
+    const QString bad =
+        write(QStringLiteral("bad.json"),
+              R"({"tool": {"section": "round", "diameter_mm": 80, "overhang_mm": 800, "youngs_modulus_mpa": 210000,
                    "current_to_force_n_per_a": 150}, "dither": {"amplitude_mm": 0.2}})");
-    file.close();
-    r = runTrueturn({QStringLiteral("boring"), QStringLiteral("--preset"), bad});
-    EXPECT_EQ(r.exitCode, 2);
-    EXPECT_TRUE(r.err.contains(QStringLiteral("dither.amplitude_mm: 0.2 is outside 0.005 .. 0.05")))
-        << qPrintable(r.err);
-    EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0);
+    expectRefused({QStringLiteral("boring"), QStringLiteral("--preset"), bad},
+                  QStringLiteral("dither.amplitude_mm: 0.2 is outside 0.005 .. 0.05"));
 }
 
 }  // namespace

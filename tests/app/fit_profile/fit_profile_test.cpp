@@ -1,16 +1,15 @@
 #include <gtest/gtest.h>
 
-#include <QFile>
 #include <QJsonArray>
-#include <QTemporaryDir>
 #include <cmath>
 #include <vector>
 
-#include "cli_runner.h"
+#include "cli_test.h"
 
 namespace {
 
 using tt::test::CliResult;
+using tt::test::expectRefused;
 using tt::test::runTrueturn;
 
 // Table 1 of the 2012 shaft paper (shared/SEEDS.md, section 000), group 1: d(x) in mm, x in mm.
@@ -23,27 +22,7 @@ double groupOne(double x) {
     return sum;
 }
 
-class FitProfileCommand : public ::testing::Test {
-protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(content);
-        return path;
-    }
-
-    /// Runs with bad input: exit code 2, nothing on stdout, exactly one line on stderr containing `phrase`.
-    void expectRefused(const QStringList& args, const QString& phrase) {
-        const CliResult r = runTrueturn(args);
-        EXPECT_EQ(r.exitCode, 2) << qPrintable(r.err);
-        EXPECT_TRUE(r.out.isEmpty()) << qPrintable(r.out);
-        EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0) << qPrintable(r.err);
-        EXPECT_TRUE(r.err.contains(phrase)) << "expected '" << qPrintable(phrase) << "' in: " << qPrintable(r.err);
-    }
-
-    QTemporaryDir m_dir;
-};
+class FitProfileCommand : public tt::test::CliTest {};
 
 TEST_F(FitProfileCommand, RecoversTableOneGroupOneAsJson) {
     QByteArray csv = "x_mm,error_mm\n";

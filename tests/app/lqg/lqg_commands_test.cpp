@@ -2,18 +2,17 @@
 // LQG control of the shaft profile", item 8), and the Table 2 reproduction of paper 000 through them.
 #include <gtest/gtest.h>
 
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QSet>
-#include <QTemporaryDir>
 #include <cmath>
 
-#include "cli_runner.h"
+#include "cli_test.h"
 
 namespace {
 
 using tt::test::CliResult;
+using tt::test::expectRefused;
 using tt::test::runTrueturn;
 
 /// Paper 000, Table 2: k_eff for z = 1..4.
@@ -43,27 +42,7 @@ double at(const QJsonValue& m, int r, int c) {
     return m.toArray().at(r).toArray().at(c).toDouble();
 }
 
-class RunToRunCommands : public ::testing::Test {
-protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(content);
-        return path;
-    }
-
-    /// Bad input: exit code 2, nothing on stdout, exactly one line on stderr containing `phrase`.
-    void expectRefused(const QStringList& args, const QString& phrase) {
-        const CliResult r = runTrueturn(args);
-        EXPECT_EQ(r.exitCode, 2) << qPrintable(args.join(' ')) << ": " << qPrintable(r.err);
-        EXPECT_TRUE(r.out.isEmpty()) << qPrintable(r.out);
-        EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0) << qPrintable(r.err);
-        EXPECT_TRUE(r.err.contains(phrase)) << "expected '" << qPrintable(phrase) << "' in: " << qPrintable(r.err);
-    }
-
-    QTemporaryDir m_dir;
-};
+class RunToRunCommands : public tt::test::CliTest {};
 
 TEST_F(RunToRunCommands, LqgJsonHasExactlyTheIssuesFields) {
     const CliResult r = runTrueturn({"lqg", "--preset", "paper-2012", "--delay", "4", "--json"});

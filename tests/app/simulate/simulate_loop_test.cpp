@@ -10,12 +10,11 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QSqlQuery>
-#include <QTemporaryDir>
 #include <QThread>
 #include <cmath>
 #include <map>
 
-#include "cli_runner.h"
+#include "cli_test.h"
 #include "core/storage/database.h"
 
 namespace tt {
@@ -34,11 +33,7 @@ QJsonObject runJson(const QStringList& args) {
     return r.json();
 }
 
-class SimulateLoop : public ::testing::Test {
-protected:
-    QString path(const QString& name) const { return m_dir.filePath(name); }
-    QTemporaryDir m_dir;
-};
+class SimulateLoop : public test::CliTest {};
 
 TEST_F(SimulateLoop, OpenLoopProfileIsTheBarrelOfThePaperComputedByThePhysics) {
     for (int g = 1; g <= 3; ++g) {
@@ -98,11 +93,8 @@ TEST_F(SimulateLoop, TheFeedForwardModelOfThePresetsIsTheirOwnFit) {
         for (const QJsonValue& row : open["profile"].toArray())
             csv += QByteArray::number(row.toObject()["x_mm"].toDouble(), 'g', 17) + ',' +
                    QByteArray::number(row.toObject()["mean_error_mm"].toDouble(), 'g', 17) + '\n';
-        QFile file(path(QStringLiteral("profile%1.csv").arg(g)));
-        ASSERT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(csv);
-        file.close();
-        const QJsonObject fit = runJson({"fit-profile", file.fileName(), "--degree", "5", "--json"});
+        const QString csvFile = write(QStringLiteral("profile%1.csv").arg(g), csv);
+        const QJsonObject fit = runJson({"fit-profile", csvFile, "--degree", "5", "--json"});
         QFile presetFile(QStringLiteral(TRUETURN_SOURCE_DIR "/resources/presets/paper-2012-group%1.json").arg(g));
         ASSERT_TRUE(presetFile.open(QIODevice::ReadOnly));
         const QJsonArray stored = QJsonDocument::fromJson(presetFile.readAll())
@@ -206,24 +198,17 @@ TEST_F(SimulateLoop, ARunKilledWithSigkillResumesWithEveryPartOnceAndContinuousN
 }
 
 TEST_F(SimulateLoop, ResumeNeedsAStoredRunAndKeepsItsSettings) {
-    auto refused = [](const QStringList& args, const char* text) {
-        const CliResult r = runTrueturn(args);
-        EXPECT_EQ(r.exitCode, 2) << qPrintable(args.join(' '));
-        EXPECT_TRUE(r.err.contains(QString::fromLatin1(text))) << qPrintable(r.err);
-        EXPECT_EQ(r.err.count('\n'), 1) << "one line";
-    };
-    refused({"simulate", "--resume"}, "--resume: needs --db");
-    refused({"simulate", "--db", path("none.sqlite"), "--resume"}, "does not exist");
+    using test::expectRefused;
+    expectRefused({"simulate", "--resume"}, "--resume: needs --db");
+    expectRefused({"simulate", "--db", path("none.sqlite"), "--resume"}, "does not exist");
     const QString done = path(QStringLiteral("done.sqlite"));
     runJson({"simulate", "--preset", "paper-2012-group2", "--parts", "100", "--warmup", "0", "--db", done, "--json"});
-    refused({"simulate", "--db", done, "--resume"}, "is already complete");
-    refused({"simulate", "--db", done, "--resume", "--preset", "paper-2012"}, "--preset: a resumed run keeps its own");
-    refused({"simulate", "--speed", "-1"}, "--speed: -1 is outside");
-    QFile garbage(path(QStringLiteral("garbage.sqlite")));
-    ASSERT_TRUE(garbage.open(QIODevice::WriteOnly));
-    garbage.write(QByteArray("not a database").repeated(500));
-    garbage.close();
-    refused({"simulate", "--db", garbage.fileName()}, "is damaged or not a TrueTurn database");
+    expectRefused({"simulate", "--db", done, "--resume"}, "is already complete");
+    expectRefused({"simulate", "--db", done, "--resume", "--preset", "paper-2012"},
+                  "--preset: a resumed run keeps its own");
+    expectRefused({"simulate", "--speed", "-1"}, "--speed: -1 is outside");
+    const QString garbage = write(QStringLiteral("garbage.sqlite"), QByteArray("not a database").repeated(500));
+    expectRefused({"simulate", "--db", garbage}, "is damaged or not a TrueTurn database");
 }
 
 TEST_F(SimulateLoop, AStoredRunHasItsPartsMeasurementsAndCorrections) {
