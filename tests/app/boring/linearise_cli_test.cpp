@@ -3,15 +3,15 @@
 
 #include <QFile>
 #include <QJsonArray>
-#include <QTemporaryDir>
 #include <cmath>
 #include <random>
 
-#include "cli_runner.h"
+#include "cli_test.h"
 
 namespace {
 
 using tt::test::CliResult;
+using tt::test::expectRefused;
 using tt::test::runTrueturn;
 
 // A known degree-3 characteristic of a 12-bit mandrel: code = 2047.5 + 3 d + 2e-4 d² + 3e-6 d³
@@ -30,16 +30,8 @@ double inverse(double code) {
     return 0.5 * (lo + hi);
 }
 
-class LineariseCommand : public ::testing::Test {
+class LineariseCommand : public tt::test::CliTest {
 protected:
-    QString write(const QString& name, const QByteArray& content) {
-        const QString path = m_dir.filePath(name);
-        QFile file(path);
-        EXPECT_TRUE(file.open(QIODevice::WriteOnly));
-        file.write(content);
-        return path;
-    }
-
     /// 41 points over ±500 µm with ADC noise of 1.5 codes RMS.
     QString noisyCubic(double (*code)(double) = cubic) {
         std::mt19937_64 rng(42);
@@ -51,15 +43,6 @@ protected:
         }
         return write(QStringLiteral("points.csv"), csv);
     }
-
-    void expectRefused(const QStringList& args, const QString& phrase) {
-        const CliResult r = runTrueturn(args);
-        EXPECT_EQ(r.exitCode, 2) << qPrintable(r.err);
-        EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0) << qPrintable(r.err);
-        EXPECT_TRUE(r.err.contains(phrase)) << "expected '" << qPrintable(phrase) << "' in: " << qPrintable(r.err);
-    }
-
-    QTemporaryDir m_dir;
 };
 
 TEST_F(LineariseCommand, RecoversAKnownCubicAndPicksDegreeThree) {
