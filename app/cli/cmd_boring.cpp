@@ -1,4 +1,3 @@
-#include <QFile>
 #include <QJsonObject>
 #include <QJsonValue>
 #include <QString>
@@ -7,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/cli/command.h"
+#include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "config/boring_config.h"
 #include "core/sim/boring_experiment.h"
@@ -87,17 +87,15 @@ void printText(const QString& preset, const core::BoringScenario& s, const core:
 }
 
 void writeTrace(const QString& path, const core::BoringResult& r) {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        throw std::runtime_error(QStringLiteral("cannot write %1: %2").arg(path, file.errorString()).toStdString());
-    QTextStream out(&file);
+    QByteArray csv;
+    QTextStream out(&csv);
     out << "time_s,z_mm,diameter_error_mm,deflection_mm,offset_mm,force_n,estimated_force_n\n";
     for (const core::BoringTracePoint& p : r.trace)
         out << p.timeS << ',' << p.zMm << ',' << p.diameterErrorMm << ',' << p.deflectionMm << ',' << p.offsetMm << ','
             << p.forceN << ',' << (std::isfinite(p.estimatedForceN) ? QString::number(p.estimatedForceN) : QString())
             << '\n';
     out.flush();
-    if (out.status() != QTextStream::Ok) throw std::runtime_error("cannot write " + path.toStdString());
+    writeOutputFile(path, csv);
 }
 
 int runBoring(const QStringList& arguments) {

@@ -1,4 +1,3 @@
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -8,6 +7,7 @@
 #include <stdexcept>
 
 #include "app/cli/command.h"
+#include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "config/json_eigen.h"
 #include "config/preset_library.h"
@@ -27,13 +27,11 @@ struct FitOutcome {
 };
 
 config::ProfileSamples readSamples(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw UsageError(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()).toStdString());
+    const QByteArray text = readInputFile(path);
     try {
-        return config::parseProfileCsv(file.readAll());
+        return config::parseProfileCsv(text);
     } catch (const std::invalid_argument& e) {
-        throw UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.what())).toStdString());
+        throw inputError(path, e.what());
     }
 }
 
@@ -43,7 +41,7 @@ FitOutcome fit(const QString& path, const config::ProfileSamples& s, int degree)
         core::DegreeSelection selection = core::fitPolynomialRegressionAutoDegree(s.xMm, s.errorMm);
         return {std::move(selection.fit), std::move(selection.candidates)};
     } catch (const std::invalid_argument& e) {
-        throw UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.what())).toStdString());
+        throw inputError(path, e.what());
     }
 }
 
@@ -127,10 +125,7 @@ void savePreset(const QString& target, const QString& source, const core::Polyno
                       .arg(f.r2, 0, 'g', 4)
                       .arg(f.residualSigma, 0, 'g', 4));
     preset.insert(QStringLiteral("systematic_model"), section);
-    QFile file(target);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) ||
-        file.write(QJsonDocument(preset).toJson(QJsonDocument::Indented)) < 0 || !file.flush())
-        throw std::runtime_error(QStringLiteral("cannot write %1: %2").arg(target, file.errorString()).toStdString());
+    writeOutputFile(target, QJsonDocument(preset).toJson(QJsonDocument::Indented));
 }
 
 /// `--preset`: shows the systematic model stored in a preset (the Table 1 groups or a saved fit).

@@ -1,5 +1,4 @@
 #include <QDateTime>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -8,6 +7,7 @@
 #include <stdexcept>
 
 #include "app/cli/command.h"
+#include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "core/calibration/calibration_csv.h"
 #include "core/calibration/linearisation_image.h"
@@ -18,14 +18,11 @@ namespace tt::cli {
 namespace {
 
 std::vector<core::CalibrationPoint> readPoints(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw UsageError(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()).toStdString());
-    const QByteArray bytes = file.readAll();
+    const QByteArray bytes = readInputFile(path);
     try {
         return core::parseCalibrationCsv(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
     } catch (const std::invalid_argument& e) {
-        throw UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.what())).toStdString());
+        throw inputError(path, e.what());
     }
 }
 
@@ -79,12 +76,6 @@ QJsonObject fitJson(const QString& path, const std::vector<core::CalibrationPoin
     return out;
 }
 
-void writeFile(const QString& path, const QByteArray& bytes) {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size() || !file.flush())
-        throw std::runtime_error(QStringLiteral("cannot write %1: %2").arg(path, file.errorString()).toStdString());
-}
-
 /// Writes the table in the format the extension names; returns {format, image CRC}.
 QJsonObject writeTable(const QString& path, const core::LinearisationTable& table, const core::TableImageInfo& info) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -96,7 +87,7 @@ QJsonObject writeTable(const QString& path, const core::LinearisationTable& tabl
         bytes = QByteArray::fromStdString(core::tableToCHeader(table, info));
     else
         bytes = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
-    writeFile(path, bytes);
+    writeOutputFile(path, bytes);
     return QJsonObject{
         {QStringLiteral("file"), path},
         {QStringLiteral("format"), suffix},
@@ -184,18 +175,17 @@ int runLinearise(const QStringList& arguments) {
     try {
         fit = core::fitCharacteristic(points, bits, degree);
     } catch (const core::LinearisationRefused& e) {
-        throw UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.what())).toStdString());
+        throw inputError(path, e.what());
     }
     if (!fit.monotonicity.monotonic) {
         if (parser.json()) printJson(fitJson(path, points, fit));
-        throw UsageError(
-            QStringLiteral("%1: %2").arg(path, QString::fromStdString(fit.monotonicity.message)).toStdString());
+        throw inputError(path, fit.monotonicity.message);
     }
     core::Linearisation lin;
     try {
         lin = core::linearise(points, bits, degree);
     } catch (const core::LinearisationRefused& e) {
-        throw UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(e.what())).toStdString());
+        throw inputError(path, e.what());
     }
     info.degree = static_cast<std::uint8_t>(lin.fit.degree);
     const QJsonObject written = out.isEmpty() ? QJsonObject{} : writeTable(out, lin.table, info);

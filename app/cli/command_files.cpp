@@ -1,0 +1,25 @@
+#include "app/cli/command_files.h"
+
+#include <QFile>
+#include <stdexcept>
+
+namespace tt::cli {
+
+QByteArray readInputFile(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        throw UsageError(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()).toStdString());
+    return file.readAll();
+}
+
+void writeOutputFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size() || !file.flush())
+        throw std::runtime_error(QStringLiteral("cannot write %1: %2").arg(path, file.errorString()).toStdString());
+}
+
+UsageError inputError(const QString& path, const std::string& what) {
+    return UsageError(QStringLiteral("%1: %2").arg(path, QString::fromStdString(what)).toStdString());
+}
+
+}  // namespace tt::cli
