@@ -8,7 +8,9 @@
 
 #include "app/gui_options.h"
 #include "core/storage/database_location.h"
+#include "devices/api/plugin_folder.h"
 #include "ui/app_state.h"
+#include "ui/devices/terminal_devices.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/prompt.h"
@@ -60,10 +62,16 @@ int runGui(int argc, char** argv) {
     else
         language.apply(options.language);
 
+    // The devices before the window, so every page sees the same instances.
+    ui::TerminalDevices devices(devices::defaultPluginFolder());
+    for (const QString& problem : devices.problems())
+        std::fprintf(stderr, "trueturn: devices: %s\n", qPrintable(problem));
+
     ui::AppState state;
     ui::DialogPrompt prompt;
     ui::AppContext context{&prompt, &state, &language,
-                           options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath};
+                           options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath,
+                           &devices.manager()};
     ui::MainWindow window(context);
     for (ui::PageId id : ui::kAllPages)
         if (ui::pageKey(id) == options.page) window.showPage(id);

@@ -19,8 +19,8 @@ struct AppContext {
     AppState* state = nullptr;
     LanguageSwitcher* language = nullptr;
     QString databasePath;  ///< SQLite file (or PostgreSQL connection name) of the run history
-    /// The device instances (gauge, probe, drive readout, CNC output); may be null: the Devices
-    /// page then makes one and puts it here.
+    /// The device instances (gauge, probe, drive readout, CNC output), made before the main window
+    /// (app/gui.cpp: TerminalDevices); required by the Devices page, used by the Run page's real lathe.
     devices::DeviceManager* devices = nullptr;
 };
 

@@ -8,6 +8,7 @@
 #include <QStatusBar>
 #include <QToolButton>
 
+#include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -21,7 +22,8 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite")};
+    devices::DeviceManager devices;
+    AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite"), &devices};
 };
 
 TEST_F(MainWindowTest, VisitsEveryPageByItsNavigationButtonAndGrabsIt) {

@@ -17,9 +17,9 @@
 #include <QStackedWidget>
 #include <QStyle>
 #include <QVBoxLayout>
+#include <stdexcept>
 
 #include "devices/api/device_manager.h"
-#include "devices/api/plugin_folder.h"
 #include "ui/app_state.h"
 #include "ui/devices/device_status_bridge.h"
 #include "ui/devices/settings_form.h"
@@ -111,15 +111,8 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
       m_statsTitle(new QLabel(this)),
       m_stats(new QLabel(this)) {
     m_manager = context.devices;
-    if (!m_manager) {
-        m_ownManager = std::make_unique<devices::DeviceManager>();
-        m_manager = m_ownManager.get();
-        m_manager->loadPlugins(devices::defaultPluginFolder());
-        QSettings settings;
-        m_manager->restore(settings);
-        m_manager->openAll();
-        context.devices = m_manager;
-    }
+    if (!m_manager)
+        throw std::invalid_argument("the Devices page needs the application's device manager (AppContext::devices)");
     if (context.state) m_bridge = new DeviceStatusBridge(*m_manager, *context.state, this);
 
     buildUi();
@@ -168,7 +161,6 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
 DevicesPage::~DevicesPage() {
     m_testTimer.stop();
     if (m_testDevice) m_testDevice->close();
-    if (context().devices == m_ownManager.get()) context().devices = nullptr;
 }
 
 QString DevicesPage::title() const {

@@ -34,9 +34,8 @@ class SettingsForm;
 /// types), adding and removing them, each one's settings as a form drawn from its plugin's
 /// schema with the problems shown under the fields, Test connection, and the live value, state,
 /// last error and counters. Settings persist (QSettings) when applied; Revert undoes unapplied
-/// edits. Uses the application's DeviceManager (AppContext::devices); without one it makes its
-/// own (plugins from the folder next to the executable, saved instances restored and opened) and
-/// publishes it in the context. Keeps the device badge and status bar up to date.
+/// edits. Uses the application's DeviceManager (AppContext::devices, required: std::invalid_argument
+/// without one; app/gui.cpp makes it before the window). Keeps the device badge and status bar up to date.
 class DevicesPage : public Page {
     Q_OBJECT
 public:
@@ -76,7 +75,6 @@ private:
     QString typeName(const QString& pluginId, devices::DeviceKind kind) const;
 
     devices::DeviceManager* m_manager = nullptr;
-    std::unique_ptr<devices::DeviceManager> m_ownManager;
     DeviceStatusBridge* m_bridge = nullptr;
     std::optional<Selection> m_selection;
     QVariantMap m_savedValues;

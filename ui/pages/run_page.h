@@ -1,29 +1,22 @@
 #pragma once
 
-#include <QVector>
-
-#include "core/loop/loop_events.h"
 #include "ui/page.h"
 #include "ui/run/run_settings.h"
 
-class QCheckBox;
-class QComboBox;
-class QLabel;
 class QListWidget;
-class QPushButton;
-class QSpinBox;
+class QTabWidget;
 
 namespace tt::ui {
 
 class ManualEntryPanel;
 class ProfilePanel;
 class RunSession;
+class ShaftRunPanel;
 
-/// The operator's main page: the closed loop on the built-in lathe simulator with the run history
-/// (paper 000). Start / Pause / Stop, the controller, the delay z and the speed; the live profile of the
-/// last part with the tolerance band, the systematic model and the correction path; a history strip
-/// of the error at each control point; the loop and the devices in plain words; the alarms; manual
-/// entry of diameters. The loop runs in its own thread (RunSession), so the window never waits.
+/// The operator's main page: one tab per kind of closed loop. The first tab is run-to-run control of the
+/// shaft profile (ShaftRunPanel: the loop on the built-in simulated lathe or on the real lathe through the
+/// devices of the Devices page, with the run history, paper 000). Another loop is one more tab: add it to
+/// tabs() in the constructor and name it in retranslate().
 class RunPage : public Page {
     Q_OBJECT
 public:
@@ -32,56 +25,18 @@ public:
     QString title() const override;
     void retranslate() override;
 
-    RunSession& session() { return *m_session; }
-    ProfilePanel* profilePanel() const { return m_profile; }
-    ManualEntryPanel* manualEntry() const { return m_manual; }
-    QListWidget* alarms() const { return m_alarms; }
-    /// The settings the controls hold now.
+    QTabWidget* tabs() const { return m_tabs; }
+    ShaftRunPanel& shaft() { return *m_shaft; }
+    RunSession& session();
+    ProfilePanel* profilePanel() const;
+    ManualEntryPanel* manualEntry() const;
+    QListWidget* alarms() const;
+    /// The settings the shaft tab's controls hold now.
     RunSettings settings() const;
 
 private:
-    QWidget* buildControls();
-    QWidget* buildSide();
-    void onStart();
-    void onPauseContinue();
-    void onStop();
-    void onStarted(const RunLayout& layout);
-    void onStartFailed(const QString& reason);
-    void onSnapshot(const LoopSnapshot& snapshot);
-    void onLoopEvent(const core::LoopEvent& event);
-    void addAlarm(const QString& text, bool severe);
-    void updateControls();
-    void updateTexts();
-    QString stateText() const;
-    QString deviceText() const;
-
-    RunSession* m_session;
-    LoopSnapshot m_snapshot;
-    bool m_haveRun = false;
-    RunLayout m_layout;
-
-    QPushButton* m_start;
-    QPushButton* m_pause;
-    QPushButton* m_stop;
-    QLabel* m_presetLabel;
-    QComboBox* m_preset;
-    QLabel* m_controllerLabel;
-    QComboBox* m_controller;
-    QLabel* m_delayLabel;
-    QSpinBox* m_delay;
-    QLabel* m_speedLabel;
-    QComboBox* m_speed;
-    QLabel* m_partCounter;
-    ProfilePanel* m_profile;
-    QLabel* m_stateTitle;
-    QLabel* m_state;
-    QLabel* m_detail;
-    QLabel* m_devices;
-    QCheckBox* m_manualMode;
-    ManualEntryPanel* m_manual;
-    QPushButton* m_skip;
-    QLabel* m_alarmsTitle;
-    QListWidget* m_alarms;
+    QTabWidget* m_tabs;
+    ShaftRunPanel* m_shaft;
 };
 
 }  // namespace tt::ui

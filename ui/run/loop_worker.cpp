@@ -15,6 +15,7 @@
 #include "core/sim/run_to_run_analysis.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
+#include "ui/run/lathe_link.h"
 #include "ui/tools/database_connection.h"
 
 namespace tt::ui {
@@ -37,12 +38,24 @@ private:
 /// Everything one run is made of, in the order it must be built and torn down.
 struct LoopWorker::Run {
     config::LoopScenario scenario;
-    core::ScaledClock clock;
-    std::unique_ptr<core::LatheShop> shop;
+    core::ScaledClock simulatedClock;
+    const core::Clock* clock = &simulatedClock;  ///< the loop's time: simulated, or the real lathe's wall clock
+    std::unique_ptr<core::LatheShop> shop;       ///< the built-in simulated lathe
+    std::shared_ptr<const LathePorts> lathe;     ///< the real lathe's ports
     core::ManualGauge manual;
     std::unique_ptr<core::SelectableGauge> gauge;
     std::unique_ptr<Relay> relay;
     std::unique_ptr<core::LoopEngine> engine;
+
+    core::MachineCycle& machine() {
+        return lathe ? static_cast<core::MachineCycle&>(*lathe->machine) : shop->station().machine();
+    }
+    core::CorrectionOutput& output() {
+        return lathe ? static_cast<core::CorrectionOutput&>(*lathe->output) : shop->station().output();
+    }
+    core::DiameterGauge& automaticGauge() {
+        return lathe ? static_cast<core::DiameterGauge&>(*lathe->gauge) : shop->station().gauge();
+    }
 };
 
 LoopWorker::LoopWorker() {
@@ -68,7 +81,33 @@ void LoopWorker::openHistory(const QString& path) {
     m_openDatabasePath = path;
 }
 
-void LoopWorker::start(const RunSettings& settings) {
+void LoopWorker::build(Run& run, const RunSettings& settings, std::shared_ptr<const LathePorts> lathe) {
+    run.scenario = config::loadLoopScenario(settings.preset, settings.delay);
+    if (settings.machine == Machine::RealLathe) {
+        if (!lathe) throw std::invalid_argument(tr("the real lathe's devices are not connected").toStdString());
+        if (lathe->outputNominalDiameterMm &&
+            std::fabs(*lathe->outputNominalDiameterMm - run.scenario.nominalDiameterMm) > 0.0005)
+            throw std::invalid_argument(tr("the CNC output “%1” writes programs for a diameter of %2 mm, the set-up "
+                                           "%3 turns %4 mm; correct the nominal diameter on the Devices page or "
+                                           "choose another set-up")
+                                            .arg(lathe->outputName)
+                                            .arg(*lathe->outputNominalDiameterMm, 0, 'f', 3)
+                                            .arg(settings.preset)
+                                            .arg(run.scenario.nominalDiameterMm, 0, 'f', 3)
+                                            .toStdString());
+        run.lathe = std::move(lathe);
+        run.clock = run.lathe->clock.get();
+    } else {
+        run.simulatedClock.setSpeed(settings.speed);
+        run.shop = std::make_unique<core::LatheShop>(run.scenario.shopSpec(settings.seed), run.simulatedClock);
+        run.shop->station().setKeptParts(4);
+        run.shop->station().setAutomaticGauge(!settings.manualEntry);
+    }
+    run.gauge = std::make_unique<core::SelectableGauge>(run.automaticGauge(), run.manual);
+    run.gauge->setManual(settings.manualEntry);
+}
+
+void LoopWorker::start(const RunSettings& settings, std::shared_ptr<const LathePorts> lathe) {
     if (m_run && m_run->engine->state() != core::LoopState::Idle) {
         emit startFailed(tr("A run is already going; stop it first."));
         return;
@@ -81,13 +120,7 @@ void LoopWorker::start(const RunSettings& settings) {
     }
     try {
         auto run = std::make_unique<Run>();
-        run->scenario = config::loadLoopScenario(settings.preset, settings.delay);
-        run->clock.setSpeed(settings.speed);
-        run->shop = std::make_unique<core::LatheShop>(run->scenario.shopSpec(settings.seed), run->clock);
-        run->shop->station().setKeptParts(4);
-        run->shop->station().setAutomaticGauge(!settings.manualEntry);
-        run->gauge = std::make_unique<core::SelectableGauge>(run->shop->station().gauge(), run->manual);
-        run->gauge->setManual(settings.manualEntry);
+        build(*run, settings, std::move(lathe));
 
         const core::ControllerKind kind = core::controllerKindFromName(settings.controller.toStdString());
         const core::RunToRunPlant plant = core::buildRunToRunPlant(run->scenario.control.plant);
@@ -96,17 +129,21 @@ void LoopWorker::start(const RunSettings& settings) {
                                       : run->scenario.control.ewma.weight;
         const core::LoopConfig loop = run->scenario.loopConfig(kind != core::ControllerKind::Open, std::nullopt);
         run->engine = std::make_unique<core::LoopEngine>(
-            loop,
-            core::LoopPorts{run->shop->station().machine(), run->shop->station().output(), *run->gauge, run->clock,
-                            m_history.get()},
+            loop, core::LoopPorts{run->machine(), run->output(), *run->gauge, *run->clock, m_history.get()},
             core::makeRunToRunController(run->scenario.control, plant, kind, ewmaWeight));
         run->relay = std::make_unique<Relay>(*this);
         run->engine->setListener(run->relay.get());
 
-        const QJsonObject settingsJson{
+        QJsonObject settingsJson{
             {QStringLiteral("source"), QStringLiteral("gui")},        {QStringLiteral("preset"), settings.preset},
             {QStringLiteral("controller"), settings.controller},      {QStringLiteral("delay"), run->scenario.delay()},
             {QStringLiteral("seed"), QString::number(settings.seed)}, {QStringLiteral("ewma_weight"), ewmaWeight}};
+        if (run->lathe) {
+            settingsJson.insert(QStringLiteral("machine"), QStringLiteral("real-lathe"));
+            settingsJson.insert(QStringLiteral("cnc_output"), run->lathe->outputName);
+            settingsJson.insert(QStringLiteral("gauge"),
+                                run->lathe->gaugeName.isEmpty() ? QStringLiteral("by hand") : run->lathe->gaugeName);
+        }
         core::RunDescription description{settings.preset.toStdString(),
                                          settings.controller.toStdString(),
                                          run->scenario.delay(),
@@ -125,6 +162,7 @@ void LoopWorker::start(const RunSettings& settings) {
         layout.delay = loop.delayParts;
         layout.controller = settings.controller;
         layout.preset = settings.preset;
+        layout.machine = settings.machine;
         if (run->scenario.systematicModel)
             for (double z = 0.0; z <= loop.partLengthMm + 1e-9; z += loop.partLengthMm / 130.0) {
                 layout.systematicZMm.push_back(z);
@@ -159,14 +197,20 @@ void LoopWorker::stop() {
 }
 
 void LoopWorker::setSpeed(double speed) {
-    if (!m_run || !std::isfinite(speed) || speed < 0.0) return;
-    m_run->clock.setSpeed(speed);
+    if (!m_run || m_run->lathe || !std::isfinite(speed) || speed < 0.0) return;  // the real lathe keeps real time
+    m_run->simulatedClock.setSpeed(speed);
 }
 
 void LoopWorker::setManualEntry(bool manual) {
     if (!m_run) return;
+    if (m_run->lathe && !manual && m_run->gauge->manual()) {
+        // Readings the gauge sent while the diameters were typed by hand belong to no point.
+        if (const std::size_t dropped = m_run->lathe->gauge->discardPending())
+            emit notice(tr("%n gauge reading(s) taken while the diameters were typed by hand were not used.", nullptr,
+                           static_cast<int>(dropped)));
+    }
     m_run->gauge->setManual(manual);
-    m_run->shop->station().setAutomaticGauge(!manual);
+    if (m_run->shop) m_run->shop->station().setAutomaticGauge(!manual);
     publish();
 }
 
@@ -180,7 +224,7 @@ void LoopWorker::submitDiameters(qint64 partNumber, const QVector<double>& diame
         emit notice(tr("Part %1 is not the part waiting for its diameters; nothing was taken.").arg(partNumber));
         return;
     }
-    const double now = m_run->clock.nowS();
+    const double now = m_run->clock->nowS();
     for (double d : diametersMm)
         m_run->manual.push({d, now});
     tick();
@@ -192,8 +236,8 @@ void LoopWorker::skipMeasurement() {
 }
 
 void LoopWorker::silenceGauge(double seconds) {
-    if (!m_run) return;
-    const double now = m_run->clock.nowS();
+    if (!m_run || !m_run->shop) return;
+    const double now = m_run->clock->nowS();
     m_run->shop->station().silenceGauge(now, now + seconds);
     tick();
 }
@@ -213,7 +257,7 @@ void LoopWorker::tick() {
     for (int i = 0; i < kMaxStepsPerTick; ++i) {
         engine.step();
         if (engine.state() == core::LoopState::Idle || engine.state() == core::LoopState::Fault) break;
-        if (m_run->shop->station().nextEventTimeS() > m_run->clock.nowS()) break;
+        if (!m_run->shop || m_run->shop->station().nextEventTimeS() > m_run->clock->nowS()) break;
     }
     publish();
     if (engine.state() == core::LoopState::Idle) m_timer->stop();
@@ -230,14 +274,16 @@ void LoopWorker::publish() {
     if (const auto part = engine.partAwaitingMeasurement()) s.awaitingPart = *part;
     s.nextPoint = static_cast<int>(engine.nextMeasuredPoint().value_or(0));
     s.manualEntry = m_run->gauge->manual();
-    s.simulatedS = m_run->clock.nowS();
+    s.realLathe = m_run->lathe != nullptr;
+    s.simulatedS = m_run->clock->nowS();
     s.gauge = m_run->gauge->health();
-    s.cnc = m_run->shop->station().output().health();
+    s.cnc = m_run->output().health();
     if (const auto id = engine.runId()) s.runId = *id;
     const bool changed = s.state != m_last.state || s.detail != m_last.detail || s.nextPart != m_last.nextPart ||
                          s.partsFinished != m_last.partsFinished || s.awaitingPart != m_last.awaitingPart ||
                          s.nextPoint != m_last.nextPoint || s.manualEntry != m_last.manualEntry ||
                          s.gauge.state != m_last.gauge.state || s.cnc.state != m_last.cnc.state ||
+                         s.gauge.message != m_last.gauge.message || s.cnc.message != m_last.cnc.message ||
                          std::floor(s.simulatedS / 60.0) != std::floor(m_last.simulatedS / 60.0);
     m_last = s;
     if (changed) emit snapshot(s);
@@ -245,7 +291,7 @@ void LoopWorker::publish() {
 
 void LoopWorker::onEvent(const core::LoopEvent& event) {
     emit loopEvent(event);
-    if (event.kind == core::LoopEvent::Kind::PartFinished && m_run) {
+    if (event.kind == core::LoopEvent::Kind::PartFinished && m_run && m_run->shop) {
         const auto& parts = m_run->shop->station().machinedParts();
         if (!parts.empty() && parts.back().partNumber == event.partNumber) {
             const core::TurnedPart& part = parts.back();
@@ -257,7 +303,8 @@ void LoopWorker::onEvent(const core::LoopEvent& event) {
             emit partProfile(event.partNumber, z, error);
         }
     }
-    if (event.kind == core::LoopEvent::Kind::PartMeasured && m_run) m_run->shop->station().forgetPart(event.partNumber);
+    if (event.kind == core::LoopEvent::Kind::PartMeasured && m_run && m_run->shop)
+        m_run->shop->station().forgetPart(event.partNumber);
 }
 
 }  // namespace tt::ui

@@ -18,10 +18,13 @@ class SqlHistoryStore;
 
 namespace tt::ui {
 
-/// The closed loop in its own thread: owns the simulated shop, the controller, the engine and the
-/// history connection (QtSql: used only from this thread), and steps the engine from a timer so the
-/// window never waits for it. Every call comes through queued slots; everything it learns goes out
-/// through signals (queued to the GUI thread).
+struct LathePorts;
+
+/// The closed loop in its own thread: owns the machine's ports (the simulated shop, or the real lathe's
+/// relays to the devices in the GUI thread), the controller, the engine and the history connection (QtSql:
+/// used only from this thread), and steps the engine from a timer so the window never waits for it. Every
+/// call comes through queued slots; everything it learns goes out through signals (queued to the GUI
+/// thread).
 class LoopWorker : public QObject {
     Q_OBJECT
 public:
@@ -29,14 +32,15 @@ public:
     ~LoopWorker() override;
 
 public slots:
-    /// Sets up and starts a run; failures (bad preset, history that cannot be opened) are reported
-    /// through startFailed and nothing starts.
-    void start(const tt::ui::RunSettings& settings);
+    /// Sets up and starts a run; failures (bad preset, history that cannot be opened, a CNC output set up
+    /// for another diameter) are reported through startFailed and nothing starts. `lathe`: the real lathe's
+    /// ports (settings.machine == RealLathe), null for the built-in simulated lathe.
+    void start(const tt::ui::RunSettings& settings, std::shared_ptr<const tt::ui::LathePorts> lathe = {});
     void pause();
     void continueRun();
     void stop();
     void setSpeed(double speed);
-    /// Diameters come by hand (true) or from the simulated gauge (false).
+    /// Diameters come by hand (true) or from the gauge (false).
     void setManualEntry(bool manual);
     /// The diameters of part `partNumber` at the control points, typed in by the operator (mm).
     void submitDiameters(qint64 partNumber, const QVector<double>& diametersMm);
@@ -52,7 +56,7 @@ signals:
     void startFailed(const QString& reason);
     void snapshot(const tt::ui::LoopSnapshot& snapshot);
     void loopEvent(const tt::core::LoopEvent& event);
-    /// The true profile of a simulated part as it came off the machine (diameter error, mm).
+    /// The true profile of a simulated part as it came off the machine (diameter error, mm; simulated lathe).
     void partProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
     /// A manual entry was not taken (wrong part, no run), in plain words.
     void notice(const QString& text);
@@ -65,6 +69,7 @@ private:
     void publish();
     void onEvent(const core::LoopEvent& event);
     void openHistory(const QString& path);
+    void build(Run& run, const RunSettings& settings, std::shared_ptr<const LathePorts> lathe);
 
     QTimer* m_timer = nullptr;
     std::unique_ptr<Run> m_run;

@@ -11,8 +11,13 @@
 
 namespace tt::ui {
 
+/// Where the parts are made: the built-in simulated lathe (its own CNC, gauge and part cycle) or the real
+/// lathe (the CNC output and gauge chosen from the Devices page, parts confirmed by the operator).
+enum class Machine { Simulated, RealLathe };
+
 /// What the operator chose for a run on the Run page.
 struct RunSettings {
+    Machine machine = Machine::Simulated;
     QString preset = QStringLiteral("paper-2012-group1");  ///< scenario preset (physical lathe)
     QString controller = QStringLiteral("lqg");            ///< "lqg", "ewma", "open"
     int delay = 2;                                         ///< transport delay z, parts
@@ -20,6 +25,8 @@ struct RunSettings {
     std::uint64_t seed = 1;                                ///< the simulator's random sources
     bool manualEntry = false;                              ///< diameters typed in instead of the simulated gauge
     QString databasePath;                                  ///< SQLite history file; empty: nothing stored
+    QString outputDeviceId;                                ///< real lathe: the CNC output (id on the Devices page)
+    QString gaugeDeviceId;  ///< real lathe: the gauge (id on the Devices page); empty: diameters typed by hand
 };
 
 /// The loop as the page shows it, sent by the loop thread after every change.
@@ -31,6 +38,7 @@ struct LoopSnapshot {
     std::optional<qint64> awaitingPart;  ///< the part waiting longest for its diameters
     int nextPoint = 0;                   ///< its next control point
     bool manualEntry = false;
+    bool realLathe = false;   ///< the run is on the real lathe (its time is the wall clock)
     double simulatedS = 0.0;  ///< simulated time of the run, s
     core::DeviceHealth gauge;
     core::DeviceHealth cnc;
@@ -49,6 +57,7 @@ struct RunLayout {
     int delay = 1;
     QString controller;
     QString preset;
+    Machine machine = Machine::Simulated;
 };
 
 }  // namespace tt::ui

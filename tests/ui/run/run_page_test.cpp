@@ -18,6 +18,7 @@
 #include <functional>
 
 #include "core/storage/database.h"
+#include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -54,7 +55,8 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite"))};
+    devices::DeviceManager devices;
+    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 
 TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {

@@ -1,0 +1,118 @@
+// The operator terminal's devices (ui/devices/terminal_devices.h), as app/gui.cpp makes them before the
+// main window: a first start gets one built-in simulator instance per device kind, opened and saved; later
+// starts restore what was saved (also an empty list: nothing is re-added); every page sees the same manager,
+// and the device badge follows it.
+#include <gtest/gtest.h>
+
+#include <QComboBox>
+#include <QLabel>
+#include <QSettings>
+#include <QTest>
+#include <ostream>
+
+#include "devices/api/device_manager.h"
+#include "scripted_prompt.h"
+#include "ui/app_state.h"
+#include "ui/devices/terminal_devices.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/pages/devices_page.h"
+#include "ui/pages/run_page.h"
+
+// Readable QString values in failure messages.
+inline void PrintTo(const QString& text, std::ostream* os) {
+    *os << '"' << text.toStdString() << '"';
+}
+
+namespace tt::ui {
+namespace {
+
+const QString kBuildPlugins = QStringLiteral(TRUETURN_BINARY_DIR "/lib/trueturn/plugins");
+
+class TerminalDevicesTest : public ::testing::Test {
+protected:
+    void SetUp() override { QSettings().clear(); }
+};
+
+TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStartsRestoreWhatWasSaved) {
+    QStringList firstIds;
+    {
+        TerminalDevices devices(kBuildPlugins);
+        EXPECT_TRUE(devices.firstStart());
+        EXPECT_TRUE(devices.problems().isEmpty()) << devices.problems().join(QStringLiteral("; ")).toStdString();
+        devices::DeviceManager& m = devices.manager();
+        ASSERT_EQ(m.deviceIds().size(), 4);
+        for (devices::DeviceKind kind : devices::allDeviceKinds()) {
+            const QStringList ofKind = m.devicesOfKind(kind);
+            ASSERT_EQ(ofKind.size(), 1) << devices::kindKey(kind).toStdString();
+            const devices::DeviceEntry* e = m.entry(ofKind.front());
+            EXPECT_EQ(e->pluginId, QStringLiteral("simulator"));
+            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, 5000))
+                << "opened: " << e->device->health().message;
+        }
+        EXPECT_EQ(m.entry(m.devicesOfKind(devices::DeviceKind::Gauge).front())->name,
+                  QStringLiteral("Simulated gauge micrometer"));
+        EXPECT_EQ(m.summary().text, QStringLiteral("4 ready"));
+        firstIds = m.deviceIds();
+        // Removing one is saved at once (no page involved).
+        m.removeDevice(m.devicesOfKind(devices::DeviceKind::Probe).front());
+    }
+    {
+        TerminalDevices devices(kBuildPlugins);
+        EXPECT_FALSE(devices.firstStart());
+        QStringList expected = firstIds;
+        expected.removeAt(1);  // the probe
+        EXPECT_EQ(devices.manager().deviceIds(), expected);
+        for (const QString& id : devices.manager().deviceIds())
+            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.manager().device(id)->health().ready(); }, 5000));
+        for (const QString& id : devices.manager().deviceIds())
+            devices.manager().removeDevice(id);
+    }
+    {
+        TerminalDevices devices(kBuildPlugins);
+        EXPECT_FALSE(devices.firstStart()) << "an empty list is a choice, not a first start";
+        EXPECT_TRUE(devices.manager().deviceIds().isEmpty());
+    }
+}
+
+TEST_F(TerminalDevicesTest, APluginFolderThatIsMissingIsReportedAndTheSimulatorStillWorks) {
+    TerminalDevices devices(QStringLiteral("/nonexistent/trueturn/plugins"));
+    ASSERT_EQ(devices.problems().size(), 1);
+    EXPECT_TRUE(devices.problems().front().contains(QStringLiteral("does not exist")));
+    EXPECT_EQ(devices.manager().deviceIds().size(), 4);
+}
+
+TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
+    TerminalDevices devices(kBuildPlugins);
+    test::ScriptedPrompt prompt;
+    AppState state;
+    LanguageSwitcher language;
+    AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite"),
+                       &devices.manager()};
+    MainWindow window(context);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return devices.manager().summary().text == QStringLiteral("4 ready"); }, 5000));
+    auto* devicesPage = static_cast<DevicesPage*>(window.page(PageId::Devices));
+    EXPECT_EQ(&devicesPage->manager(), &devices.manager());
+    EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
+    EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("DeviceBadge"))->text(), QStringLiteral("Devices: ready"));
+    EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 4 ready"));
+    // The Run page (built before the Devices page) offers the same instances for the real lathe.
+    auto* run = static_cast<RunPage*>(window.page(PageId::Run));
+    auto* output = run->findChild<QComboBox*>(QStringLiteral("cncOutputCombo"));
+    ASSERT_EQ(output->count(), 1);
+    EXPECT_EQ(output->itemData(0).toString(),
+              devices.manager().devicesOfKind(devices::DeviceKind::CorrectionOutput).front());
+    EXPECT_EQ(output->itemText(0), QStringLiteral("Simulated CNC output — ready"));
+    auto* gauge = run->findChild<QComboBox*>(QStringLiteral("gaugeCombo"));
+    ASSERT_EQ(gauge->count(), 2);
+    EXPECT_EQ(gauge->itemText(1), QStringLiteral("Typed in by hand"));
+    // A device's trouble reaches the badge and the Run page's choice.
+    const QString gaugeId = devices.manager().devicesOfKind(devices::DeviceKind::Gauge).front();
+    devices.manager().device(gaugeId)->faultSwitches()->disconnected = true;
+    devices.manager().device(gaugeId)->open();
+    EXPECT_EQ(state.deviceTone(), AppState::Tone::Fault);
+    EXPECT_EQ(gauge->itemText(0), QStringLiteral("Simulated gauge micrometer — error"));
+}
+
+}  // namespace
+}  // namespace tt::ui

@@ -1,0 +1,53 @@
+#include "ui/devices/terminal_devices.h"
+
+#include <QSettings>
+
+#include "devices/api/device_kind.h"
+
+namespace tt::ui {
+
+namespace {
+
+const QString kSimulator = QStringLiteral("simulator");
+
+/// Name of the simulator instance of `kind` made on a first start.
+QString simulatorName(devices::DeviceKind kind) {
+    switch (kind) {
+        case devices::DeviceKind::Gauge:
+            return QStringLiteral("Simulated gauge micrometer");
+        case devices::DeviceKind::Probe:
+            return QStringLiteral("Simulated probe mandrel");
+        case devices::DeviceKind::DriveCurrent:
+            return QStringLiteral("Simulated drive-current readout");
+        case devices::DeviceKind::CorrectionOutput:
+            return QStringLiteral("Simulated CNC output");
+    }
+    return {};
+}
+
+}  // namespace
+
+TerminalDevices::TerminalDevices(const QString& pluginFolder, QObject* parent) : QObject(parent) {
+    m_manager.loadPlugins(pluginFolder);
+    m_problems << m_manager.pluginErrors();
+    QSettings settings;
+    m_firstStart = !settings.childGroups().contains(QStringLiteral("devices"));
+    if (m_firstStart) {
+        for (devices::DeviceKind kind : devices::allDeviceKinds())
+            m_manager.addDevice(kSimulator, kind, simulatorName(kind), {});
+        m_manager.save(settings);
+    } else {
+        m_problems << m_manager.restore(settings);
+    }
+    m_manager.openAll();
+    connect(&m_manager, &devices::DeviceManager::devicesChanged, this, &TerminalDevices::save);
+}
+
+TerminalDevices::~TerminalDevices() = default;
+
+void TerminalDevices::save() {
+    QSettings settings;
+    m_manager.save(settings);
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,597 @@
+#include "ui/run/shaft_run_panel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QRandomGenerator>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTime>
+#include <QVBoxLayout>
+#include <algorithm>
+
+#include "devices/api/device_manager.h"
+#include "ui/app_state.h"
+#include "ui/plot/chart.h"
+#include "ui/prompt.h"
+#include "ui/run/lathe_link.h"
+#include "ui/run/lathe_panel.h"
+#include "ui/run/manual_entry_panel.h"
+#include "ui/run/profile_panel.h"
+#include "ui/run/run_session.h"
+
+namespace tt::ui {
+
+namespace {
+
+const QStringList kPresets = {QStringLiteral("paper-2012-group1"), QStringLiteral("paper-2012-group2"),
+                              QStringLiteral("paper-2012-group3"), QStringLiteral("paper-2012")};
+const QStringList kControllers = {QStringLiteral("lqg"), QStringLiteral("ewma"), QStringLiteral("open")};
+const double kSpeeds[] = {1.0, 60.0, 360.0, 3600.0};
+constexpr int kDefaultSpeed = 2;
+constexpr int kMaxAlarms = 200;
+const QString kSimulatedKey = QStringLiteral("simulated");
+const QString kRealKey = QStringLiteral("real");
+
+AppState::Loop toAppLoop(core::LoopState s) {
+    switch (s) {
+        case core::LoopState::Running:
+            return AppState::Loop::Running;
+        case core::LoopState::Paused:
+            return AppState::Loop::Paused;
+        case core::LoopState::Fault:
+            return AppState::Loop::Fault;
+        case core::LoopState::Idle:
+            break;
+    }
+    return AppState::Loop::Idle;
+}
+
+QString healthWord(core::DeviceState state) {
+    switch (state) {
+        case core::DeviceState::Ready:
+            return ShaftRunPanel::tr("ready");
+        case core::DeviceState::Connecting:
+            return ShaftRunPanel::tr("connecting");
+        case core::DeviceState::Disconnected:
+            return ShaftRunPanel::tr("not answering");
+        case core::DeviceState::Error:
+            return ShaftRunPanel::tr("error");
+    }
+    return {};
+}
+
+QString healthText(const core::DeviceHealth& h) {
+    return h.message.empty() ? healthWord(h.state)
+                             : QStringLiteral("%1 (%2)").arg(healthWord(h.state), QString::fromStdString(h.message));
+}
+
+void setChoice(QComboBox* combo, const QString& data) {
+    const int index = combo->findData(data);
+    if (index >= 0) combo->setCurrentIndex(index);
+}
+
+}  // namespace
+
+ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
+    : QWidget(parent),
+      m_context(context),
+      m_session(new RunSession(this)),
+      m_link(new LatheLink(context.devices, this)),
+      m_start(new QPushButton(this)),
+      m_pause(new QPushButton(this)),
+      m_stop(new QPushButton(this)),
+      m_presetLabel(new QLabel(this)),
+      m_preset(new QComboBox(this)),
+      m_controllerLabel(new QLabel(this)),
+      m_controller(new QComboBox(this)),
+      m_delayLabel(new QLabel(this)),
+      m_delay(new QSpinBox(this)),
+      m_speedLabel(new QLabel(this)),
+      m_speed(new QComboBox(this)),
+      m_machineLabel(new QLabel(this)),
+      m_machine(new QComboBox(this)),
+      m_outputLabel(new QLabel(this)),
+      m_output(new QComboBox(this)),
+      m_gaugeLabel(new QLabel(this)),
+      m_gauge(new QComboBox(this)),
+      m_partCounter(new QLabel(this)),
+      m_profile(new ProfilePanel(this)),
+      m_lathePanel(new LathePanel(this)),
+      m_state(new QLabel(this)),
+      m_detail(new QLabel(this)),
+      m_devices(new QLabel(this)),
+      m_manualMode(new QCheckBox(this)),
+      m_manual(new ManualEntryPanel(this)),
+      m_skip(new QPushButton(this)),
+      m_alarmsTitle(new QLabel(this)),
+      m_alarms(new QListWidget(this)) {
+    // Left: the profile, the real lathe's part cycle, the diameters by hand (in manual mode). Right: the loop,
+    // the devices, the history strip, the alarms.
+    auto* left = new QVBoxLayout;
+    left->addWidget(m_profile, 1);
+    left->addWidget(buildDevicePicker());
+    left->addWidget(m_lathePanel);
+    left->addWidget(m_manual);
+    auto* body = new QHBoxLayout;
+    body->addLayout(left, 5);
+    body->addWidget(buildSide(), 3);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(8, 8, 8, 4);
+    layout->addWidget(buildControls());
+    layout->addWidget(buildSetupRow());
+    layout->addLayout(body, 1);
+
+    connect(m_start, &QPushButton::clicked, this, &ShaftRunPanel::onStart);
+    connect(m_pause, &QPushButton::clicked, this, &ShaftRunPanel::onPauseContinue);
+    connect(m_stop, &QPushButton::clicked, this, &ShaftRunPanel::onStop);
+    connect(m_speed, &QComboBox::activated, this,
+            [this](int index) { m_session->setSpeed(kSpeeds[std::clamp(index, 0, 3)]); });
+    connect(m_manualMode, &QCheckBox::toggled, this, [this](bool manual) {
+        m_session->setManualEntry(manual);
+        m_manual->setVisible(manual);
+        m_skip->setVisible(manual);
+        updateLathePanel();
+    });
+    connect(m_machine, &QComboBox::currentIndexChanged, this, [this] {
+        updateControls();
+        updateTexts();
+    });
+    connect(m_output, &QComboBox::currentIndexChanged, this, [this] { updateTexts(); });
+    connect(m_gauge, &QComboBox::currentIndexChanged, this, [this] {
+        // Diameters "typed in by hand" is the gauge choice without a device.
+        if (realLatheChosen() && m_gauge->currentIndex() >= 0)
+            m_manualMode->setChecked(m_gauge->currentData().toString().isEmpty());
+        updateTexts();
+    });
+    connect(m_skip, &QPushButton::clicked, m_session, &RunSession::skipMeasurement);
+    connect(m_manual, &ManualEntryPanel::diametersEntered, m_session, &RunSession::submitDiameters);
+    connect(m_manual, &ManualEntryPanel::valueRefused, this, [this](const QString& text) { addAlarm(text, true); });
+    connect(m_lathePanel, &LathePanel::partFinished, this, &ShaftRunPanel::onPartFinished);
+    connect(m_lathePanel, &LathePanel::readingRequested, this, [this] { m_link->requestReading(); });
+    connect(m_session, &RunSession::started, this, &ShaftRunPanel::onStarted);
+    connect(m_session, &RunSession::startFailed, this, &ShaftRunPanel::onStartFailed);
+    connect(m_session, &RunSession::snapshotChanged, this, &ShaftRunPanel::onSnapshot);
+    connect(m_session, &RunSession::loopEvent, this, &ShaftRunPanel::onLoopEvent);
+    connect(m_session, &RunSession::partProfile, m_profile, &ProfilePanel::onPartProfile);
+    connect(m_session, &RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
+    if (devices::DeviceManager* manager = m_context.devices) {
+        connect(manager, &devices::DeviceManager::devicesChanged, this, [this] {
+            fillDeviceChoices();
+            updateTexts();
+        });
+        connect(manager, &devices::DeviceManager::deviceChanged, this, [this](const QString& id) {
+            for (QComboBox* combo : {m_output, m_gauge})
+                if (const int index = combo->findData(id); index >= 0) combo->setItemText(index, deviceChoiceText(id));
+            updateTexts();
+        });
+    }
+
+    m_manual->setVisible(false);
+    m_skip->setVisible(false);
+    fillDeviceChoices();
+    restoreChoices();
+    retranslate();
+    updateControls();
+}
+
+ShaftRunPanel::~ShaftRunPanel() {
+    // A loop write waiting for the CNC output in this thread is refused before the loop thread is stopped.
+    m_link->disconnectDevices(tr("the Run page was closed"));
+}
+
+QWidget* ShaftRunPanel::buildControls() {
+    auto* bar = new QWidget(this);
+    auto* row = new QHBoxLayout(bar);
+    row->setContentsMargins(0, 0, 0, 4);
+    m_start->setObjectName(QStringLiteral("startButton"));
+    m_pause->setObjectName(QStringLiteral("pauseButton"));
+    m_stop->setObjectName(QStringLiteral("stopButton"));
+    m_start->setProperty("role", QStringLiteral("primary"));
+    m_stop->setProperty("role", QStringLiteral("danger"));
+    for (QPushButton* b : {m_start, m_pause, m_stop}) {
+        b->setMinimumHeight(60);
+        b->setMinimumWidth(110);
+        QFont f = b->font();
+        f.setPointSize(16);
+        b->setFont(f);
+    }
+    m_preset->setObjectName(QStringLiteral("presetCombo"));
+    m_controller->setObjectName(QStringLiteral("controllerCombo"));
+    m_delay->setObjectName(QStringLiteral("delaySpin"));
+    m_speed->setObjectName(QStringLiteral("speedCombo"));
+    m_partCounter->setObjectName(QStringLiteral("partCounter"));
+    for (const QString& p : kPresets)
+        m_preset->addItem(p, p);
+    for (int i = 0; i < kControllers.size(); ++i)
+        m_controller->addItem(QString(), kControllers[i]);
+    for (int i = 0; i < 4; ++i)
+        m_speed->addItem(QString());
+    m_speed->setCurrentIndex(kDefaultSpeed);
+    m_delay->setRange(1, 8);
+    m_delay->setValue(2);
+    m_delay->setMinimumWidth(90);
+    QFont counter = m_partCounter->font();
+    counter.setPointSize(16);
+    counter.setBold(true);
+    m_partCounter->setFont(counter);
+    row->addWidget(m_start);
+    row->addWidget(m_pause);
+    row->addWidget(m_stop);
+    row->addSpacing(12);
+    m_machine->setObjectName(QStringLiteral("machineCombo"));
+    m_machine->addItem(QString(), kSimulatedKey);
+    m_machine->addItem(QString(), kRealKey);
+    for (auto [label, field] : {std::pair<QLabel*, QWidget*>{m_machineLabel, m_machine}, {m_presetLabel, m_preset}}) {
+        row->addSpacing(8);
+        row->addWidget(label);
+        row->addWidget(field);
+    }
+    row->addStretch(1);
+    return bar;
+}
+
+QWidget* ShaftRunPanel::buildSetupRow() {
+    auto* bar = new QWidget(this);
+    auto* row = new QHBoxLayout(bar);
+    row->setContentsMargins(0, 0, 0, 4);
+    bool first = true;
+    for (auto [label, field] : {std::pair<QLabel*, QWidget*>{m_controllerLabel, m_controller},
+                                {m_delayLabel, m_delay},
+                                {m_speedLabel, m_speed}}) {
+        if (!first) row->addSpacing(8);
+        first = false;
+        row->addWidget(label);
+        row->addWidget(field);
+    }
+    row->addSpacing(16);
+    row->addWidget(m_manualMode);
+    row->addStretch(1);
+    return bar;
+}
+
+QWidget* ShaftRunPanel::buildDevicePicker() {
+    m_devicePicker = new QWidget(this);
+    m_devicePicker->setObjectName(QStringLiteral("devicePicker"));
+    auto* row = new QHBoxLayout(m_devicePicker);
+    row->setContentsMargins(0, 4, 0, 0);
+    m_output->setObjectName(QStringLiteral("cncOutputCombo"));
+    m_gauge->setObjectName(QStringLiteral("gaugeCombo"));
+    for (auto [label, combo] : {std::pair<QLabel*, QComboBox*>{m_outputLabel, m_output}, {m_gaugeLabel, m_gauge}}) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(14);
+        auto* box = new QVBoxLayout;
+        box->setSpacing(2);
+        box->addWidget(label);
+        box->addWidget(combo);
+        row->addLayout(box, 1);
+    }
+    return m_devicePicker;
+}
+
+QWidget* ShaftRunPanel::buildSide() {
+    auto* side = new QWidget(this);
+    auto* column = new QVBoxLayout(side);
+    column->setContentsMargins(12, 0, 0, 0);
+    m_state->setObjectName(QStringLiteral("loopStateText"));
+    QFont big = m_state->font();
+    big.setPointSize(18);
+    big.setBold(true);
+    m_state->setFont(big);
+    m_state->setWordWrap(true);
+    m_detail->setObjectName(QStringLiteral("loopDetail"));
+    m_detail->setWordWrap(true);
+    m_devices->setObjectName(QStringLiteral("deviceText"));
+    m_devices->setWordWrap(true);
+    m_manualMode->setObjectName(QStringLiteral("manualEntryCheck"));
+    m_manualMode->setStyleSheet(
+        QStringLiteral("QCheckBox { min-height: 40px; } QCheckBox::indicator { width: 26px; height: 26px; }"));
+    m_skip->setObjectName(QStringLiteral("skipButton"));
+    m_alarmsTitle->setObjectName(QStringLiteral("SectionTitle"));
+    m_alarms->setObjectName(QStringLiteral("alarmList"));
+    m_alarms->setWordWrap(true);
+    m_alarms->setMinimumHeight(70);
+    auto* stateRow = new QHBoxLayout;
+    stateRow->addWidget(m_state, 1);
+    stateRow->addWidget(m_partCounter, 0, Qt::AlignRight | Qt::AlignTop);
+    column->addLayout(stateRow);
+    column->addWidget(m_detail);
+    column->addWidget(m_devices);
+    column->addWidget(m_skip);
+    column->addWidget(m_profile->historyChart(), 3);
+    column->addWidget(m_alarmsTitle);
+    column->addWidget(m_alarms, 2);
+    return side;
+}
+
+void ShaftRunPanel::retranslate() {
+    m_start->setText(tr("Start"));
+    m_stop->setText(tr("Stop"));
+    m_presetLabel->setText(tr("Set-up"));
+    m_controllerLabel->setText(tr("Controller"));
+    m_delayLabel->setText(tr("Delay z, parts"));
+    m_speedLabel->setText(tr("Speed"));
+    m_controller->setItemText(0, tr("LQG"));
+    m_controller->setItemText(1, tr("EWMA"));
+    m_controller->setItemText(2, tr("Open loop"));
+    m_speed->setItemText(0, tr("×1 (6 min a part)"));
+    m_speed->setItemText(1, tr("×60 (6 s a part)"));
+    m_speed->setItemText(2, tr("×360 (1 s a part)"));
+    m_speed->setItemText(3, tr("×3600 (fastest)"));
+    m_machineLabel->setText(tr("Machine"));
+    m_machine->setItemText(0, tr("Simulated lathe (built in)"));
+    m_machine->setItemText(1, tr("Real lathe (Devices page)"));
+    m_outputLabel->setText(tr("CNC output"));
+    m_gaugeLabel->setText(tr("Diameters from"));
+    if (const int byHand = m_gauge->findData(QString()); byHand >= 0)
+        m_gauge->setItemText(byHand, tr("Typed in by hand"));
+    m_manualMode->setText(tr("Diameters by hand"));
+    m_skip->setText(tr("Part not measured"));
+    m_alarmsTitle->setText(tr("Alarms"));
+    m_profile->retranslate();
+    m_manual->retranslate();
+    m_lathePanel->retranslate();
+    updateTexts();
+}
+
+// ---- the devices to choose from ---------------------------------------------------------------------------
+
+QString ShaftRunPanel::deviceChoiceText(const QString& id) const {
+    const devices::DeviceEntry* e = m_context.devices ? m_context.devices->entry(id) : nullptr;
+    if (!e) return id;
+    return tr("%1 — %2").arg(e->name, healthWord(e->device->health().state));
+}
+
+void ShaftRunPanel::fillDeviceChoices() {
+    const QString output = m_output->currentData().toString();
+    const QString gauge = m_gauge->count() > 0 ? m_gauge->currentData().toString() : QStringLiteral("?");
+    const QSignalBlocker blockOutput(m_output);
+    const QSignalBlocker blockGauge(m_gauge);
+    m_output->clear();
+    m_gauge->clear();
+    if (devices::DeviceManager* manager = m_context.devices) {
+        for (const QString& id : manager->devicesOfKind(devices::DeviceKind::CorrectionOutput))
+            m_output->addItem(deviceChoiceText(id), id);
+        for (const QString& id : manager->devicesOfKind(devices::DeviceKind::Gauge))
+            m_gauge->addItem(deviceChoiceText(id), id);
+    }
+    m_gauge->addItem(tr("Typed in by hand"), QString());
+    setChoice(m_output, output);
+    setChoice(m_gauge, gauge);
+}
+
+void ShaftRunPanel::restoreChoices() {
+    const QSettings settings;
+    setChoice(m_machine, settings.value(QStringLiteral("run/machine"), kSimulatedKey).toString());
+    setChoice(m_output, settings.value(QStringLiteral("run/cncOutput")).toString());
+    if (settings.contains(QStringLiteral("run/gauge")))
+        setChoice(m_gauge, settings.value(QStringLiteral("run/gauge")).toString());
+}
+
+void ShaftRunPanel::saveChoices() const {
+    QSettings settings;
+    settings.setValue(QStringLiteral("run/machine"), m_machine->currentData().toString());
+    if (realLatheChosen()) {
+        settings.setValue(QStringLiteral("run/cncOutput"), m_output->currentData().toString());
+        settings.setValue(QStringLiteral("run/gauge"), m_gauge->currentData().toString());
+    }
+}
+
+bool ShaftRunPanel::realLatheChosen() const {
+    return m_machine->currentData().toString() == kRealKey;
+}
+
+// ---- commands -----------------------------------------------------------------------------------------
+
+RunSettings ShaftRunPanel::settings() const {
+    RunSettings s;
+    s.machine = realLatheChosen() ? Machine::RealLathe : Machine::Simulated;
+    s.preset = m_preset->currentData().toString();
+    s.controller = m_controller->currentData().toString();
+    s.delay = m_delay->value();
+    s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
+    s.manualEntry = m_manualMode->isChecked();
+    s.databasePath = m_context.databasePath;
+    s.seed = QRandomGenerator::global()->generate64() >> 12;
+    if (s.machine == Machine::RealLathe) {
+        s.outputDeviceId = m_output->currentData().toString();
+        s.gaugeDeviceId = m_gauge->currentData().toString();
+        if (s.gaugeDeviceId.isEmpty()) s.manualEntry = true;
+    }
+    return s;
+}
+
+void ShaftRunPanel::onStart() {
+    const RunSettings s = settings();
+    std::shared_ptr<const LathePorts> lathe;
+    if (s.machine == Machine::RealLathe) {
+        const QString problem = m_link->startProblem(s.outputDeviceId, s.gaugeDeviceId);
+        if (!problem.isEmpty()) {
+            refuseStart(problem);
+            return;
+        }
+        lathe = m_link->connectDevices(s.outputDeviceId, s.gaugeDeviceId);
+    }
+    saveChoices();
+    m_session->start(s, lathe);
+    m_start->setEnabled(false);
+}
+
+void ShaftRunPanel::refuseStart(const QString& reason) {
+    addAlarm(tr("Not started: %1").arg(reason), true);
+    if (m_context.prompt) m_context.prompt->warn(this, tr("The run cannot start"), reason);
+}
+
+void ShaftRunPanel::onPauseContinue() {
+    if (m_snapshot.state == core::LoopState::Paused)
+        m_session->continueRun();
+    else
+        m_session->pause();
+}
+
+void ShaftRunPanel::onStop() {
+    m_session->stop();
+}
+
+void ShaftRunPanel::onPartFinished() {
+    m_link->finishPart();
+    updateLathePanel();
+}
+
+// ---- what the loop reports -------------------------------------------------------------------------------
+
+void ShaftRunPanel::onStarted(const RunLayout& layout) {
+    m_layout = layout;
+    m_haveRun = true;
+    m_profile->setRun(layout);
+    m_manual->setPoints(layout.pointZMm, layout.nominalDiameterMm, layout.plausibleRangeMm);
+    const QString machine = layout.machine == Machine::RealLathe ? tr("real lathe") : tr("simulated lathe");
+    addAlarm(tr("Run started: %1, %2, z = %3, %4")
+                 .arg(layout.preset, layout.controller.toUpper())
+                 .arg(layout.delay)
+                 .arg(machine),
+             false);
+    updateControls();
+}
+
+void ShaftRunPanel::onStartFailed(const QString& reason) {
+    m_link->disconnectDevices(tr("the run did not start"));
+    addAlarm(reason, true);
+    updateControls();
+}
+
+void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
+    const bool ended = snapshot.state == core::LoopState::Idle && m_snapshot.state != core::LoopState::Idle;
+    m_snapshot = snapshot;
+    if (ended && snapshot.realLathe) m_link->disconnectDevices(tr("the run is over"));
+    m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
+    if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), QString(snapshot.detail));
+    updateControls();
+    updateTexts();
+}
+
+void ShaftRunPanel::onLoopEvent(const core::LoopEvent& event) {
+    m_profile->onLoopEvent(event);
+    if (event.kind == core::LoopEvent::Kind::Alarm)
+        addAlarm(QString::fromStdString(event.message), event.alarmKind != "correction-limited");
+    if (event.kind == core::LoopEvent::Kind::PartStarted) updateLathePanel();
+}
+
+void ShaftRunPanel::addAlarm(const QString& text, bool severe) {
+    auto* item = new QListWidgetItem(
+        QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), text));
+    if (severe) item->setForeground(QColor(198, 40, 40));
+    m_alarms->insertItem(0, item);
+    while (m_alarms->count() > kMaxAlarms)
+        delete m_alarms->takeItem(m_alarms->count() - 1);
+}
+
+// ---- what the page shows ---------------------------------------------------------------------------------
+
+void ShaftRunPanel::updateControls() {
+    const core::LoopState s = m_snapshot.state;
+    const bool idle = s == core::LoopState::Idle;
+    m_start->setEnabled(idle);
+    m_pause->setEnabled(s == core::LoopState::Running || s == core::LoopState::Paused);
+    m_stop->setEnabled(!idle);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_preset, m_controller, m_delay, m_machine, m_output, m_gauge})
+        w->setEnabled(idle);
+    m_pause->setText(s == core::LoopState::Paused ? tr("Continue") : tr("Pause"));
+    // While a run goes, the page shows its machine; otherwise the one chosen.
+    const bool real = idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
+    // The real lathe: its devices are chosen while idle; during a run the part cycle takes their place.
+    m_devicePicker->setVisible(real && idle);
+    m_lathePanel->setVisible(real && !idle);
+    m_speedLabel->setVisible(!real);
+    m_speed->setVisible(!real);
+    updateLathePanel();
+}
+
+void ShaftRunPanel::updateLathePanel() {
+    LathePanel::View v;
+    const bool realRun = m_haveRun && m_layout.machine == Machine::RealLathe && m_link->isConnected();
+    v.runGoing =
+        realRun && (m_snapshot.state == core::LoopState::Running || m_snapshot.state == core::LoopState::Paused);
+    if (realRun) {
+        v.partOnMachine = m_link->partOnMachine();
+        v.cncValue = m_link->outputValue();
+        v.awaitingPart = m_snapshot.awaitingPart;
+        v.nextPoint = m_snapshot.nextPoint;
+        v.pointCount = static_cast<int>(m_layout.pointZMm.size());
+        v.nextPointXMm = m_layout.pointZMm.value(m_snapshot.nextPoint);
+        v.byHand = m_snapshot.manualEntry;
+        v.haveGauge = m_link->ports() && !m_link->ports()->gaugeName.isEmpty();
+        v.gaugeValue = m_link->gaugeValue();
+        v.gaugeReady = m_snapshot.gauge.ready();
+    }
+    m_lathePanel->setView(v);
+}
+
+QString ShaftRunPanel::stateText() const {
+    switch (m_snapshot.state) {
+        case core::LoopState::Idle:
+            return m_haveRun ? tr("Stopped") : tr("Ready to start");
+        case core::LoopState::Running:
+            return tr("Running");
+        case core::LoopState::Paused:
+            return tr("Paused — the CNC keeps the last correction");
+        case core::LoopState::Fault:
+            return tr("Fault — the CNC keeps the last correction");
+    }
+    return {};
+}
+
+QString ShaftRunPanel::deviceText() const {
+    const bool idle = m_snapshot.state == core::LoopState::Idle;
+    const bool real = idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
+    if (!real) {
+        if (!m_haveRun || idle) return tr("Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)");
+        return tr("Gauge: %1 · CNC: %2").arg(healthText(m_snapshot.gauge), healthWord(m_snapshot.cnc.state));
+    }
+    // The real lathe: which devices, and their state in a word (with the reason when not ready).
+    // While idle the reason of a device that is not ready is shown; during a run the loop's own words and the
+    // alarms say what it means for the run.
+    auto line = [idle](const QString& what, const QString& name, const core::DeviceHealth& h) {
+        return tr("%1: “%2” — %3").arg(what, name, h.ready() || !idle ? healthWord(h.state) : healthText(h));
+    };
+    if (idle) {
+        const devices::DeviceManager* manager = m_context.devices;
+        const devices::DeviceEntry* output = manager ? manager->entry(m_output->currentData().toString()) : nullptr;
+        const devices::DeviceEntry* gauge = manager ? manager->entry(m_gauge->currentData().toString()) : nullptr;
+        const QString cnc = output ? line(tr("CNC"), output->name, output->device->health())
+                                   : tr("CNC: none (add a correction output on the Devices page)");
+        const QString diameters =
+            gauge ? line(tr("Gauge"), gauge->name, gauge->device->health()) : tr("Diameters: typed in by hand");
+        return QStringLiteral("%1\n%2").arg(cnc, diameters);
+    }
+    const LathePorts* ports = m_link->ports();
+    const QString outputName = ports ? ports->outputName : QString();
+    const QString gaugeName = ports ? ports->gaugeName : QString();
+    const QString diameters = m_snapshot.manualEntry || gaugeName.isEmpty()
+                                  ? tr("Diameters: typed in by hand")
+                                  : line(tr("Gauge"), gaugeName, m_snapshot.gauge);
+    return QStringLiteral("%1\n%2").arg(line(tr("CNC"), outputName, m_snapshot.cnc), diameters);
+}
+
+void ShaftRunPanel::updateTexts() {
+    m_state->setText(stateText());
+    m_state->setStyleSheet(m_snapshot.state == core::LoopState::Fault     ? QStringLiteral("color: #c62828;")
+                           : m_snapshot.state == core::LoopState::Paused  ? QStringLiteral("color: #b26a00;")
+                           : m_snapshot.state == core::LoopState::Running ? QStringLiteral("color: #2e7d32;")
+                                                                          : QString());
+    const bool real =
+        m_snapshot.state == core::LoopState::Idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
+    QString idleText = real ? tr("Press Start: each part's corrections go to the CNC; you machine the part and press "
+                                 "Part finished.")
+                            : tr("Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured "
+                                 "at the control points and the next part is corrected.");
+    m_detail->setText(m_haveRun ? QString(m_snapshot.detail) : idleText);
+    m_devices->setText(deviceText());
+    m_partCounter->setText(m_haveRun ? tr("Parts done: %1").arg(m_snapshot.partsFinished) : QString());
+    updateLathePanel();
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,114 @@
+#pragma once
+
+#include <QVector>
+#include <QWidget>
+#include <memory>
+
+#include "core/loop/loop_events.h"
+#include "ui/app_context.h"
+#include "ui/run/run_settings.h"
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QSpinBox;
+
+namespace tt::ui {
+
+class LatheLink;
+class LathePanel;
+class ManualEntryPanel;
+class ProfilePanel;
+class RunSession;
+
+/// Run-to-run control of the shaft profile (paper 000), the Run page's first tab: the closed loop with the
+/// run history, on the built-in simulated lathe or on the real lathe. Start / Pause / Stop, the set-up, the
+/// controller, the delay z and the speed (simulated lathe); the machine: the simulated lathe, or the real
+/// lathe with the CNC output and the gauge chosen from the Devices page (AppContext::devices) and the part
+/// cycle confirmed with the big Part finished button; the live profile of the last part with the tolerance
+/// band, the systematic model and the correction path; a history strip of the error at each control point;
+/// the loop and the devices it uses in plain words; the alarms; manual entry of diameters. The loop runs in
+/// its own thread (RunSession), so the window never waits; the devices stay in this thread (LatheLink).
+class ShaftRunPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit ShaftRunPanel(AppContext& context, QWidget* parent = nullptr);
+    ~ShaftRunPanel() override;
+    void retranslate();
+
+    RunSession& session() { return *m_session; }
+    LatheLink& lathe() { return *m_link; }
+    ProfilePanel* profilePanel() const { return m_profile; }
+    ManualEntryPanel* manualEntry() const { return m_manual; }
+    LathePanel* lathePanel() const { return m_lathePanel; }
+    QListWidget* alarms() const { return m_alarms; }
+    /// The settings the controls hold now.
+    RunSettings settings() const;
+
+private:
+    QWidget* buildControls();
+    QWidget* buildSetupRow();
+    QWidget* buildDevicePicker();
+    QWidget* buildSide();
+    void onStart();
+    void refuseStart(const QString& reason);
+    void onPauseContinue();
+    void onStop();
+    void onPartFinished();
+    void onStarted(const RunLayout& layout);
+    void onStartFailed(const QString& reason);
+    void onSnapshot(const LoopSnapshot& snapshot);
+    void onLoopEvent(const core::LoopEvent& event);
+    void addAlarm(const QString& text, bool severe);
+    void fillDeviceChoices();
+    void restoreChoices();
+    void saveChoices() const;
+    bool realLatheChosen() const;
+    void updateControls();
+    void updateTexts();
+    void updateLathePanel();
+    QString stateText() const;
+    QString deviceText() const;
+    QString deviceChoiceText(const QString& id) const;
+
+    AppContext& m_context;
+    RunSession* m_session;
+    LatheLink* m_link;
+    LoopSnapshot m_snapshot;
+    bool m_haveRun = false;
+    RunLayout m_layout;
+
+    QPushButton* m_start;
+    QPushButton* m_pause;
+    QPushButton* m_stop;
+    QLabel* m_presetLabel;
+    QComboBox* m_preset;
+    QLabel* m_controllerLabel;
+    QComboBox* m_controller;
+    QLabel* m_delayLabel;
+    QSpinBox* m_delay;
+    QLabel* m_speedLabel;
+    QComboBox* m_speed;
+    QLabel* m_machineLabel;
+    QComboBox* m_machine;
+    QLabel* m_outputLabel;
+    QComboBox* m_output;
+    QLabel* m_gaugeLabel;
+    QComboBox* m_gauge;
+    QWidget* m_devicePicker = nullptr;
+    QLabel* m_partCounter;
+    ProfilePanel* m_profile;
+    LathePanel* m_lathePanel;
+    QLabel* m_state;
+    QLabel* m_detail;
+    QLabel* m_devices;
+    QCheckBox* m_manualMode;
+    ManualEntryPanel* m_manual;
+    QPushButton* m_skip;
+    QLabel* m_alarmsTitle;
+    QListWidget* m_alarms;
+};
+
+}  // namespace tt::ui
