@@ -24,6 +24,7 @@ public:
     DeviceHealth health() const override;
     /// Puts part `partNumber` on the machine; refused while another part is on it.
     OutputResult startPart(std::int64_t partNumber) override;
+    /// The oldest part the operator confirmed and the loop has not taken yet.
     std::optional<FinishedPart> takeFinishedPart() override;
 
     // ---- the operator's side ----

@@ -16,9 +16,11 @@ namespace tt::ui {
 class TerminalDevices : public QObject {
     Q_OBJECT
 public:
+    /// Loads, restores or makes, and opens the devices (see the class).
     explicit TerminalDevices(const QString& pluginFolder, QObject* parent = nullptr);
     ~TerminalDevices() override;
 
+    /// The instances every page uses.
     devices::DeviceManager& manager() { return m_manager; }
     /// True when nothing was saved before and the simulator instances were added.
     bool firstStart() const { return m_firstStart; }

@@ -25,7 +25,9 @@ public:
     QString title() const override;
     void retranslate() override;
 
+    /// The tabs, one per kind of closed loop.
     QTabWidget* tabs() const { return m_tabs; }
+    /// The shaft run-to-run tab and, for the tests and the shell, its parts.
     ShaftRunPanel& shaft() { return *m_shaft; }
     RunSession& session();
     ProfilePanel* profilePanel() const;

@@ -50,6 +50,7 @@ public:
     std::shared_ptr<const LathePorts> connectDevices(const QString& outputId, const QString& gaugeId);
     /// The run is over: the loop's later writes are refused with `reason`; the devices stay open.
     void disconnectDevices(const QString& reason);
+    /// Whether a run's ports are connected to the devices.
     bool isConnected() const { return m_ports != nullptr; }
     /// The ports of the connected run; null when none.
     const LathePorts* ports() const { return m_ports.get(); }

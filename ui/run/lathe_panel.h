@@ -32,10 +32,14 @@ public:
     };
 
     explicit LathePanel(QWidget* parent = nullptr);
+    /// Shows `view` (texts, which buttons can be pressed).
     void setView(const View& view);
+    /// Sets every visible text (also on a language change).
     void retranslate();
 
+    /// The big "Part N finished" button.
     QPushButton* finishedButton() const { return m_finished; }
+    /// "Take gauge reading" (shown with a gauge device, when the diameters are not typed by hand).
     QPushButton* readingButton() const { return m_reading; }
     /// What to do with the machine / where to measure, as shown (for tests).
     QString machineText() const;

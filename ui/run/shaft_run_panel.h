@@ -34,12 +34,17 @@ class RunSession;
 class ShaftRunPanel : public QWidget {
     Q_OBJECT
 public:
+    /// `context.devices` may be null: then only the simulated lathe can run.
     explicit ShaftRunPanel(AppContext& context, QWidget* parent = nullptr);
     ~ShaftRunPanel() override;
+    /// Sets every visible text (also on a language change).
     void retranslate();
 
+    /// The loop thread's handle.
     RunSession& session() { return *m_session; }
+    /// The real lathe's devices as connected to the loop.
     LatheLink& lathe() { return *m_link; }
+    /// The plots, the diameters typed by hand, the real lathe's part cycle, the alarm list.
     ProfilePanel* profilePanel() const { return m_profile; }
     ManualEntryPanel* manualEntry() const { return m_manual; }
     LathePanel* lathePanel() const { return m_lathePanel; }
