@@ -20,7 +20,9 @@ public:
 
     /// The section's name in messages ("lathe.workpiece").
     const QString& name() const { return m_name; }
+    /// Whether the section has field `key`.
     bool has(const QString& key) const { return m_object.contains(key); }
+    /// Field `key` as it is (undefined when absent), for readers of other types.
     QJsonValue value(const QString& key) const { return m_object.value(key); }
 
     /// Optional number in [lo, hi], `fallback` when absent (optionalNumber).

@@ -16,17 +16,23 @@ struct HelpShown {};
 /// range-checked typed accessors. Every problem is a UsageError naming the option.
 class CommandParser {
 public:
+    /// A parser for `trueturn <command>`; `description` is the first paragraph of its --help.
     CommandParser(const QString& command, const QString& description);
 
+    /// Adds `--name`; with a `valueName` it takes a value (shown in --help), else it is a flag.
     void addOption(const QString& name, const QString& description, const QString& valueName = QString(),
                    const QString& defaultValue = QString());
+    /// Adds a positional argument (FILE.csv) for --help; positionals() checks the count.
     void addPositional(const QString& name, const QString& description);
 
     /// Parses the arguments after the command name; prints help and throws HelpShown on --help.
     void parse(const QStringList& arguments);
 
+    /// Whether `--name` was given.
     bool isSet(const QString& name) const;
+    /// Whether `--json` was given (output as JSON on stdout).
     bool json() const { return isSet(QStringLiteral("json")); }
+    /// The value of `--name`, or its default (empty when it has none).
     QString value(const QString& name) const;
     /// The value, which must be given.
     QString required(const QString& name) const;

@@ -33,6 +33,7 @@ struct CorrectionPathRequest {
 /// (NaN, unsorted or duplicate points, points outside the part, size mismatch, bad length/step).
 class CorrectionProfile {
 public:
+    /// Checks the request (throws std::invalid_argument naming the problem) and prepares the interpolant.
     explicit CorrectionProfile(const CorrectionPathRequest& request);
 
     /// Total radial correction y_set(z), mm.

@@ -21,13 +21,16 @@ struct DareSolution {
 /// message in their own terms from `reason` and `mode`.
 class DareError : public std::invalid_argument {
 public:
+    /// Why the equation has no usable solution.
     enum class Reason {
         NotStabilisable,     ///< a mode with |lambda| >= 1 cannot be reached by the inputs (PBH test)
         UnobservedOnCircle,  ///< a mode on the unit circle is not seen by the cost Q
         NoConvergence,       ///< the doubling did not converge (ill-posed or badly scaled data)
     };
+    /// `mode`: the eigenvalue of A that makes the problem ill-posed (NaN when none applies).
     DareError(Reason reason, std::complex<double> mode, const std::string& message)
         : std::invalid_argument(message), m_reason(reason), m_mode(mode) {}
+    /// Why the solver refused.
     Reason reason() const { return m_reason; }
     /// The offending eigenvalue of A (NaN when not applicable).
     std::complex<double> mode() const { return m_mode; }

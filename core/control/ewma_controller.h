@@ -48,6 +48,7 @@ public:
     const std::vector<ToleranceBand>& bands() const { return m_bands; }
     /// Estimated uncorrected deviation per point, mm of diameter.
     const Eigen::VectorXd& offsetMm() const { return m_offset; }
+    /// The options the controller was made with.
     const EwmaOptions& options() const { return m_options; }
 
 private:
@@ -71,6 +72,7 @@ private:
 /// Open loop: never corrects (the reference of k_eff). Accepts finite measurements and ignores them.
 class OpenLoopController final : public RunToRunController {
 public:
+    /// Open loop over `pointCount` >= 1 control points; throws std::invalid_argument otherwise.
     explicit OpenLoopController(int pointCount);
 
     std::string name() const override { return "open"; }

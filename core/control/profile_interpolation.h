@@ -25,12 +25,16 @@ class PiecewiseCubic {
 public:
     /// y(x); the end value outside [x_1, x_N].
     double value(double x) const;
+    /// Same as value(x).
     double operator()(double x) const { return value(x); }
     /// dy/dx (0 outside [x_1, x_N]).
     double derivative(double x) const;
 
+    /// The knot positions x_i, increasing, mm.
     const std::vector<double>& knots() const { return m_x; }
+    /// The values y_i at the knots.
     const std::vector<double>& knotValues() const { return m_y; }
+    /// The slopes dy/dx at the knots.
     const std::vector<double>& knotSlopes() const { return m_d; }
 
     /// Shape-preserving PCHIP (Fritsch & Carlson 1980; slopes and end conditions as MATLAB pchip,

@@ -20,6 +20,7 @@ struct MeasurementVerdict {
     std::vector<bool> accepted;        ///< per point: used by the controller
     std::vector<std::string> reasons;  ///< per point: why it was rejected (empty when accepted)
 
+    /// Every point of the measurement was used.
     bool allAccepted() const {
         for (bool a : accepted)
             if (!a) return false;
@@ -40,7 +41,9 @@ class RunToRunController {
 public:
     virtual ~RunToRunController() = default;
 
+    /// The controller's kind as stored with its state: "lqg", "ewma", "open".
     virtual std::string name() const = 0;
+    /// Number of control points N (values per measurement and per correction).
     virtual int pointCount() const = 0;
 
     /// Offers the measurement of an already machined part. Outliers (NaN, Inf, far outside the
@@ -52,6 +55,7 @@ public:
     /// controller assumes was applied. Part numbers must increase by one per call.
     virtual Eigen::VectorXd nextCorrection(std::int64_t partNumber) = 0;
 
+    /// The complete state, so that a restored controller continues exactly (resume after a restart).
     virtual ControllerState saveState() const = 0;
     /// Restores a state saved by the same kind of controller with the same configuration;
     /// throws std::invalid_argument otherwise.

@@ -24,6 +24,7 @@ struct RunToRunPlantSpec {
 
 /// Limits of the plant builder.
 inline constexpr int kMaxControlPoints = 16;
+/// Largest transport delay z, parts.
 inline constexpr int kMaxDelay = 8;
 
 /// The run-to-run plant in state-space form (paper 000, eq. (2) and the extended plant):
@@ -46,7 +47,9 @@ struct RunToRunPlant {
     std::vector<PointLayout> layout;
     std::vector<DisturbanceModel> disturbances;  ///< per point, as specified
 
+    /// Number of control points N.
     int pointCount() const { return static_cast<int>(xMm.size()); }
+    /// Number of states n (delay chains + disturbance states).
     Eigen::Index stateCount() const { return A.rows(); }
 };
 

@@ -20,6 +20,7 @@ struct LimiterOutcome {
 /// absolute range). Starts from zero.
 class CorrectionLimiter {
 public:
+    /// `pointZMm`: the control points along the part (mm), named in the notes; nothing applied yet (zeros).
     CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm);
 
     /// Limits `computedMm` (one per point) against the last applied corrections and remembers the result.

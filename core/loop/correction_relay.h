@@ -43,6 +43,7 @@ public:
     OutputResult sendDynamicOffset(double xOffsetMm) override;
 
     // ---- the device's side ----
+    /// The output's health as the device's side sees it; what health() reports from now on.
     void publishHealth(DeviceHealth health);
     /// Called with the relay's lock held whenever a write is queued (from the loop's thread): it must only
     /// post a notification (e.g. a queued call into the device's thread), never call back into the relay.
@@ -54,6 +55,7 @@ public:
     /// The device is gone (run over, page closed): a waiting write and every later one is refused with
     /// `reason`, and the listener is dropped (after close() returns it is never called again).
     void close(const std::string& reason);
+    /// Whether close() was called.
     bool closed() const;
 
 private:

@@ -11,10 +11,12 @@ namespace tt::core {
 /// tests step it by hand. Seconds.
 class ManualClock final : public Clock {
 public:
+    /// Starts at `startS` seconds.
     explicit ManualClock(double startS = 0.0) : m_nowS(startS) {}
     double nowS() const override { return m_nowS; }
     /// Moves to `timeS`; never backwards (an earlier time is ignored).
     void advanceTo(double timeS);
+    /// Moves on by `seconds` (a negative step is ignored).
     void advanceBy(double seconds) { advanceTo(m_nowS + seconds); }
 
 private:
@@ -26,10 +28,12 @@ private:
 /// speed 0 freezes it. Thread-safe: the GUI sets the speed while the loop thread reads the time.
 class ScaledClock final : public Clock {
 public:
+    /// Starts at `startS` seconds running `speed` times as fast as the wall clock; throws as setSpeed.
     explicit ScaledClock(double speed = 1.0, double startS = 0.0);
     double nowS() const override;
     /// Throws std::invalid_argument for a negative or non-finite speed.
     void setSpeed(double speed);
+    /// Simulated seconds per wall-clock second.
     double speed() const;
 
 private:

@@ -82,11 +82,13 @@ public:
     /// +infinity when only device events matter.
     double nextWakeS() const;
 
+    /// Idle, Running, Paused or Fault.
     LoopState state() const { return m_state; }
     /// What the loop is doing, in plain words ("machining part 12", "waiting for the diameters of part 9").
     const std::string& detail() const { return m_detail; }
     /// The run reached its last part and every part was measured.
     bool complete() const { return m_complete; }
+    /// The run's id in the history, when the loop has a history store.
     std::optional<std::int64_t> runId() const { return m_runId; }
     /// The part that will be started next.
     std::int64_t nextPartNumber() const { return m_nextPart; }
@@ -98,7 +100,9 @@ public:
     std::optional<std::size_t> nextMeasuredPoint() const;
     /// Corrections last sent to the CNC, radial mm per point.
     const std::vector<double>& lastAppliedMm() const { return m_limiter.lastAppliedMm(); }
+    /// The configuration the loop was made with.
     const LoopConfig& config() const { return m_config; }
+    /// The run-to-run controller the loop drives.
     const RunToRunController& controller() const { return *m_controller; }
 
 private:

@@ -14,6 +14,7 @@ namespace tt::core {
 
 /// Something the operator should see, as the loop engine reports it.
 struct LoopEvent {
+    /// What happened.
     enum class Kind {
         StateChanged,  ///< state / detail changed (message = the detail in plain words)
         PartStarted,   ///< corrections sent, the part is on the machine (corrections, path)
@@ -39,6 +40,7 @@ struct LoopEvent {
 class LoopListener {
 public:
     virtual ~LoopListener() = default;
+    /// Called for every event, in the order they happen.
     virtual void onLoopEvent(const LoopEvent& event) = 0;
 };
 

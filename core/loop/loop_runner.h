@@ -14,6 +14,7 @@ class ManualClock;
 class SimulationTimeline {
 public:
     virtual ~SimulationTimeline() = default;
+    /// Simulated time of the next thing that happens, s; +infinity when nothing is scheduled.
     virtual double nextEventTimeS() const = 0;
 };
 

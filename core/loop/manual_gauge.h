@@ -29,12 +29,14 @@ private:
 /// so a silent automatic gauge pauses the loop at once. Thread-safe selection.
 class SelectableGauge final : public DiameterGauge {
 public:
+    /// Switches between the two gauges (both outlive it); starts automatic.
     SelectableGauge(DiameterGauge& automatic, ManualGauge& manual) : m_automatic(automatic), m_manual(manual) {}
     DeviceHealth health() const override;
     void requestReading() override;
     std::optional<GaugeReading> takeReading() override;
     /// true: diameters come by hand; false: from the automatic gauge.
     void setManual(bool manual) { m_isManual = manual; }
+    /// Whether diameters come by hand.
     bool manual() const { return m_isManual; }
 
 private:

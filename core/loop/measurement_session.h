@@ -29,11 +29,13 @@ public:
     /// Throws std::invalid_argument otherwise.
     MeasurementSession(std::vector<double> pointXMm, double nominalDiameterMm, double plausibleWindowMm = 1.0);
 
+    /// Number of control points to measure.
     std::size_t pointCount() const { return m_pointXMm.size(); }
     /// Axial position of point `index`, mm (throws std::out_of_range).
     double pointXMm(std::size_t index) const { return m_pointXMm.at(index); }
     /// The point the next reading goes to; nullopt when every point has a reading.
     std::optional<std::size_t> currentPoint() const;
+    /// Every point has a reading.
     bool complete() const { return !currentPoint().has_value(); }
 
     /// Assigns `reading` to the current point and moves on to the next open point.

@@ -12,6 +12,7 @@ namespace tt::core {
 /// воздействия"): a rational shaping filter, a first-order autoregression, a random walk or white noise.
 class DisturbanceComponent {
 public:
+    /// The kind of process.
     enum class Kind { ShapingFilter, Ar1, RandomWalk, White };
 
     /// Shaping filter driven by white noise of variance `inputVarianceMm2`.
@@ -25,6 +26,7 @@ public:
     /// White noise of variance `varianceMm2` (part-to-part scatter no controller can predict).
     static DisturbanceComponent white(double varianceMm2);
 
+    /// The kind of process.
     Kind kind() const { return m_kind; }
     /// The filter of a ShapingFilter component (empty otherwise).
     const std::optional<ShapingFilter>& filter() const { return m_filter; }
@@ -59,7 +61,9 @@ public:
     /// Throws std::invalid_argument when `components` is empty.
     explicit DisturbanceModel(std::vector<DisturbanceComponent> components);
 
+    /// The components, summed.
     const std::vector<DisturbanceComponent>& components() const { return m_components; }
+    /// No random walk among the components (the variance is bounded).
     bool isStationary() const;
     /// Sum of the components' stationary variances, mm^2 (+infinity with a random walk).
     double stationaryVarianceMm2() const;

@@ -28,6 +28,7 @@ public:
     int degree() const { return static_cast<int>(m_coefficients.size()) - 1; }
     /// p(x), Horner's scheme in the scaled variable.
     double value(double x) const;
+    /// Same as value(x).
     double operator()(double x) const { return value(x); }
     /// dp/dx at x.
     double derivative(double x) const;
@@ -40,8 +41,11 @@ public:
     /// carry covariances over: cov(b) = M cov(c) M'. Size (degree+1) x (degree+1).
     static Eigen::MatrixXd scaledToPowerMap(int degree, double centre, double scale);
 
+    /// Coefficients a_0..a_D in the scaled variable t = (x - centre) / scale.
     const Eigen::VectorXd& scaledCoefficients() const { return m_coefficients; }
+    /// Centre of the scaling, in x units.
     double centre() const { return m_centre; }
+    /// Scale of the scaling (> 0), in x units.
     double scale() const { return m_scale; }
 
     /// The point of [a, b] where |p(x)| is largest (interior stationary points from the roots of p',

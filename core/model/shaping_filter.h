@@ -36,6 +36,7 @@ public:
     const std::vector<double>& denominator() const { return m_denominator; }
     /// The denominator roots (poles), all strictly inside the unit circle.
     const std::vector<std::complex<double>>& poles() const { return m_poles; }
+    /// Order of the denominator (number of poles).
     int order() const { return static_cast<int>(m_denominator.size()) - 1; }
 
     /// Controllable canonical realisation driven by one white input of variance `inputVariance`.

@@ -19,6 +19,7 @@ public:
     const ScaledPolynomial& diameterError() const { return m_diameterError; }
     /// The polynomial y_ff(x) = -d(x)/2.
     ScaledPolynomial feedForward() const { return m_diameterError.scaledBy(-0.5); }
+    /// Length of the part the model covers, mm from the left end.
     double partLengthMm() const { return m_partLengthMm; }
     /// Largest |d(x)| on [0, partLengthMm] (paper 000: about 0.156, 0.104, 0.206 mm near x = 140 mm).
     PolynomialPeak peak() const { return m_diameterError.largestMagnitude(0.0, m_partLengthMm); }

@@ -51,6 +51,7 @@ std::vector<Material> defaultMaterials();
 
 /// Plausible range of Young's modulus accepted for a holder material, MPa.
 inline constexpr double kMinYoungsModulusMpa = 50'000.0;
+/// Upper end of that range, MPa.
 inline constexpr double kMaxYoungsModulusMpa = 800'000.0;
 
 /// A stiffness measured on the machine (load and dial indicator), which overrides the

@@ -34,6 +34,7 @@ struct OutputResult {
 class CorrectionOutput {
 public:
     virtual ~CorrectionOutput() = default;
+    /// Whether the output can take corrections now, with the reason when not.
     virtual DeviceHealth health() const = 0;
     /// Sends the corrections for the next part.
     virtual OutputResult sendPartCorrection(const PartCorrection& correction) = 0;

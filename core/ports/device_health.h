@@ -13,6 +13,7 @@ struct DeviceHealth {
     DeviceState state = DeviceState::Disconnected;
     std::string message;
 
+    /// The device works.
     bool ready() const { return state == DeviceState::Ready; }
 };
 

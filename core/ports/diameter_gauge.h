@@ -19,6 +19,7 @@ struct GaugeReading {
 class DiameterGauge {
 public:
     virtual ~DiameterGauge() = default;
+    /// Whether the gauge delivers readings now, with the reason when not.
     virtual DeviceHealth health() const = 0;
     /// Asks a polled gauge for one reading; push-only gauges ignore it.
     virtual void requestReading() = 0;

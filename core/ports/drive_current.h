@@ -18,6 +18,7 @@ struct DriveSample {
 class DriveCurrentReadout {
 public:
     virtual ~DriveCurrentReadout() = default;
+    /// Whether the read-out delivers samples now, with the reason when not.
     virtual DeviceHealth health() const = 0;
     /// The oldest sample not yet taken, if any (never blocks).
     virtual std::optional<DriveSample> takeSample() = 0;

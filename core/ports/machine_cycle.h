@@ -20,6 +20,7 @@ struct FinishedPart {
 class MachineCycle {
 public:
     virtual ~MachineCycle() = default;
+    /// Whether the machine can run parts now, with the reason when not.
     virtual DeviceHealth health() const = 0;
     /// Starts machining part `partNumber` with the corrections last sent to the CNC. Fails (with the
     /// reason) when the machine is busy or not ready.

@@ -93,25 +93,34 @@ public:
 
     /// Called at every simulation step while the tool is in the bore.
     using SurfaceObserver = std::function<void(const BoringState&)>;
+    /// Sets the observer (replaces the previous one; empty: none).
     void setSurfaceObserver(SurfaceObserver observer) { m_observer = std::move(observer); }
 
     /// Advances by one PLC cycle (many simulation steps) and queues the port samples.
     void advanceCycle();
     /// The tool has left the far end of the bore.
     bool finished() const;
+    /// The machine's state after the last step.
     const BoringState& state() const { return m_state; }
+    /// The PLC cycle of the scenario, s.
     double plcCycleS() const { return m_scenario.plcCycleS; }
     /// True radial bar stiffness, N/mm.
     double trueStiffnessNPerMm() const { return m_stiffnessX; }
 
+    /// The drive-current read-out port (what the compensation from current reads).
     DriveCurrentReadout& driveReadout() { return m_drivePort; }
+    /// The probe-mandrel port (what the compensation from the probe reads).
     DeflectionProbe& probe() { return m_probePort; }
+    /// The CNC output port (the cross slide's dynamic offset).
     CorrectionOutput& output() { return m_outputPort; }
+    /// The simulated sensor behind the probe port (its table can be loaded).
     InductiveProbe& probeSensor() { return m_probe; }
+    /// The simulated cross-feed drive.
     CrossFeedDrive& drive() { return m_drive; }
 
     /// Switches the drive read-out into a fault (tests of holding the last safe correction).
     void setDriveHealth(DeviceHealth health) { m_drivePort.status = std::move(health); }
+    /// Switches the probe port into a fault likewise.
     void setProbeHealth(DeviceHealth health) { m_probePort.status = std::move(health); }
 
 private:

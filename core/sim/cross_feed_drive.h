@@ -44,7 +44,9 @@ public:
     /// (the cutting force through the bar: −P when P pushes the tool towards the axis).
     void step(double dtS, const MotorCommand& command, double externalForceN);
 
+    /// Slide position, mm (radial, towards the axis positive).
     double slidePositionMm() const { return m_slideMm; }
+    /// Slide velocity, mm/s.
     double slideVelocityMmPerS() const { return m_slideVelocity; }
     /// Force the motor produces, N (transmission force + motor-side inertia).
     double motorForceN() const { return m_motorForceN; }
@@ -52,6 +54,7 @@ public:
     double currentA() const { return m_motorForceN / m_config.currentToForceNPerA; }
     /// A sample as the drive reports it: current, slide velocity and position with noise.
     DriveSample sample(double timeS);
+    /// The drive's parameters.
     const CrossFeedDriveConfig& config() const { return m_config; }
 
 private:

@@ -54,8 +54,11 @@ public:
 
     /// Loads or clears the microcontroller's table of one plane (what an upload does).
     void setTable(int plane, std::optional<LinearisationTable> table);
+    /// The table of `plane` (0 or 1), if one is loaded.
     const std::optional<LinearisationTable>& table(int plane) const;
+    /// The probe's parameters.
     const InductiveProbeConfig& config() const { return m_config; }
+    /// The largest ADC code, 2^bits - 1.
     double fullScaleCode() const;
 
 private:

@@ -13,14 +13,17 @@ namespace tt::core {
 /// delivers one sample per PLC cycle. Deterministic for a seed.
 class KnownLoadRig final : public DriveCurrentReadout {
 public:
+    /// The rig's drive, its dither, the PLC cycle (s) the samples come at and the seed of the drive's noise.
     KnownLoadRig(const CrossFeedDriveConfig& drive, const DitherConfig& dither, double plcCycleS,
                  unsigned long long seed);
 
     /// The load from now on, N (towards the axis: positive).
     void setLoadN(double loadN);
+    /// The load now, N.
     double loadN() const { return m_loadN; }
     /// Advances the simulation by `seconds`, queueing a drive sample every PLC cycle.
     void advance(double seconds);
+    /// Simulated time, s.
     double timeS() const { return m_timeS; }
 
     DeviceHealth health() const override { return {DeviceState::Ready, {}}; }

@@ -50,6 +50,7 @@ public:
     /// covariance.
     LatheDisturbance(LatheDisturbanceModel model, std::uint64_t seed);
 
+    /// Number of control points N.
     int pointCount() const { return m_model.pointCount(); }
     /// f(partNumber), diameter mm per control point; partNumber >= 1.
     Eigen::VectorXd diameterMm(std::int64_t partNumber);

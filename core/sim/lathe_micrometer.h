@@ -22,6 +22,7 @@ public:
     double readMm(double trueDiameterMm, std::int64_t partNumber, int pointIndex, int attempt = 0) const;
     /// σ of a reading at point `pointIndex` before rounding, mm.
     double sigmaMm(int pointIndex = 0) const;
+    /// The reading is rounded to this, mm (0: not rounded).
     double resolutionMm() const { return m_resolution; }
 
 private:

@@ -55,6 +55,7 @@ struct ProfileStatistics {
     Eigen::VectorXd meanMm;
     Eigen::VectorXd stdMm;
 };
+/// Mean and standard deviation over parts `from` .. `to` (1-based, inclusive) of per-part profiles.
 ProfileStatistics profileStatistics(const std::vector<Eigen::VectorXd>& perPart, std::int64_t from, std::int64_t to);
 
 }  // namespace tt::core

@@ -18,8 +18,11 @@ public:
     LatheShaftBeam(double lengthMm, double youngModulusNPerMm2, double headstockNPerMm, double tailstockNPerMm,
                    int elements);
 
+    /// Number of beam elements.
     int elementCount() const { return m_elements; }
+    /// Number of nodes (elements + 1).
     int nodeCount() const { return m_elements + 1; }
+    /// Length of one element, mm.
     double elementLengthMm() const { return m_lengthMm / m_elements; }
     /// x of node i, mm.
     double nodeXMm(int node) const { return elementLengthMm() * node; }

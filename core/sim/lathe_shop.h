@@ -34,8 +34,11 @@ public:
     /// Throws std::invalid_argument on a bad spec.
     LatheShop(const LatheShopSpec& spec, const Clock& clock);
 
+    /// The process that machines the parts (physical lathe or statistical plant).
     LathePartProcess& process() { return *m_process; }
+    /// The station with the shop's ports.
     LatheStation& station() { return *m_station; }
+    /// The control points along the part, mm.
     const std::vector<double>& pointZMm() const { return m_points; }
     /// The physical lathe, or null for the statistical plant.
     LatheSimulator* lathe() { return m_lathe; }

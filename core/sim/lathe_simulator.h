@@ -31,7 +31,9 @@ public:
     double nominalDiameterMm() const override { return m_setup.workpiece.finishDiameterMm; }
     double partLengthMm() const override { return m_setup.workpiece.lengthMm; }
 
+    /// The lathe's set-up.
     const LatheSetup& setup() const { return m_setup; }
+    /// The control points along the part, mm.
     const std::vector<double>& controlPointZMm() const { return m_pointZ; }
     /// Positions of the simulator's profile grid (the shaft model's nodes), mm.
     const std::vector<double>& gridZMm() const { return m_gridZ; }

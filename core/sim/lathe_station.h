@@ -41,8 +41,11 @@ public:
     LatheStation(const LatheStation&) = delete;
     LatheStation& operator=(const LatheStation&) = delete;
 
+    /// The CNC's correction output port.
     CorrectionOutput& output() { return m_output; }
+    /// The part-cycle port (start a part, learn it finished).
     MachineCycle& machine() { return m_cycle; }
+    /// The gauge port (readings of the measured parts).
     DiameterGauge& gauge() { return m_gauge; }
 
     double nextEventTimeS() const override;
@@ -52,6 +55,7 @@ public:
     void silenceGauge(double fromS, double untilS);
     /// Automatic measuring on (the simulated operator measures every part) or off (manual entry).
     void setAutomaticGauge(bool on) { m_automatic = on; }
+    /// Whether the simulated operator measures every part.
     bool automaticGauge() const { return m_automatic; }
     /// The reading of part `partNumber` at point `pointIndex` will be `valueMm` (a typing error, a dirty anvil).
     void injectReading(std::int64_t partNumber, int pointIndex, double valueMm);
@@ -71,7 +75,9 @@ public:
     const std::deque<TurnedPart>& machinedParts() const { return m_machined; }
     /// How many machined parts and corrections are kept (default 64).
     void setKeptParts(std::size_t keep) { m_keep = keep; }
+    /// Where the gauge measures, mm along the part.
     const std::vector<double>& measurePointZMm() const { return m_points; }
+    /// The process that machines the parts.
     LathePartProcess& process() { return m_process; }
 
 private:

@@ -13,6 +13,7 @@ namespace tt::core {
 /// gives the same run everywhere. The whole state can be saved and restored (resuming a simulation).
 class NormalStream {
 public:
+    /// The stream of `seed` (the same numbers on every platform).
     explicit NormalStream(std::uint64_t seed);
 
     /// The next N(0, 1) draw: sqrt(-2 ln u1) cos(2 pi u2).

@@ -14,6 +14,7 @@ namespace tt::core {
 /// reading error) gives the reference; the mandrel's ADC is read several times and averaged.
 class ProbeCalibrationRig {
 public:
+    /// Calibrates `plane` of `probe` (outlives the rig) against a reference of the given resolution and noise, µm.
     ProbeCalibrationRig(InductiveProbe& probe, int plane, double referenceResolutionUm, double referenceNoiseUm,
                         unsigned long long seed);
 

@@ -39,8 +39,10 @@ struct StochasticPlantState {
 /// distribution (no transient); a random walk starts at 0. Seeded, reproducible, resumable.
 class StochasticPlant {
 public:
+    /// The plant's disturbance and gauge noise, drawn from the normal stream of `seed`.
     StochasticPlant(const RunToRunPlant& plant, std::uint64_t seed);
 
+    /// Number of control points N.
     int pointCount() const { return static_cast<int>(m_gain.size()); }
 
     /// Draws part `partNumber` (must be the previous part + 1 after the first call). The returned
@@ -51,6 +53,7 @@ public:
     /// Draws, machines with `correctionMm` and gauges the next part.
     MachinedPart machine(std::int64_t partNumber, const Eigen::VectorXd& correctionMm);
 
+    /// The complete state (resuming continues the same realisation).
     StochasticPlantState saveState() const;
     /// Restores a state saved by a plant of the same configuration; throws std::invalid_argument otherwise.
     void restoreState(const StochasticPlantState& state);

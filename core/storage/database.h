@@ -19,6 +19,7 @@ public:
 
 /// Where the history lives: an embedded SQLite file (default) or a plant-wide PostgreSQL server.
 struct DatabaseConfig {
+    /// Which database server.
     enum class Kind { Sqlite, Postgres };
     Kind kind = Kind::Sqlite;
     QString sqlitePath;  ///< SQLite file (created when missing)
@@ -28,6 +29,7 @@ struct DatabaseConfig {
     QString user;
     QString password;
 
+    /// An SQLite file at `path`.
     static DatabaseConfig sqlite(const QString& path);
     /// PostgreSQL from `postgresql://user:password@host:port/database` (password and port optional).
     /// Throws StorageError on a malformed URL.
@@ -64,8 +66,11 @@ public:
     Database(const Database&) = delete;
     Database& operator=(const Database&) = delete;
 
+    /// Where the database is.
     const DatabaseConfig& config() const { return m_config; }
+    /// Whether it is a PostgreSQL server (SQL differs in places).
     bool isPostgres() const { return m_config.kind == DatabaseConfig::Kind::Postgres; }
+    /// The connection, for the stores' queries (use it from the thread that opened the database).
     QSqlDatabase connection() const;
 
     /// Applies the pending migrations of `module`, each in its own transaction. Throws

@@ -29,6 +29,7 @@ public:
     std::vector<core::AlarmRecord> alarms(std::int64_t runId) override;
     std::optional<core::ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) override;
 
+    /// The database the history is stored in.
     Database& database() { return m_db; }
 
 private:
