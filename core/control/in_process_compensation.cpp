@@ -5,6 +5,25 @@
 
 namespace tt::core {
 
+namespace {
+
+ReadingProblem problemOf(DitherRefusal refusal) {
+    switch (refusal) {
+        case DitherRefusal::NotCylindrical:
+            return ReadingProblem::NotCylindrical;
+        case DitherRefusal::SlideNotMoving:
+            return ReadingProblem::SlideNotMoving;
+        case DitherRefusal::WindowTooShort:
+            return ReadingProblem::WindowTooShort;
+        case DitherRefusal::WaitingForStrokes:
+        case DitherRefusal::None:
+            break;
+    }
+    return ReadingProblem::WaitingForStrokes;
+}
+
+}  // namespace
+
 CurrentDeflectionSource::CurrentDeflectionSource(DriveCurrentReadout& readout, const DitherEstimatorConfig& config)
     : m_readout(readout), m_estimator(config) {}
 
@@ -14,6 +33,7 @@ DeflectionReading CurrentDeflectionSource::poll(double /*nowS*/) {
     if (!health.ready()) {
         r.reason = "drive current readout is " + std::string(toString(health.state)) +
                    (health.message.empty() ? "" : ": " + health.message);
+        r.problem = ReadingProblem::SourceNotReady;
         return r;
     }
     while (const std::optional<DriveSample> sample = m_readout.takeSample())
@@ -22,6 +42,7 @@ DeflectionReading CurrentDeflectionSource::poll(double /*nowS*/) {
     if (!state.estimate) {
         r.fresh = false;
         r.reason = state.reason;
+        r.problem = problemOf(state.refusal);
         return r;
     }
     r.deflectionMm = state.estimate->deflectionMm;
@@ -49,6 +70,7 @@ DeflectionReading ProbeDeflectionSource::poll(double nowS) {
         m_lastDeflectionMm.reset();
         r.reason = "probe mandrel is " + std::string(toString(health.state)) +
                    (health.message.empty() ? "" : ": " + health.message);
+        r.problem = ReadingProblem::SourceNotReady;
         return r;
     }
     double sum = 0.0;
@@ -78,6 +100,7 @@ DeflectionReading ProbeDeflectionSource::poll(double nowS) {
         r.reason = !problem.empty()
                        ? problem
                        : "no probe sample for more than " + std::to_string(std::lround(m_maxSilenceS * 1000.0)) + " ms";
+        r.problem = !problem.empty() ? ReadingProblem::NoTable : ReadingProblem::NoRecentSample;
         return r;
     }
     r.deflectionMm = m_lastDeflectionMm;
@@ -90,6 +113,11 @@ InProcessCompensator::InProcessCompensator(DeflectionSource& source, CorrectionO
     : m_source(source), m_output(output), m_compensator(limits), m_cycleS(plcCycleS) {
     if (!std::isfinite(plcCycleS) || plcCycleS < 0.01 - 1e-12 || plcCycleS > 0.1 + 1e-12)
         throw std::invalid_argument("the PLC cycle must be within 10 .. 100 ms");
+}
+
+void InProcessCompensator::resumeFrom(double offsetMm) {
+    m_compensator.restoreOffset(offsetMm);
+    m_lastSentMm = m_compensator.offsetMm();
 }
 
 CompensationCycle InProcessCompensator::cycle(double nowS) {

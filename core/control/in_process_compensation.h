@@ -13,12 +13,25 @@
 
 namespace tt::core {
 
+/// Why a source has no valid deflection, so a user interface can say it in its own words.
+enum class ReadingProblem {
+    None,
+    SourceNotReady,     ///< the device is disconnected, connecting or in error (e.g. silent)
+    NoRecentSample,     ///< the probe sent nothing usable for longer than allowed
+    NoTable,            ///< the probe sends raw ADC codes and no linearisation table is loaded
+    NotCylindrical,     ///< current with dither: taper, contour or a feed motion
+    SlideNotMoving,     ///< current with dither: the slide did not really move
+    WindowTooShort,     ///< current with dither: too few samples at constant velocity
+    WaitingForStrokes,  ///< current with dither: no forward and reverse stroke yet
+};
+
 /// What a deflection source says for one PLC cycle.
 struct DeflectionReading {
-    std::optional<double> deflectionMm;  ///< tool tip deflection along X, mm (negative: towards the axis)
-    std::optional<double> forceN;        ///< radial force pushing the tool towards the axis, N, when known
-    bool fresh = false;                  ///< a new measurement arrived this cycle
-    std::string reason;                  ///< why there is no valid deflection, in the user's terms
+    std::optional<double> deflectionMm;             ///< tool tip deflection along X, mm (negative: towards the axis)
+    std::optional<double> forceN;                   ///< radial force pushing the tool towards the axis, N, when known
+    bool fresh = false;                             ///< a new measurement arrived this cycle
+    std::string reason;                             ///< why there is no valid deflection, in the user's terms
+    ReadingProblem problem = ReadingProblem::None;  ///< the same as a kind, None when valid
 };
 
 /// Where the compensator gets the deflection from (paper 001: way 1 current, way 2 probe).
@@ -89,6 +102,9 @@ public:
                          double plcCycleS);
     /// Runs one cycle at Clock time `nowS`.
     CompensationCycle cycle(double nowS);
+    /// Starts from the offset the CNC already holds (clamped to the range), mm, instead of 0, so
+    /// a new run does not move the tool by the old offset at once. Call before the first cycle.
+    void resumeFrom(double offsetMm);
     double offsetMm() const { return m_compensator.offsetMm(); }
     double plcCycleS() const { return m_cycleS; }
 

@@ -31,10 +31,6 @@ BoringMethod boringMethodFromString(const std::string& text) {
     throw std::invalid_argument("method '" + text + "' must be current, probe or none");
 }
 
-namespace {
-
-// Calibrates the mandrel of `machine` on the rig and loads the table the way an upload does:
-// encode the image, decode (CRC checked) on the mandrel's side.
 ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringScenario& scenario) {
     ProbeCalibrationRig rig(machine.probeSensor(), 0, scenario.calibration.referenceResolutionUm,
                             scenario.calibration.referenceNoiseUm, scenario.seed * 7919ULL + 3);
@@ -54,6 +50,8 @@ ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringSce
     summary.imageCrc = loaded.crc;
     return summary;
 }
+
+namespace {
 
 struct SurfaceStats {
     double from = 0.0;

@@ -58,6 +58,12 @@ struct BoringResult {
     std::vector<BoringTracePoint> trace;  ///< one point per PLC cycle in the bore
 };
 
+/// Calibrates the probe mandrel of `machine` on the simulated stand (`scenario.calibration`: loads
+/// on the bar tip against a dial indicator), linearises it, and loads the table into the mandrel
+/// the way an upload does: the image is encoded, then decoded with its CRC checked on the
+/// mandrel's side. Throws core::LinearisationRefused when the calibration cannot be fitted.
+ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringScenario& scenario);
+
 /// Runs one boring pass of `scenario` with the given compensation: none; current (dither on,
 /// DitherForceEstimator through CurrentDeflectionSource); probe (the mandrel is first calibrated
 /// on the rig, linearised, its table image encoded, checked and loaded into the mandrel, then

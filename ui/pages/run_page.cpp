@@ -3,6 +3,7 @@
 #include <QTabWidget>
 #include <QVBoxLayout>
 
+#include "ui/boring/boring_panel.h"
 #include "ui/pages/planned_page.h"
 #include "ui/run/shaft_run_panel.h"
 
@@ -16,6 +17,7 @@ RunPage::RunPage(AppContext& context, QWidget* parent)
         QStringLiteral("QTabBar::tab { font-size: 14pt; padding: 8px 22px; min-height: 30px; }"
                        "QTabBar::tab:selected { font-weight: bold; }"));
     m_tabs->addTab(m_shaft, QString());
+    m_tabs->addTab(new BoringPanel(context, this), QString());  // in-process compensation (paper 001)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(8, 4, 8, 4);
     layout->addWidget(m_tabs);
@@ -31,6 +33,10 @@ QString RunPage::title() const {
 void RunPage::retranslate() {
     m_tabs->setTabText(m_tabs->indexOf(m_shaft), tr("Shaft profile (run-to-run)"));
     m_shaft->retranslate();
+    if (auto* boring = m_tabs->findChild<BoringPanel*>()) {
+        m_tabs->setTabText(m_tabs->indexOf(boring), tr("Boring bar (in-process)"));
+        boring->retranslate();
+    }
 }
 
 RunSession& RunPage::session() {
