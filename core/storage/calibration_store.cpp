@@ -1,6 +1,5 @@
 #include "core/storage/calibration_store.h"
 
-#include <QDateTime>
 #include <QSqlQuery>
 #include <QVariant>
 #include <stdexcept>
@@ -8,14 +7,6 @@
 namespace tt::storage {
 
 namespace {
-
-QString nowText() {
-    return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
-}
-
-QVariant nullableInt(const std::optional<qint64>& v) {
-    return v ? QVariant(*v) : QVariant(QMetaType::fromType<qint64>());
-}
 
 const char* kTableColumns =
     "id, probe, plane, version, created_at, created_by, adc_bits, degree, coefficients, rms_residual_um,"
@@ -93,7 +84,7 @@ ProbeTableRecord CalibrationStore::saveTable(ProbeTableRecord r) {
     if (r.image.isEmpty()) throw std::invalid_argument("the table image is empty");
     m_db.transaction([&] {
         r.version = nextTableVersion(r.probe, r.plane);
-        r.createdAt = nowText();
+        r.createdAt = utcNowText();
         QSqlQuery q = m_db.exec(
             QStringLiteral("INSERT INTO probe_tables (probe, plane, version, created_at, created_by, adc_bits, degree,"
                            " coefficients, rms_residual_um, max_table_error_um, points_csv, image, image_crc,"
@@ -110,7 +101,7 @@ void CalibrationStore::recordUpload(qint64 tableId, const QString& who, std::opt
                                     bool verified) {
     m_db.exec(QStringLiteral("UPDATE probe_tables SET uploaded_at = ?, uploaded_by = ?, readback_crc = ?, verified = ?"
                              " WHERE id = ?"),
-              {nowText(), who, nullableInt(readbackCrc), verified ? 1 : 0, tableId});
+              {utcNowText(), who, nullable<qint64>(readbackCrc), verified ? 1 : 0, tableId});
 }
 
 std::vector<ProbeTableRecord> CalibrationStore::tables(const QString& probe) {
@@ -130,7 +121,7 @@ std::vector<ProbeTableRecord> CalibrationStore::tables(const QString& probe) {
 KpCalibrationRecord CalibrationStore::saveKp(KpCalibrationRecord r) {
     if (r.createdBy.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed to save a calibration (Settings → Operator)");
-    r.createdAt = nowText();
+    r.createdAt = utcNowText();
     QSqlQuery q = m_db.exec(QStringLiteral("INSERT INTO kp_calibrations (created_at, created_by, drive, kp_n_per_a,"
                                            " offset_n, r2, points_csv, applied_to) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
                             {r.createdAt, r.createdBy, r.drive, r.kpNPerA, r.offsetN, r.r2, r.pointsCsv, r.appliedTo});

@@ -204,9 +204,13 @@ void Database::migrate(const SchemaModule& module) {
             m.apply(*this);
             exec(QStringLiteral("INSERT INTO schema_versions (module, version, description, applied_at) "
                                 "VALUES (?, ?, ?, ?)"),
-                 {module.name, m.version, m.description, QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs)});
+                 {module.name, m.version, m.description, utcNowText()});
         });
     }
+}
+
+QString utcNowText() {
+    return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
 }
 
 }  // namespace tt::storage

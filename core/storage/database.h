@@ -5,6 +5,7 @@
 #include <QString>
 #include <QVariant>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -103,5 +104,14 @@ private:
     QString m_connectionName;
     int m_transactionDepth = 0;
 };
+
+/// Now in UTC as every table stores times: ISO 8601 with milliseconds ("2026-11-21T14:50:01.123Z").
+QString utcNowText();
+
+/// `value` bound as the column type `Stored` (double, qint64), or SQL NULL of that type when absent.
+template <typename Stored, typename T>
+QVariant nullable(const std::optional<T>& value) {
+    return value ? QVariant::fromValue(static_cast<Stored>(*value)) : QVariant(QMetaType::fromType<Stored>());
+}
 
 }  // namespace tt::storage

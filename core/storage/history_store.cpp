@@ -1,6 +1,5 @@
 #include "core/storage/history_store.h"
 
-#include <QDateTime>
 #include <QSqlQuery>
 #include <QVariant>
 #include <cerrno>
@@ -14,16 +13,8 @@ namespace tt::storage {
 
 namespace {
 
-QString nowText() {
-    return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
-}
-
 QString text(const std::string& s) {
     return QString::fromStdString(s);
-}
-
-QVariant optionalReal(const std::optional<double>& v) {
-    return v ? QVariant(*v) : QVariant(QMetaType::fromType<double>());
 }
 
 QVariant id(std::int64_t v) {
@@ -112,8 +103,8 @@ std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
         QSqlQuery insert = m_db.exec(
             QStringLiteral("INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
                            " part_length_mm, settings) VALUES (?, 'running', ?, ?, ?, ?, ?, ?)"),
-            {nowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm, run.partLengthMm,
-             text(run.settingsJson)});
+            {utcNowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm,
+             run.partLengthMm, text(run.settingsJson)});
         runId = m_db.lastInsertId(insert);
         for (std::size_t i = 0; i < run.pointZMm.size(); ++i)
             m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
@@ -136,7 +127,7 @@ void SqlHistoryStore::writeMeasurement(qint64 part, const core::PartMeasurementR
     for (const core::PointMeasurementRecord& p : m.points)
         m_db.exec(QStringLiteral("INSERT INTO measurements (part_id, point_index, z_mm, measured_mm, nominal_mm,"
                                  " accepted, reason, measured_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
-                  {part, p.pointIndex, p.zMm, optionalReal(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0,
+                  {part, p.pointIndex, p.zMm, nullable<double>(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0,
                    text(p.reason), m.timeS});
 }
 
@@ -145,7 +136,7 @@ void SqlHistoryStore::recordPart(std::int64_t runId, const core::PartCompletionR
         QSqlQuery insert =
             m_db.exec(QStringLiteral("INSERT INTO parts (run_id, part_number, started_s, finished_s, recorded_at)"
                                      " VALUES (?, ?, ?, ?, ?)"),
-                      {id(runId), id(part.partNumber), part.startedS, part.finishedS, nowText()});
+                      {id(runId), id(part.partNumber), part.startedS, part.finishedS, utcNowText()});
         const qint64 partRow = m_db.lastInsertId(insert);
         for (const core::PointCorrectionRecord& c : part.corrections)
             m_db.exec(QStringLiteral("INSERT INTO corrections (part_id, point_index, z_mm, computed_mm, applied_mm)"
@@ -170,15 +161,13 @@ void SqlHistoryStore::recordMeasurement(std::int64_t runId, const core::PartMeas
 void SqlHistoryStore::recordAlarm(std::int64_t runId, const core::AlarmRecord& alarm) {
     m_db.exec(QStringLiteral("INSERT INTO alarms (run_id, part_number, time_s, kind, message, recorded_at)"
                              " VALUES (?, ?, ?, ?, ?, ?)"),
-              {id(runId),
-               alarm.partNumber ? QVariant(static_cast<qlonglong>(*alarm.partNumber))
-                                : QVariant(QMetaType::fromType<qlonglong>()),
-               alarm.timeS, text(alarm.kind), text(alarm.message), nowText()});
+              {id(runId), nullable<qlonglong>(alarm.partNumber), alarm.timeS, text(alarm.kind), text(alarm.message),
+               utcNowText()});
 }
 
 void SqlHistoryStore::finishRun(std::int64_t runId, const std::string& status) {
     m_db.exec(QStringLiteral("UPDATE runs SET status = ?, finished_at = ? WHERE id = ?"),
-              {text(status), nowText(), id(runId)});
+              {text(status), utcNowText(), id(runId)});
 }
 
 std::vector<core::RunSummary> SqlHistoryStore::runs() {

@@ -1,6 +1,5 @@
 #include "core/storage/tool_store.h"
 
-#include <QDateTime>
 #include <QSqlQuery>
 #include <QVariant>
 #include <cmath>
@@ -13,16 +12,8 @@ namespace tt::storage {
 
 namespace {
 
-QString nowText() {
-    return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
-}
-
 QString text(const std::string& s) {
     return QString::fromStdString(s);
-}
-
-QVariant nullableReal(double v, bool present) {
-    return present ? QVariant(v) : QVariant(QMetaType::fromType<double>());
 }
 
 const char* kToolColumns =
@@ -111,7 +102,7 @@ void ToolStore::write(const core::ToolRecord& t, const QString& who, const QStri
             .arg(QLatin1String(kToolColumns)),
         {text(t.id), text(t.name), text(core::toString(t.section.shape)), t.section.diameterMm, t.section.widthMm,
          t.section.heightMm, t.overhangMm, text(t.material), t.youngsModulusMpa,
-         nullableReal(measured ? t.measured->stiffnessNPerMm : 0.0, measured),
+         nullable<double>(measured ? std::optional<double>(t.measured->stiffnessNPerMm) : std::nullopt),
          text(measured ? t.measured->measuredOn : std::string()),
          text(measured ? t.measured->measuredBy : std::string()), t.currentToForceGainNPerA, now, who});
 }
@@ -133,7 +124,7 @@ std::vector<ToolAuditEntry> ToolStore::apply(const std::vector<ToolEdit>& edits,
         if (!e.originalId && !e.after) throw std::invalid_argument("an edit needs an original tool or a new one");
         if (e.after) checkTool(*e.after);
     }
-    const QString now = nowText();
+    const QString now = utcNowText();
     std::vector<ToolAuditEntry> written;
     m_db.transaction([&] {
         // Removals and renames first free their ids; then every new state is written.
@@ -186,7 +177,7 @@ std::vector<ToolAuditEntry> ToolStore::saveMaterial(const core::Material& materi
         throw std::invalid_argument("material " + material.name + ": Young's modulus must be between " +
                                     std::to_string(static_cast<int>(core::kMinYoungsModulusMpa)) + " and " +
                                     std::to_string(static_cast<int>(core::kMaxYoungsModulusMpa)) + " MPa");
-    const QString now = nowText();
+    const QString now = utcNowText();
     std::vector<ToolAuditEntry> written;
     m_db.transaction([&] {
         QSqlQuery q = m_db.exec(QStringLiteral("SELECT youngs_modulus_mpa FROM tool_materials WHERE name = ?"),
@@ -210,7 +201,7 @@ std::vector<ToolAuditEntry> ToolStore::saveMaterial(const core::Material& materi
 std::vector<ToolAuditEntry> ToolStore::removeMaterial(const std::string& name, const QString& who) {
     if (who.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed for the audit record (Settings → Operator)");
-    const QString now = nowText();
+    const QString now = utcNowText();
     std::vector<ToolAuditEntry> written;
     m_db.transaction([&] {
         QSqlQuery q =
