@@ -64,19 +64,10 @@ LqgController::LqgController(const RunToRunPlant& plant, const LqgDesign& design
     Eigen::Index offset = 0;
     for (const LqgBlock& b : design.blocks) {
         Block blk;
+        static_cast<LqgBlock&>(blk) = b;
         blk.offset = offset;
         blk.size = static_cast<Eigen::Index>(b.states.size());
         blk.covOffset = m_covSize;
-        blk.points = b.points;
-        blk.A = b.A;
-        blk.B = b.B;
-        blk.C = b.C;
-        blk.K = b.K;
-        blk.L = b.L;
-        blk.P = b.P;
-        blk.Q = b.Q;
-        blk.V = b.V;
-        blk.P0 = b.P0;
         blk.steadyVariance.resize(m_delay, static_cast<Eigen::Index>(b.points.size()));
         Eigen::MatrixXd P = b.P;
         for (int lead = 0; lead < m_delay; ++lead) {

@@ -62,12 +62,11 @@ public:
     Eigen::VectorXd predictedSigmaMm() const;
 
 private:
-    struct Block {
+    // A block of the design and where it sits in the state vector and the covariance storage.
+    struct Block : LqgBlock {
         Eigen::Index offset = 0;  // into the state vector
         Eigen::Index size = 0;
-        std::size_t covOffset = 0;  // into the flat covariance storage
-        std::vector<int> points;
-        Eigen::MatrixXd A, B, C, K, L, P, Q, V, P0;
+        std::size_t covOffset = 0;       // into the flat covariance storage
         Eigen::MatrixXd steadyVariance;  // row lead 0 .. z-1: diag(C P_lead C' + V) from the steady state
     };
     /// Estimate and its error covariance at one step (a priori).
