@@ -37,13 +37,11 @@ RunToRunPlant buildRunToRunPlant(const RunToRunPlantSpec& spec) {
     const Eigen::Index m = static_cast<Eigen::Index>(spec.points.size());
     const Eigen::Index z = spec.delay;
     std::vector<DisturbanceRealisation> dist;
-    Eigen::Index disturbanceStates = 0;
-    Eigen::Index noiseInputs = 0;
-    for (const ControlPointSpec& p : spec.points) {
+    for (const ControlPointSpec& p : spec.points)
         dist.push_back(p.disturbance.realise());
-        disturbanceStates += dist.back().A.rows();
-        noiseInputs += dist.back().G.cols();
-    }
+    const DisturbanceRealisation stacked = stackRealisations(dist);
+    const Eigen::Index disturbanceStates = stacked.A.rows();
+    const Eigen::Index noiseInputs = stacked.G.cols();
     const Eigen::Index n = m * z + disturbanceStates;
 
     RunToRunPlant plant;
@@ -53,7 +51,12 @@ RunToRunPlant buildRunToRunPlant(const RunToRunPlantSpec& spec) {
     plant.C = Eigen::MatrixXd::Zero(m, n);
     plant.D = Eigen::MatrixXd::Zero(m, m);
     plant.G = Eigen::MatrixXd::Zero(n, noiseInputs);
-    plant.W = Eigen::MatrixXd::Zero(noiseInputs, noiseInputs);
+    // Disturbance: s(k+1) = A_d s + G_d w, added to the output; the points' models stacked after the
+    // delay chains.
+    plant.A.bottomRightCorner(disturbanceStates, disturbanceStates) = stacked.A;
+    plant.G.bottomRows(disturbanceStates) = stacked.G;
+    plant.C.rightCols(disturbanceStates) = stacked.C;
+    plant.W = stacked.W;
     plant.V = Eigen::MatrixXd::Zero(m, m);
     plant.gain = Eigen::VectorXd(m);
     plant.layout.resize(static_cast<std::size_t>(m));
@@ -71,15 +74,10 @@ RunToRunPlant buildRunToRunPlant(const RunToRunPlantSpec& spec) {
         for (Eigen::Index j = 1; j < z; ++j)
             plant.A(L.delayStart + j, L.delayStart + j - 1) = 1.0;
         plant.C(i, L.delayStart + z - 1) = p.gain;
-        // Disturbance: s(k+1) = A_d s + G_d w, added to the output.
         L.disturbanceStart = s;
         L.disturbanceCount = d.A.rows();
         L.noiseStart = w;
         L.noiseCount = d.G.cols();
-        plant.A.block(s, s, d.A.rows(), d.A.cols()) = d.A;
-        plant.G.block(s, w, d.G.rows(), d.G.cols()) = d.G;
-        plant.C.block(i, s, 1, d.C.cols()) = d.C;
-        plant.W.block(w, w, d.W.rows(), d.W.cols()) = d.W;
         plant.V(i, i) = p.measurementNoiseVarianceMm2;
         plant.gain(i) = p.gain;
         plant.xMm.push_back(p.xMm);

@@ -134,26 +134,35 @@ double DisturbanceModel::stationaryVarianceMm2() const {
 
 DisturbanceRealisation DisturbanceModel::realise() const {
     std::vector<DisturbanceRealisation> parts;
+    for (const auto& c : m_components)
+        parts.push_back(c.realise());
+    DisturbanceRealisation r = stackRealisations(parts);
+    r.C = r.C.colwise().sum().eval();  // the components add up at the one output
+    return r;
+}
+
+DisturbanceRealisation stackRealisations(const std::vector<DisturbanceRealisation>& parts) {
     Eigen::Index states = 0;
     Eigen::Index inputs = 0;
-    for (const auto& c : m_components) {
-        parts.push_back(c.realise());
-        states += parts.back().A.rows();
-        inputs += parts.back().G.cols();
+    for (const auto& p : parts) {
+        states += p.A.rows();
+        inputs += p.G.cols();
     }
+    const auto outputs = static_cast<Eigen::Index>(parts.size());
     DisturbanceRealisation r;
     r.A = Eigen::MatrixXd::Zero(states, states);
     r.G = Eigen::MatrixXd::Zero(states, inputs);
-    r.C = Eigen::MatrixXd::Zero(1, states);
+    r.C = Eigen::MatrixXd::Zero(outputs, states);
     r.W = Eigen::MatrixXd::Zero(inputs, inputs);
     Eigen::Index s = 0;
     Eigen::Index w = 0;
-    for (const auto& p : parts) {
+    for (Eigen::Index k = 0; k < outputs; ++k) {
+        const DisturbanceRealisation& p = parts[static_cast<std::size_t>(k)];
         const Eigen::Index ns = p.A.rows();
         const Eigen::Index nw = p.G.cols();
         r.A.block(s, s, ns, ns) = p.A;
         r.G.block(s, w, ns, nw) = p.G;
-        r.C.block(0, s, 1, ns) = p.C;
+        r.C.block(k, s, 1, ns) = p.C;
         r.W.block(w, w, nw, nw) = p.W;
         s += ns;
         w += nw;

@@ -55,6 +55,11 @@ private:
     double m_inputVariance = 0.0;
 };
 
+/// Realisations stacked block-diagonally: the states and noise inputs of part k follow those of part
+/// k - 1, and C has one row per part (part k's output alone). The controller's plant and the lathe
+/// simulator stack the control points' models this way; a model stacks its components (and sums C).
+DisturbanceRealisation stackRealisations(const std::vector<DisturbanceRealisation>& parts);
+
 /// The disturbance at one control point: a sum of independent components.
 class DisturbanceModel {
 public:

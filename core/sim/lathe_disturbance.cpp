@@ -46,30 +46,15 @@ LatheDisturbanceModel LatheDisturbanceModel::none(int points) {
 LatheDisturbanceModel LatheDisturbanceModel::fromPointModels(const std::vector<DisturbanceModel>& points) {
     if (points.empty()) throw std::invalid_argument("the disturbance needs at least one control point");
     std::vector<DisturbanceRealisation> parts;
-    Eigen::Index n = 0, q = 0;
-    for (const DisturbanceModel& p : points) {
+    for (const DisturbanceModel& p : points)
         parts.push_back(p.realise());
-        n += parts.back().A.rows();
-        q += parts.back().W.rows();
-    }
-    const auto count = static_cast<Eigen::Index>(points.size());
+    DisturbanceRealisation stacked = stackRealisations(parts);
     LatheDisturbanceModel m;
-    m.A = Eigen::MatrixXd::Zero(n, n);
-    m.G = Eigen::MatrixXd::Zero(n, q);
-    m.C = Eigen::MatrixXd::Zero(count, n);
-    m.H = Eigen::MatrixXd::Zero(count, q);
-    m.W = Eigen::MatrixXd::Zero(q, q);
-    Eigen::Index s = 0, w = 0;
-    for (Eigen::Index i = 0; i < count; ++i) {
-        const DisturbanceRealisation& r = parts[static_cast<std::size_t>(i)];
-        const Eigen::Index ns = r.A.rows(), nw = r.W.rows();
-        m.A.block(s, s, ns, ns) = r.A;
-        m.G.block(s, w, ns, nw) = r.G;
-        m.C.block(i, s, 1, ns) = r.C;
-        m.W.block(w, w, nw, nw) = r.W;
-        s += ns;
-        w += nw;
-    }
+    m.A = std::move(stacked.A);
+    m.G = std::move(stacked.G);
+    m.C = std::move(stacked.C);
+    m.H = Eigen::MatrixXd::Zero(m.C.rows(), m.G.cols());
+    m.W = std::move(stacked.W);
     return m;
 }
 

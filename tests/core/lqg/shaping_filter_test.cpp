@@ -103,6 +103,33 @@ TEST(DisturbanceModel, SumsComponentsAndRealisesThemBlockDiagonally) {
     EXPECT_TRUE(std::isinf(DisturbanceModel({DisturbanceComponent::randomWalk(1e-6)}).stationaryVarianceMm2()));
 }
 
+// Stacking puts each part's states, noise inputs and output on the diagonal: a 1-state AR(1) and a
+// 2-state filter give A = diag(A1, A2), G = diag(G1, G2), W = diag(W1, W2), C = [C1 0; 0 C2].
+TEST(DisturbanceModel, StackedRealisationsAreBlockDiagonal) {
+    const DisturbanceRealisation a = DisturbanceModel({DisturbanceComponent::ar1(0.9, 0.001)}).realise();
+    const DisturbanceRealisation b = DisturbanceModel({DisturbanceComponent::shapingFilterWithVariance(
+                                                          ShapingFilter::fromRoots({1.0, 0.246}, {C(0.9215)}), 0.0013)})
+                                         .realise();
+    const DisturbanceRealisation s = stackRealisations({a, b});
+    const Eigen::Index na = a.A.rows(), nb = b.A.rows(), qa = a.G.cols(), qb = b.G.cols();
+    ASSERT_EQ(s.A.rows(), na + nb);
+    ASSERT_EQ(s.G.cols(), qa + qb);
+    ASSERT_EQ(s.C.rows(), 2);
+    EXPECT_EQ(s.A.topLeftCorner(na, na), a.A);
+    EXPECT_EQ(s.A.bottomRightCorner(nb, nb), b.A);
+    EXPECT_TRUE(s.A.topRightCorner(na, nb).isZero(0.0));
+    EXPECT_TRUE(s.A.bottomLeftCorner(nb, na).isZero(0.0));
+    EXPECT_EQ(s.G.topLeftCorner(na, qa), a.G);
+    EXPECT_EQ(s.G.bottomRightCorner(nb, qb), b.G);
+    EXPECT_TRUE(s.G.topRightCorner(na, qb).isZero(0.0));
+    EXPECT_EQ(s.W.topLeftCorner(qa, qa), a.W);
+    EXPECT_EQ(s.W.bottomRightCorner(qb, qb), b.W);
+    EXPECT_EQ(s.C.block(0, 0, 1, na), a.C);
+    EXPECT_EQ(s.C.block(1, na, 1, nb), b.C);
+    EXPECT_TRUE(s.C.block(0, na, 1, nb).isZero(0.0));
+    EXPECT_TRUE(s.C.block(1, 0, 1, na).isZero(0.0));
+}
+
 TEST(DisturbanceModel, RefusesBadComponents) {
     EXPECT_THROW(DisturbanceComponent::ar1(1.0, 0.001), std::invalid_argument);
     EXPECT_THROW(DisturbanceComponent::ar1(0.5, 0.0), std::invalid_argument);
