@@ -74,7 +74,12 @@ void LoopEngine::start(const RunDescription& run) {
     if (m_state != LoopState::Idle) throw std::logic_error("a run is already going; stop it first");
     m_runId.reset();
     if (m_ports.history) m_runId = m_ports.history->beginRun(run);
-    m_nextPart = m_config.firstPartNumber;
+    resetRun(m_config.firstPartNumber);
+    setState(LoopState::Running, "starting " + partText(m_nextPart));
+}
+
+void LoopEngine::resetRun(std::int64_t nextPart) {
+    m_nextPart = nextPart;
     m_partsFinished = 0;
     m_complete = false;
     m_inProgress.reset();
@@ -83,20 +88,13 @@ void LoopEngine::start(const RunDescription& run) {
     m_measured.clear();
     m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
     m_pauseCause = PauseCause::None;
-    setState(LoopState::Running, "starting " + partText(m_nextPart));
 }
 
 void LoopEngine::resumeFrom(const ResumePoint& point) {
     if (m_state != LoopState::Idle) throw std::logic_error("a run is already going; stop it first");
     m_controller->restoreState(point.controllerState);
     m_runId = point.run.runId;
-    m_nextPart = point.lastPartNumber + 1;
-    m_partsFinished = 0;
-    m_complete = false;
-    m_inProgress.reset();
-    m_awaiting.clear();
-    m_session.reset();
-    m_measured.clear();
+    resetRun(point.lastPartNumber + 1);
     for (const StoredPart& part : point.pendingParts) {
         if (part.measurement)
             m_measured[part.partNumber] = *part.measurement;
@@ -110,8 +108,6 @@ void LoopEngine::resumeFrom(const ResumePoint& point) {
         }
     }
     if (!m_awaiting.empty()) openSession();
-    m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
-    m_pauseCause = PauseCause::None;
     setState(LoopState::Running, "continuing run " + std::to_string(*m_runId) + " with " + partText(m_nextPart));
 }
 

@@ -130,6 +130,7 @@ private:
     void notify(LoopEvent event);
     void watchDevices();
     void openSession();
+    void resetRun(std::int64_t nextPart);  // forgets the parts of any previous run
 
     LoopConfig m_config;
     LoopPorts m_ports;
