@@ -12,6 +12,9 @@
 #include "core/calibration/linearisation_image.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
+#include "devices/api/device_manager.h"
+#include "ui/calibration/device_calibration_probe.h"
+#include "ui/calibration/device_kp_drive.h"
 #include "ui/calibration/kp_drive_source.h"
 #include "ui/calibration/probe_wizard.h"
 #include "ui/calibration/simulated_calibration_probe.h"
@@ -62,7 +65,8 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
       m_kpText(new QLabel(m_overview)),
       m_kpStart(new QPushButton(m_overview)),
       m_kpList(listView(m_overview, "kpCalibrations", 6)),
-      m_storeProblem(new QLabel(m_overview)) {
+      m_storeProblem(new QLabel(m_overview)),
+      m_deviceNotice(new QLabel(m_overview)) {
     m_probeTitle->setObjectName(QStringLiteral("SectionTitle"));
     m_kpTitle->setObjectName(QStringLiteral("SectionTitle"));
     m_probeStart->setObjectName(QStringLiteral("startProbeWizard"));
@@ -73,6 +77,10 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     m_storeProblem->setObjectName(QStringLiteral("calibrationStoreProblem"));
     m_storeProblem->setStyleSheet(QStringLiteral("color: #b71c1c; font-weight: bold;"));
     m_storeProblem->setWordWrap(true);
+    m_deviceNotice->setObjectName(QStringLiteral("calibrationDeviceNotice"));
+    m_deviceNotice->setStyleSheet(QStringLiteral("color: #b26a00; font-weight: bold;"));
+    m_deviceNotice->setWordWrap(true);
+    m_deviceNotice->hide();
     for (QLabel* l : {m_probeText, m_kpText})
         l->setWordWrap(true);
 
@@ -86,6 +94,7 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     auto* layout = new QVBoxLayout(m_overview);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_storeProblem);
+    layout->addWidget(m_deviceNotice);
     layout->addWidget(m_probeTitle);
     layout->addWidget(m_probeText);
     layout->addLayout(probeButtons);
@@ -105,6 +114,8 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     connect(m_probeStartOver, &QPushButton::clicked, this, &CalibrationPage::startOver);
     connect(m_kpStart, &QPushButton::clicked, this, &CalibrationPage::startKpCalibration);
     openStores();
+    watchDevices();
+    adoptDevices();
     retranslate();
 }
 
@@ -120,6 +131,65 @@ QString CalibrationPage::title() const {
 
 CalibrationProbe* CalibrationPage::simulatedProbe() const {
     return m_simProbe.get();
+}
+
+void CalibrationPage::showEvent(QShowEvent* event) {
+    Page::showEvent(event);
+    if (context().devices != m_devices) {
+        watchDevices();
+        adoptDevices();
+    }
+}
+
+void CalibrationPage::watchDevices() {
+    if (m_devices) disconnect(m_devices, nullptr, this, nullptr);
+    m_devices = context().devices;
+    if (m_devices) connect(m_devices, &devices::DeviceManager::devicesChanged, this, &CalibrationPage::adoptDevices);
+}
+
+void CalibrationPage::adoptDevices() {
+    // Only the probes and drives matter: a changed gauge or CNC output leaves the wizards alone.
+    QList<QPair<QString, const void*>> now;
+    if (m_devices)
+        for (devices::DeviceKind kind : {devices::DeviceKind::Probe, devices::DeviceKind::DriveCurrent})
+            for (const QString& id : m_devices->devicesOfKind(kind))
+                now.append({id, m_devices->device(id)});
+    if (now == m_adopted) return;
+    const bool wizardOpen = !overviewShown();
+    // The wizards refer to the adapters: drop them (setProbes/setDrives) before the adapters.
+    setProbes({});
+    setDrives({});
+    m_deviceProbes.clear();
+    m_deviceDrives.clear();
+    m_adopted = now;
+    std::vector<CalibrationProbe*> probes;
+    std::vector<KpDriveSource*> drives;
+    for (const auto& adopted : now) {
+        const QString& id = adopted.first;
+        const devices::DeviceEntry* e = m_devices->entry(id);
+        devices::Device* device = m_devices->device(id);
+        if (!e || !device) continue;
+        if (e->kind == devices::DeviceKind::Probe && device->deflectionProbe()) {
+            m_deviceProbes.push_back(std::make_unique<DeviceCalibrationProbe>(*device, e->name));
+            probes.push_back(m_deviceProbes.back().get());
+        } else if (e->kind == devices::DeviceKind::DriveCurrent && device->driveCurrentReadout()) {
+            m_deviceDrives.push_back(std::make_unique<DeviceKpDrive>(*device, e->name));
+            drives.push_back(m_deviceDrives.back().get());
+        }
+    }
+    setProbes(std::move(probes));
+    setDrives(std::move(drives));
+    if (wizardOpen) {
+        showOverview();
+        m_deviceNotice->setText(
+            tr("The devices changed while a calibration was open, so it was closed; the captured "
+               "points are kept. Open it again to continue."));
+        m_deviceNotice->show();
+    }
+}
+
+QString CalibrationPage::deviceNotice() const {
+    return m_deviceNotice->isHidden() ? QString() : m_deviceNotice->text();
 }
 
 void CalibrationPage::openStores() {
@@ -170,6 +240,7 @@ void CalibrationPage::showOverview() {
 }
 
 void CalibrationPage::startProbeCalibration() {
+    m_deviceNotice->hide();
     if (!m_probeWizard) {
         m_probeWizard = new ProbeCalibrationWizard(context(), m_probeSession, probes(), m_calibrations.get(), this);
         m_probeWizard->setWindowFlags(Qt::Widget);  // a page of the main window, not a dialog
@@ -186,6 +257,7 @@ void CalibrationPage::startProbeCalibration() {
 }
 
 void CalibrationPage::startKpCalibration() {
+    m_deviceNotice->hide();
     if (!m_kpWizard) {
         m_kpWizard =
             new KpCalibrationWizard(context(), m_kpSession, drives(), m_calibrations.get(), m_tools.get(), this);
