@@ -122,28 +122,26 @@ PiecewiseCubic PiecewiseCubic::make(InterpolationMethod method, const std::vecto
     return method == InterpolationMethod::Pchip ? pchip(x, y) : naturalSpline(x, y);
 }
 
+PiecewiseCubic::Segment PiecewiseCubic::segment(std::size_t k, double x) const {
+    const double h = m_x[k + 1] - m_x[k];
+    const double del = (m_y[k + 1] - m_y[k]) / h;
+    return {x - m_x[k], (3.0 * del - 2.0 * m_d[k] - m_d[k + 1]) / h, (m_d[k] - 2.0 * del + m_d[k + 1]) / (h * h)};
+}
+
 double PiecewiseCubic::value(double x) const {
     if (m_x.size() == 1 || x <= m_x.front()) return m_y.front();
     if (x >= m_x.back()) return m_y.back();
     const std::size_t k = static_cast<std::size_t>(std::upper_bound(m_x.begin(), m_x.end(), x) - m_x.begin()) - 1;
-    const double h = m_x[k + 1] - m_x[k];
-    const double s = x - m_x[k];
-    const double del = (m_y[k + 1] - m_y[k]) / h;
-    const double c2 = (3.0 * del - 2.0 * m_d[k] - m_d[k + 1]) / h;
-    const double c3 = (m_d[k] - 2.0 * del + m_d[k + 1]) / (h * h);
-    return m_y[k] + s * (m_d[k] + s * (c2 + s * c3));
+    const Segment g = segment(k, x);
+    return m_y[k] + g.s * (m_d[k] + g.s * (g.c2 + g.s * g.c3));
 }
 
 double PiecewiseCubic::derivative(double x) const {
     if (m_x.size() == 1 || x < m_x.front() || x > m_x.back()) return 0.0;
     const std::size_t k = std::min<std::size_t>(
         static_cast<std::size_t>(std::upper_bound(m_x.begin(), m_x.end(), x) - m_x.begin()) - 1, m_x.size() - 2);
-    const double h = m_x[k + 1] - m_x[k];
-    const double s = x - m_x[k];
-    const double del = (m_y[k + 1] - m_y[k]) / h;
-    const double c2 = (3.0 * del - 2.0 * m_d[k] - m_d[k + 1]) / h;
-    const double c3 = (m_d[k] - 2.0 * del + m_d[k + 1]) / (h * h);
-    return m_d[k] + s * (2.0 * c2 + 3.0 * s * c3);
+    const Segment g = segment(k, x);
+    return m_d[k] + g.s * (2.0 * g.c2 + 3.0 * g.s * g.c3);
 }
 
 }  // namespace tt::core

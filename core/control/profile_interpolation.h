@@ -51,6 +51,14 @@ public:
 private:
     PiecewiseCubic(std::vector<double> x, std::vector<double> y, std::vector<double> d);
 
+    // Interval k as y_k + s (d_k + s (c2 + s c3)), s = x - x_k (cubic Hermite form).
+    struct Segment {
+        double s = 0.0;
+        double c2 = 0.0;
+        double c3 = 0.0;
+    };
+    Segment segment(std::size_t k, double x) const;
+
     std::vector<double> m_x;
     std::vector<double> m_y;
     std::vector<double> m_d;
