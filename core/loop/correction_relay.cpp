@@ -1,18 +1,17 @@
 #include "core/loop/correction_relay.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <stdexcept>
 #include <utility>
+
+#include "core/common/text_format.h"
 
 namespace tt::core {
 
 namespace {
 
 std::string secondsText(std::chrono::milliseconds ms) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f s", static_cast<double>(ms.count()) / 1000.0);
-    return text;
+    return formatFixed(static_cast<double>(ms.count()) / 1000.0, 1) + " s";
 }
 
 }  // namespace
@@ -36,9 +35,7 @@ OutputResult CorrectionRelay::sendPartCorrection(const PartCorrection& correctio
 }
 
 OutputResult CorrectionRelay::sendDynamicOffset(double xOffsetMm) {
-    char text[64];
-    std::snprintf(text, sizeof text, "the X offset of %.4f mm", xOffsetMm);
-    return forward(xOffsetMm, text);
+    return forward(xOffsetMm, "the X offset of " + formatFixed(xOffsetMm, 4) + " mm");
 }
 
 OutputResult CorrectionRelay::forward(std::variant<PartCorrection, double> write, const std::string& what) {
