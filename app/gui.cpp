@@ -11,6 +11,7 @@
 #include "devices/api/plugin_folder.h"
 #include "ui/app_state.h"
 #include "ui/devices/terminal_devices.h"
+#include "ui/history_check.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/prompt.h"
@@ -76,6 +77,11 @@ int runGui(int argc, char** argv) {
     for (ui::PageId id : ui::kAllPages)
         if (ui::pageKey(id) == options.page) window.showPage(id);
     window.show();
+
+    if (options.screenshotDir.isEmpty())
+        QTimer::singleShot(0, &window, [&] { ui::checkHistoryAtStart(context, &window, &prompt); });
+    else
+        ui::checkHistoryAtStart(context, &window, nullptr);  // screenshots: the status bar says it, no dialog
 
     if (!options.screenshotDir.isEmpty()) {
         const int written = saveScreenshots(window, options.screenshotDir);

@@ -18,13 +18,16 @@ struct CliResult {
     QJsonObject json() const { return QJsonDocument::fromJson(out.toUtf8()).object(); }
 };
 
-/// Runs `trueturn args...` headless (no display) and waits up to `timeoutMs`.
-inline CliResult runTrueturn(const QStringList& args, int timeoutMs = 120000) {
+/// Runs `trueturn args...` headless (no display) and waits up to `timeoutMs`. `extraEnv` is
+/// added to the environment (e.g. QT_QPA_PLATFORM=offscreen to start the GUI).
+inline CliResult runTrueturn(const QStringList& args, int timeoutMs = 120000,
+                             const QProcessEnvironment& extraEnv = QProcessEnvironment()) {
     QProcess process;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.remove(QStringLiteral("DISPLAY"));
     env.remove(QStringLiteral("WAYLAND_DISPLAY"));
     env.remove(QStringLiteral("QT_QPA_PLATFORM"));
+    env.insert(extraEnv);
     process.setProcessEnvironment(env);
     process.start(QStringLiteral(TRUETURN_EXE), args);
     process.waitForFinished(timeoutMs);

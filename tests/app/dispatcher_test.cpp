@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <QDir>
+#include <QFileInfo>
+#include <QTemporaryDir>
+
 #include <trueturn/version.h>
 
 #include "cli_runner.h"
@@ -44,6 +48,36 @@ TEST(Dispatcher, GuiWithoutDisplaySaysSo) {
     const CliResult r = runTrueturn({});
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(r.err.contains(QStringLiteral("no display"))) << r.err.toStdString();
+}
+
+/// The GUI with its own settings and data folders, on the offscreen platform.
+QProcessEnvironment offscreenGui(const QTemporaryDir& home) {
+    QProcessEnvironment env;
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+    env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+    return env;
+}
+
+TEST(Gui, StartsOffscreenOnTheSimulatorAndQuitsCleanly) {
+    QTemporaryDir home;
+    const CliResult r =
+        runTrueturn({QStringLiteral("--quit-after-ms"), QStringLiteral("1500")}, 60000, offscreenGui(home));
+    EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
+    EXPECT_TRUE(QFileInfo::exists(home.filePath(QStringLiteral("data/TrueTurn/TrueTurn/history.sqlite"))))
+        << "the embedded history is created in the user's data folder";
+}
+
+TEST(Gui, SavesAScreenshotOfEveryPage) {
+    QTemporaryDir home;
+    const QString shots = home.filePath(QStringLiteral("shots"));
+    const CliResult r = runTrueturn({QStringLiteral("--screenshots"), shots}, 60000, offscreenGui(home));
+    EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
+    const QStringList pages = QDir(shots).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
+    EXPECT_EQ(pages, (QStringList{QStringLiteral("calibration.png"), QStringLiteral("controller.png"),
+                                  QStringLiteral("devices.png"), QStringLiteral("measurements.png"),
+                                  QStringLiteral("reports.png"), QStringLiteral("run.png"),
+                                  QStringLiteral("settings.png"), QStringLiteral("tools.png")}));
 }
 
 }  // namespace

@@ -1,0 +1,18 @@
+#include "core/storage/schemas.h"
+
+#include "core/storage/calibration_store.h"
+#include "core/storage/history_store.h"
+#include "core/storage/tool_store.h"
+
+namespace tt::storage {
+
+std::vector<SchemaModule> allSchemas() {
+    return {historySchema(), toolSchema(), calibrationSchema()};
+}
+
+void migrateAll(Database& database) {
+    for (const SchemaModule& module : allSchemas())
+        database.migrate(module);
+}
+
+}  // namespace tt::storage

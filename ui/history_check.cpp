@@ -1,0 +1,38 @@
+#include "ui/history_check.h"
+
+#include <QCoreApplication>
+#include <exception>
+
+#include "core/storage/schemas.h"
+#include "ui/app_context.h"
+#include "ui/app_state.h"
+#include "ui/prompt.h"
+#include "ui/tools/database_connection.h"
+
+namespace tt::ui {
+
+namespace {
+QString tr(const char* text) {
+    return QCoreApplication::translate("tt::ui::HistoryCheck", text);
+}
+}  // namespace
+
+bool checkHistoryAtStart(AppContext& context, QWidget* parent, Prompt* prompt) {
+    try {
+        const auto database = openContextDatabase(context.databasePath);
+        storage::migrateAll(*database);
+        if (context.state) context.state->setDatabaseDescription(database->config().describe());
+        return true;
+    } catch (const std::exception& e) {
+        const QString reason = QString::fromStdString(e.what());
+        if (context.state) context.state->setDatabaseDescription(tr("not available — %1").arg(reason));
+        if (prompt)
+            prompt->warn(parent, tr("Run history"),
+                         tr("The run history cannot be used: %1\n\nRuns are not recorded until this is "
+                            "fixed (Settings shows where the history is kept).")
+                             .arg(reason));
+        return false;
+    }
+}
+
+}  // namespace tt::ui
