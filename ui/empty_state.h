@@ -7,7 +7,7 @@ class QLabel;
 namespace tt::ui {
 
 /// A large, centred explanation of what a page or panel shows once it has data
-/// ("No runs recorded yet: reports show ..."). Never a bare "TODO".
+/// ("No runs recorded yet: reports show ..."). Never an empty page.
 class EmptyState : public QWidget {
     Q_OBJECT
 public:

@@ -216,7 +216,7 @@ TEST(Regression, PressEqualsBruteForceLeaveOneOut) {
 }
 
 TEST(Regression, AutomaticDegreePicksTheQuadraticUnderNoise) {
-    // A quadratic profile with a fixed +-0.003 mm scatter (hard-coded so the test is reproducible):
+    // A quadratic profile with a fixed +-0.003 mm scatter (fixed in the test so it is reproducible):
     // leave-one-out picks 2, a straight line misses the curvature, higher degrees fit the noise.
     std::vector<double> x, y;
     const std::vector<double> noise = {0.0021,  -0.0013, 0.0004,  -0.0028, 0.0017,  0.0009, -0.0022, 0.0012,  -0.0005,
