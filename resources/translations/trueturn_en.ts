@@ -2,6 +2,80 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en_GB">
 <context>
+    <name>BoringPanel</name>
+    <message>
+        <source>The drive current read-out is silent or disconnected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe mandrel is silent or disconnected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data from the probe mandrel for more than half a second.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe mandrel sends raw codes without a linearisation table: load one on the Calibration page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Taper or contour (or a feed move): the force cannot be read from the current here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The cross slide does not move with the dither: it sticks, or the dither is off.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The dither stroke is too short for this PLC cycle: too few readings at constant speed. Use a longer dither period or a shorter PLC cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for a forward and a reverse dither stroke.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Holding the offset at %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC does not take the offset: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compensating</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The offset is at its range limit: the deflection is larger than the limit allows.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The offset moves at its rate limit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The offset follows the measured deflection.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SimulatedCalibrationProbe</name>
+    <message>
+        <source>Sending chunk %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stored in the mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stored, but the mandrel rejects it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::AppState</name>
     <message>
         <source>Idle</source>
@@ -17,6 +91,975 @@
     </message>
     <message>
         <source>Fault</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::BoringPanel</name>
+    <message>
+        <source>The devices were changed, so the compensation stopped. The CNC keeps the offset it holds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen source device is gone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No CNC output for the dynamic X offset: add one on the Devices page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen CNC output is gone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose where the deflection comes from.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No tool: add the boring bar to the tool table on the Tools page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the tool.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot start: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Starting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero the offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC holds a dynamic X offset of %1 mm. Set it to 0 now? The tool moves by %2 mm: do this only with the tool out of the bore.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC did not take the offset 0: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The bore is finished: largest diameter error %1 mm with compensation, %2 mm without (%3 %).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Holding</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection —</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force %1 N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force —</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped. The CNC keeps the offset it holds. Choose the source, the tool and the limits, then Start.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Engine: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bore diameter error from %1 mm in: %2 mm with compensation, %3 mm without</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bore diameter error: shown from %1 mm into the bore</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool at %1 of %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real deflection (simulator)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With compensation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane along X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Offset limit ±</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rate limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PLC cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cutting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate a silent read-out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero the offset…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane 2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Taper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station: current + dither</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station: probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: current + dither</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Station&apos;s PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k %1 N/mm%2 · k_p %3 N/A · L/d %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (measured)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not calibrated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tool table cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No tool in the tool table (Tools page).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection and dynamic X offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time, s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bore diameter error along the bore (simulated station)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position in the bore, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameter error, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::CalibrationPage</name>
+    <message>
+        <source>Simulated probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated cross feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The devices changed while a calibration was open, so it was closed; the captured points are kept. Open it again to continue.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start over</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Forget the %1 captured points of the unfinished calibration?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not uploaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>verified, CRC %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read-back CRC %1 does not match</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe mandrel linearisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Builds the table ADC code → deflection that the mandrel&apos;s microcontroller uses: capture points against a dial indicator, fit the sensor&apos;s characteristic, save a new table version and upload it with read-back of its CRC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue the calibration (%1 points kept)…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linearise a probe mandrel…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Version</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>By</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table error, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In the mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current-to-force gain k_p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Known loads on the cross slide against the motor current difference with dither; the result is written into the tool table.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Calibrate k_p from known loads…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p, N/A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The calibration database cannot be opened: %1. Tables can still be built and exported, not saved.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::DevicesPage</name>
+    <message>
+        <source>%1 — %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New: %1
+(not added yet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settings to correct: %1 (marked in red).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1? Its settings are deleted; the loop can no longer use it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not tested: correct the settings marked in red first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Testing the connection…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No connection: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No answer within %1 s: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not added</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fill in the settings, test the connection, then add the device.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (last value)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Device instances</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a device of type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No device selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add a gauge micrometer, probe mandrel, drive-current readout or correction output to the CNC. The built-in simulator provides every kind, with fault switches.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator fault switches</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Noisy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stuck value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Malformed frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unplugged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Counters</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::KpCalibrationWizard</name>
+    <message>
+        <source>k_p from known loads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt; Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next &gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::KpFitPage</name>
+    <message>
+        <source>Refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive).&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>known loads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p ΔI + offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>residual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit k_p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force against the current difference.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load against ΔI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ΔI, A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load, N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Residuals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load − fit, N</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::KpLoadsPage</name>
+    <message>
+        <source>The drive read-out is not ready: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring at %1 N: keep the load steady…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No reliable current difference at %1 N: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed point added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measured, %1 pairs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>typed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>known loads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Known loads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply the load, enter what the gauge shows, measure. At least 3 loads, 0 included.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Known load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ΔI (typed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add typed point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load, N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ΔI, A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current difference against the load</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::KpSavePage</name>
+    <message>
+        <source>Save k_p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter your name on the Settings page first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved: no operator name (Settings).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The calibration database is not open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved. No tool was chosen, so the tool table is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved; k_p %1 N/A written into %2 (recorded in the tool audit).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The calibration is kept with your name; the chosen tools get the new k_p.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save and write into the tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p = %1 N/A, to be written into: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no tool (only the calibration is kept)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::KpSetupPage</name>
+    <message>
+        <source>%1 %2 — k_p now %3 N/A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive and tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p turns the cross-feed motor current into force: P = k_p (I_fwd − I_rev) / 2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cross-feed drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the new k_p into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Put a dynamometer or a hydraulic jack with a gauge between the tool block and the workpiece so it pushes the tool towards the axis like the cutting force. Start the cross-feed dither (as for boring) and keep it running; at each load the current is averaged at constant velocity in both directions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::LatheLink</name>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>still connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 “%2” is no longer on the Devices page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Run page was closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a new run was started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::LathePanel</name>
+    <message>
+        <source>No run on the lathe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No part on the machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Press Start: the corrections of part 1 go to the CNC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The next part starts when its corrections are on the CNC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its corrections are on the CNC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its corrections are on the CNC (%1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: type its diameters below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measure part %1 at x = %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · last reading %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take gauge reading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::LoopWorker</name>
+    <message>
+        <source>the real lathe&apos;s devices are not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A run is already going; stop it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run history cannot be opened: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run cannot start: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No run is going: the diameters were not taken.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -92,6 +1135,146 @@
     </message>
     <message>
         <source>History: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ManualEntryPanel</name>
+    <message>
+        <source>Part %1 by hand: diameters in mm, nominal %2, Enter for the next point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>By hand: no part is waiting for its diameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x = %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a diameter in mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rejected: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No part is waiting for its diameters: nothing was sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::MaterialsModel</name>
+    <message>
+        <source>Material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E, MPa</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>material: the name must not be empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus E: &apos;%1&apos; must be a number between %2 and %3 MPa</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::MeasurementsModel</name>
+    <message>
+        <source>—</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nominal, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deviation, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::MeasurementsPage</name>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only rejected and unmeasured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run history cannot be read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No parts recorded yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start a run on the Run page: every measured part appears here with its diameters at the control points, whether each was accepted and why not.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1 · %2 · %3, z = %4 · %5 parts · %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 parts recorded, %2 measured; %3 values rejected or not measured.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -183,6 +1366,514 @@
     </message>
 </context>
 <context>
+    <name>tt::ui::ProbeAcceptPage</name>
+    <message>
+        <source>(typed points)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Characteristic of degree %1 from %2 points, residual RMS %3 µm.&lt;/p&gt;&lt;p&gt;Table: %4 entries of %5 nm, worst error at the calibration points %6 µm, step between codes up to %7 µm; %8 entries outside the calibrated range %9 .. %10 µm are extrapolated.%11&lt;/p&gt;&lt;p&gt;It will be saved as version &lt;b&gt;%12&lt;/b&gt; of %13, plane %14, by &lt;b&gt;%15&lt;/b&gt;.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(no operator name — set it in Settings)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Accept the table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check the figures; the table is stored only when you accept it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I accept this linearisation table</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeCalibrationWizard</name>
+    <message>
+        <source>Probe mandrel linearisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt; Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next &gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeCapturePage</name>
+    <message>
+        <source>Probe: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live ADC code %1 (mean of %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for probe samples…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The jack bends the bar to %1 µm; wait for the live code to settle, then capture.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe is not ready: type the point instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Too few live samples yet (%1 of %2): wait a moment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1: %2 µm at ADC code %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed point %1 added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point removed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>live, %1 samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>typed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>captured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capture points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load the bar, read the instrument, capture. At least %1 points; both directions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator jack</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bend the bar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference reading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capture point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC code (typed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add typed point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC code against the reference deflection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference deflection, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Captured points stay here when you go back or cancel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeChoosePage</name>
+    <message>
+        <source>No probe mandrel is configured: add one on the Devices page, or type the points.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is ready.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 — you can still type the points by hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe and bending plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Which probe mandrel is calibrated, in which plane, and its ADC resolution.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bending plane</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC resolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X — radial (bore diameter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y — tangential</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeFitPage</name>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>degree %1: leave-one-out %2 µm, in-sample %3 µm%4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> — chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#1b5e20&apos;&gt;&lt;b&gt;Monotonic over the whole ADC range; residual RMS %1 µm.&lt;/b&gt;&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>captured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fitted, degree %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>residual</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit the characteristic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The inductive sensor&apos;s characteristic is a polynomial of degree 2 to 4; the table inverts it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic (cross-validation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Characteristic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference deflection, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Residuals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Table reading − reference, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeReferencePage</name>
+    <message>
+        <source>Set up the reference</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The deflection is read on an instrument at the tool tip while the bar is loaded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference instrument</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dial indicator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Division of the instrument</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1. Clamp the boring bar as for cutting; mount the instrument on the lathe bed touching the tool tip in the chosen plane.
+2. With the bar unloaded, set the instrument to zero.
+3. Load the bar in both directions in steps (a screw jack against the tool block) over the whole travel of the probe; at each step read the instrument and capture the point. Aim for 15 to 25 points, both signs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProbeSavePage</name>
+    <message>
+        <source>Export the table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C header (*.h);;Binary image (*.bin);;CSV (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The calibration database is not open; export the table instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter your name on the Settings page first: the table is saved with it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved: no operator name (Settings).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(typed points)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved as version %1 of %2 by %3 at %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Now upload it to the mandrel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uploading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload failed: %1. The saved table is kept; try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read-back does not match: the mandrel reports version %1, %2; the image has version %3, CRC-32C %4. Upload again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mandrel did not report its table; upload again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save and upload</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The table is saved as a new version with your name, then sent to the mandrel and read back.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the table, then upload it to %1. Finish is possible once the mandrel reports the same version and CRC as the image sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This probe takes no uploads here: save the table and export it for the microcontroller (C header or binary image).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload to the mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProfilePanel</name>
+    <message>
+        <source>Last part: diameter error along the shaft</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x along the shaft, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter error, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error at the points, last %1 parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance ±%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>model d(x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>correction, part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 gauged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>between points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::RunPage</name>
+    <message>
+        <source>Shaft profile (run-to-run)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boring bar (in-process)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::SettingsForm</name>
+    <message>
+        <source>%1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::SettingsPage</name>
     <message>
         <source>Terminal</source>
@@ -202,6 +1893,639 @@
     </message>
     <message>
         <source>Run history</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ShaftRunPanel</name>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not answering</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Run page was closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delay z, parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LQG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EWMA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×1 (6 min a part)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×60 (6 s a part)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×360 (1 s a part)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×3600 (fastest)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated lathe (built in)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real lathe (Devices page)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameters from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed in by hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameters by hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part not measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not started: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run cannot start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>real lathe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated lathe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run started: %1, %2, z = %3, %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the run did not start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the run is over</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continue</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ready to start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paused — the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fault — the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gauge: %1 · CNC: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: “%2” — %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC: none (add a correction output on the Devices page)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameters: typed in by hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Press Start: each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts done: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ToolAuditModel</name>
+    <message>
+        <source>When</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool or material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Old</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ToolImportModel</name>
+    <message>
+        <source>Take from file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In the table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Differences (table → file) or problems</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>new</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>same</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>different</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot be read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to do</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ToolTableModel</name>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Section</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>d, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>b, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overhang l, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E, MPa</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured k, N/mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured by</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p, N/A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k = 3EI/l³, N/mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>l/d</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computed from the section, the overhang and E; a measured stiffness overrides it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>round</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rectangular</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Removed when you apply the changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied value: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove %1 tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>id: %1 is also used in row %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ToolsPage</name>
+    <message>
+        <source>Not accepted: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>round</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rectangular</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (E %2 MPa)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enter your name on the Settings page first: every applied change is recorded with it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no operator name (Settings)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fix before applying: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Changed tools: %1 (highlighted). They are not stored until you apply them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All changes are applied. Double-click a cell to edit it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select the tools to remove first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to apply.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>These rows need fixing first:
+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied. Audit entries written with your name: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing was stored: %1
+Your edits are still here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard changes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard the pending changes of %1 tools? The stored table stays as it is.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pending changes discarded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be imported: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tools imported from %1: %2, highlighted until you apply them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import cancelled; the table is unchanged.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 tools to %2, including %3 change(s) not applied yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1 tools to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>New material %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Added %1 (E 210000 MPa): double-click to rename it and set E.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select the material to remove first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Removed %1; tools keep their stored E.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit material</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: E %2 MPa stored; tools keep the E they have until you choose the material again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Add tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Young&apos;s modulus of each holder material. Choosing a material for a tool copies its E; every change here is stored at once and recorded in the audit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Materials</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Audit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take all from file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keep all in table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 new, %2 different from the table, %3 the same, %4 cannot be read. Choose for each different tool whether to keep the table&apos;s values or take the file&apos;s; imported rows stay pending until you apply them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tool table cannot be opened</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1&lt;br&gt;&lt;br&gt;The table is stored in the run history database; check the database on the Settings page.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
