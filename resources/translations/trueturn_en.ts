@@ -1049,9 +1049,9 @@
     </message>
     <message numerus="yes">
         <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n gauge reading taken while the diameters were typed by hand was not used.</numerusform>
+            <numerusform>%n gauge readings taken while the diameters were typed by hand were not used.</numerusform>
         </translation>
     </message>
     <message>

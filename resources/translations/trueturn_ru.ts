@@ -5,74 +5,74 @@
     <name>BoringPanel</name>
     <message>
         <source>The drive current read-out is silent or disconnected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Датчик тока привода не отвечает или отключён.</translation>
     </message>
     <message>
         <source>The probe mandrel is silent or disconnected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка-датчик не отвечает или отключена.</translation>
     </message>
     <message>
         <source>No data from the probe mandrel for more than half a second.</source>
-        <translation type="unfinished"></translation>
+        <translation>От оправки-датчика нет данных более полсекунды.</translation>
     </message>
     <message>
         <source>The probe mandrel sends raw codes without a linearisation table: load one on the Calibration page.</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка-датчик передаёт необработанные коды АЦП без таблицы линеаризации: загрузите таблицу на странице «Калибровка».</translation>
     </message>
     <message>
         <source>Taper or contour (or a feed move): the force cannot be read from the current here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Конус или контур (или перемещение на подаче): здесь силу нельзя определить по току.</translation>
     </message>
     <message>
         <source>The cross slide does not move with the dither: it sticks, or the dither is off.</source>
-        <translation type="unfinished"></translation>
+        <translation>Поперечный суппорт не совершает колебательного движения: он заедает, или дизеринг выключен.</translation>
     </message>
     <message>
         <source>The dither stroke is too short for this PLC cycle: too few readings at constant speed. Use a longer dither period or a shorter PLC cycle.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ход дизеринга слишком короткий для этого цикла ПЛК: мало отсчётов на постоянной скорости. Увеличьте период дизеринга или уменьшите цикл ПЛК.</translation>
     </message>
     <message>
         <source>Waiting for a forward and a reverse dither stroke.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ожидание прямого и обратного хода дизеринга.</translation>
     </message>
     <message>
         <source>Holding the offset at %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Смещение удерживается: %1 мм</translation>
     </message>
     <message>
         <source>The CNC does not take the offset: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ЧПУ не принимает смещение: %1</translation>
     </message>
     <message>
         <source>Compensating</source>
-        <translation type="unfinished"></translation>
+        <translation>Компенсация</translation>
     </message>
     <message>
         <source>The offset is at its range limit: the deflection is larger than the limit allows.</source>
-        <translation type="unfinished"></translation>
+        <translation>Смещение на пределе: прогиб больше, чем допускает предел.</translation>
     </message>
     <message>
         <source>The offset moves at its rate limit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Смещение изменяется с предельной скоростью.</translation>
     </message>
     <message>
         <source>The offset follows the measured deflection.</source>
-        <translation type="unfinished"></translation>
+        <translation>Смещение следует за измеренным прогибом.</translation>
     </message>
 </context>
 <context>
     <name>SimulatedCalibrationProbe</name>
     <message>
         <source>Sending chunk %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Передача блока %1 из %2</translation>
     </message>
     <message>
         <source>Stored in the mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Записано в оправку</translation>
     </message>
     <message>
         <source>Stored, but the mandrel rejects it: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Записано, но оправка отвергает таблицу: %1</translation>
     </message>
 </context>
 <context>
@@ -98,970 +98,971 @@
     <name>tt::ui::BoringPanel</name>
     <message>
         <source>The devices were changed, so the compensation stopped. The CNC keeps the offset it holds.</source>
-        <translation type="unfinished"></translation>
+        <translation>Устройства изменены, поэтому компенсация остановлена. ЧПУ сохраняет текущее смещение.</translation>
     </message>
     <message>
         <source>No devices are configured.</source>
-        <translation type="unfinished"></translation>
+        <translation>Устройства не настроены.</translation>
     </message>
     <message>
         <source>The chosen source device is gone.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выбранного устройства-источника больше нет.</translation>
     </message>
     <message>
         <source>No CNC output for the dynamic X offset: add one on the Devices page.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет выхода в ЧПУ для динамического смещения по X: добавьте его на странице «Устройства».</translation>
     </message>
     <message>
         <source>The chosen CNC output is gone.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выбранного выхода в ЧПУ больше нет.</translation>
     </message>
     <message>
         <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
-        <translation type="unfinished"></translation>
+        <translation>В ЧПУ установлено смещение %1 мм — больше предела %2 мм: сначала обнулите смещение (инструмент выведен из отверстия).</translation>
     </message>
     <message>
         <source>Choose where the deflection comes from.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выберите источник прогиба.</translation>
     </message>
     <message>
         <source>No tool: add the boring bar to the tool table on the Tools page.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет инструмента: добавьте расточную оправку в таблицу инструментов на странице «Инструменты».</translation>
     </message>
     <message>
         <source>Choose the tool.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выберите инструмент.</translation>
     </message>
     <message>
         <source>Cannot start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Пуск невозможен: %1</translation>
     </message>
     <message>
         <source>Starting</source>
-        <translation type="unfinished"></translation>
+        <translation>Запуск</translation>
     </message>
     <message>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Остановлено</translation>
     </message>
     <message>
         <source>Zero the offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Обнулить смещение</translation>
     </message>
     <message>
         <source>The CNC holds a dynamic X offset of %1 mm. Set it to 0 now? The tool moves by %2 mm: do this only with the tool out of the bore.</source>
-        <translation type="unfinished"></translation>
+        <translation>В ЧПУ установлено динамическое смещение по X %1 мм. Обнулить его сейчас? Инструмент переместится на %2 мм: делайте это только с инструментом, выведенным из отверстия.</translation>
     </message>
     <message>
         <source>The CNC did not take the offset 0: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ЧПУ не приняло нулевое смещение: %1</translation>
     </message>
     <message>
         <source>The bore is finished: largest diameter error %1 mm with compensation, %2 mm without (%3 %).</source>
-        <translation type="unfinished"></translation>
+        <translation>Отверстие расточено: наибольшая погрешность диаметра %1 мм с компенсацией, %2 мм без неё (%3 %).</translation>
     </message>
     <message>
         <source>Holding</source>
-        <translation type="unfinished"></translation>
+        <translation>Удержание</translation>
     </message>
     <message>
         <source>Offset %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Смещение %1 мм</translation>
     </message>
     <message>
         <source>Deflection %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Прогиб %1 мм</translation>
     </message>
     <message>
         <source>Deflection —</source>
-        <translation type="unfinished"></translation>
+        <translation>Прогиб —</translation>
     </message>
     <message>
         <source>Force %1 N</source>
-        <translation type="unfinished"></translation>
+        <translation>Сила %1 Н</translation>
     </message>
     <message>
         <source>Force —</source>
-        <translation type="unfinished"></translation>
+        <translation>Сила —</translation>
     </message>
     <message>
         <source>Stopped. The CNC keeps the offset it holds. Choose the source, the tool and the limits, then Start.</source>
-        <translation type="unfinished"></translation>
+        <translation>Остановлено. ЧПУ сохраняет текущее смещение. Выберите источник, инструмент и пределы, затем нажмите «Пуск».</translation>
     </message>
     <message>
         <source>Engine: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Компенсатор: %1</translation>
     </message>
     <message>
         <source>Bore diameter error from %1 mm in: %2 mm with compensation, %3 mm without</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность диаметра отверстия начиная с %1 мм от входа: %2 мм с компенсацией, %3 мм без неё</translation>
     </message>
     <message>
         <source>Bore diameter error: shown from %1 mm into the bore</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность диаметра отверстия: показана начиная с %1 мм от входа</translation>
     </message>
     <message>
         <source>Tool at %1 of %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Инструмент на %1 из %2 мм</translation>
     </message>
     <message>
         <source>Deflection measured</source>
-        <translation type="unfinished"></translation>
+        <translation>Измеренный прогиб</translation>
     </message>
     <message>
         <source>Offset applied</source>
-        <translation type="unfinished"></translation>
+        <translation>Выданное смещение</translation>
     </message>
     <message>
         <source>Real deflection (simulator)</source>
-        <translation type="unfinished"></translation>
+        <translation>Истинный прогиб (симулятор)</translation>
     </message>
     <message>
         <source>Without compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>Без компенсации</translation>
     </message>
     <message>
         <source>With compensation</source>
-        <translation type="unfinished"></translation>
+        <translation>С компенсацией</translation>
     </message>
     <message>
         <source>Set-up</source>
-        <translation type="unfinished"></translation>
+        <translation>Наладка</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>Источник</translation>
     </message>
     <message>
         <source>Plane along X</source>
-        <translation type="unfinished"></translation>
+        <translation>Плоскость по X</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Инструмент</translation>
     </message>
     <message>
         <source>CNC output</source>
-        <translation type="unfinished"></translation>
+        <translation>Выход в ЧПУ</translation>
     </message>
     <message>
         <source>Offset limit ±</source>
-        <translation type="unfinished"></translation>
+        <translation>Предел смещения ±</translation>
     </message>
     <message>
         <source>Rate limit</source>
-        <translation type="unfinished"></translation>
+        <translation>Предел скорости</translation>
     </message>
     <message>
         <source>PLC cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>Цикл ПЛК</translation>
     </message>
     <message>
         <source>Cutting</source>
-        <translation type="unfinished"></translation>
+        <translation>Обработка</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Скорость</translation>
     </message>
     <message>
         <source>Simulate a silent read-out</source>
-        <translation type="unfinished"></translation>
+        <translation>Имитировать отказ датчика (молчание)</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Пуск</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Стоп</translation>
     </message>
     <message>
         <source>Zero the offset…</source>
-        <translation type="unfinished"></translation>
+        <translation>Обнулить смещение…</translation>
     </message>
     <message>
         <source>Plane 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Плоскость 1</translation>
     </message>
     <message>
         <source>Plane 2</source>
-        <translation type="unfinished"></translation>
+        <translation>Плоскость 2</translation>
     </message>
     <message>
         <source>Cylinder</source>
-        <translation type="unfinished"></translation>
+        <translation>Цилиндр</translation>
     </message>
     <message>
         <source>Taper</source>
-        <translation type="unfinished"></translation>
+        <translation>Конус</translation>
     </message>
     <message>
         <source>Contour</source>
-        <translation type="unfinished"></translation>
+        <translation>Контур</translation>
     </message>
     <message>
         <source>Station: current + dither</source>
-        <translation type="unfinished"></translation>
+        <translation>Стенд: ток + дизеринг</translation>
     </message>
     <message>
         <source>Station: probe mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Стенд: оправка-датчик</translation>
     </message>
     <message>
         <source>%1: probe mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: оправка-датчик</translation>
     </message>
     <message>
         <source>%1: current + dither</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ток + дизеринг</translation>
     </message>
     <message>
         <source>Station: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Стенд: %1</translation>
     </message>
     <message>
         <source>Station&apos;s PLC</source>
-        <translation type="unfinished"></translation>
+        <translation>ПЛК стенда</translation>
     </message>
     <message>
         <source>k %1 N/mm%2 · k_p %3 N/A · L/d %4</source>
-        <translation type="unfinished"></translation>
+        <translation>k %1 Н/мм%2 · k_p %3 Н/А · L/d %4</translation>
     </message>
     <message>
         <source> (measured)</source>
-        <translation type="unfinished"></translation>
+        <translation> (измерено)</translation>
     </message>
     <message>
         <source>not calibrated</source>
-        <translation type="unfinished"></translation>
+        <translation>не откалиброван</translation>
     </message>
     <message>
         <source>The tool table cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся прочитать таблицу инструментов: %1</translation>
     </message>
     <message>
         <source>No tool in the tool table (Tools page).</source>
-        <translation type="unfinished"></translation>
+        <translation>В таблице инструментов нет ни одного инструмента (страница «Инструменты»).</translation>
     </message>
     <message>
         <source>Deflection and dynamic X offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Прогиб и динамическое смещение по X</translation>
     </message>
     <message>
         <source>Time, s</source>
-        <translation type="unfinished"></translation>
+        <translation>Время, с</translation>
     </message>
     <message>
         <source>mm</source>
-        <translation type="unfinished"></translation>
+        <translation>мм</translation>
     </message>
     <message>
         <source>Bore diameter error along the bore (simulated station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность диаметра по длине отверстия (симулированный стенд)</translation>
     </message>
     <message>
         <source>Position in the bore, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Положение в отверстии, мм</translation>
     </message>
     <message>
         <source>Diameter error, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность диаметра, мм</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>
     <message>
         <source>Simulated probe mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Симулированная оправка-датчик</translation>
     </message>
     <message>
         <source>Simulated cross feed</source>
-        <translation type="unfinished"></translation>
+        <translation>Симулированная поперечная подача</translation>
     </message>
     <message>
         <source>The devices changed while a calibration was open, so it was closed; the captured points are kept. Open it again to continue.</source>
-        <translation type="unfinished"></translation>
+        <translation>Во время калибровки изменились устройства, поэтому она закрыта; снятые точки сохранены. Откройте её снова, чтобы продолжить.</translation>
     </message>
     <message>
         <source>Start over</source>
-        <translation type="unfinished"></translation>
+        <translation>Начать заново</translation>
     </message>
     <message>
         <source>Forget the %1 captured points of the unfinished calibration?</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить снятые точки незавершённой калибровки (%1)?</translation>
     </message>
     <message>
         <source>not uploaded</source>
-        <translation type="unfinished"></translation>
+        <translation>не загружена</translation>
     </message>
     <message>
         <source>verified, CRC %1</source>
-        <translation type="unfinished"></translation>
+        <translation>проверена, CRC %1</translation>
     </message>
     <message>
         <source>read-back CRC %1 does not match</source>
-        <translation type="unfinished"></translation>
+        <translation>CRC %1 при контрольном считывании не совпадает</translation>
     </message>
     <message>
         <source>Probe mandrel linearisation</source>
-        <translation type="unfinished"></translation>
+        <translation>Линеаризация оправки-датчика</translation>
     </message>
     <message>
         <source>Builds the table ADC code → deflection that the mandrel&apos;s microcontroller uses: capture points against a dial indicator, fit the sensor&apos;s characteristic, save a new table version and upload it with read-back of its CRC.</source>
-        <translation type="unfinished"></translation>
+        <translation>Строит таблицу «код АЦП → прогиб» для микроконтроллера оправки: снимите точки по индикатору часового типа, аппроксимируйте характеристику датчика, сохраните новую версию таблицы и загрузите её с контрольным считыванием CRC.</translation>
     </message>
     <message>
         <source>Continue the calibration (%1 points kept)…</source>
-        <translation type="unfinished"></translation>
+        <translation>Продолжить калибровку (сохранено точек: %1)…</translation>
     </message>
     <message>
         <source>Linearise a probe mandrel…</source>
-        <translation type="unfinished"></translation>
+        <translation>Линеаризовать оправку-датчик…</translation>
     </message>
     <message>
         <source>Probe</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка</translation>
     </message>
     <message>
         <source>Plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Плоскость</translation>
     </message>
     <message>
         <source>Version</source>
-        <translation type="unfinished"></translation>
+        <translation>Версия</translation>
     </message>
     <message>
         <source>Saved</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранена</translation>
     </message>
     <message>
         <source>By</source>
-        <translation type="unfinished"></translation>
+        <translation>Кем</translation>
     </message>
     <message>
         <source>Degree</source>
-        <translation type="unfinished"></translation>
+        <translation>Степень</translation>
     </message>
     <message>
         <source>Table error, µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность таблицы, мкм</translation>
     </message>
     <message>
         <source>In the mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>В оправке</translation>
     </message>
     <message>
         <source>Current-to-force gain k_p</source>
-        <translation type="unfinished"></translation>
+        <translation>Коэффициент ток–сила k_p</translation>
     </message>
     <message>
         <source>Known loads on the cross slide against the motor current difference with dither; the result is written into the tool table.</source>
-        <translation type="unfinished"></translation>
+        <translation>Известные нагрузки на поперечный суппорт сопоставляются с разностью тока двигателя при дизеринге; результат записывается в таблицу инструментов.</translation>
     </message>
     <message>
         <source>Calibrate k_p from known loads…</source>
-        <translation type="unfinished"></translation>
+        <translation>Калибровать k_p по известным нагрузкам…</translation>
     </message>
     <message>
         <source>When</source>
-        <translation type="unfinished"></translation>
+        <translation>Когда</translation>
     </message>
     <message>
         <source>Drive</source>
-        <translation type="unfinished"></translation>
+        <translation>Привод</translation>
     </message>
     <message>
         <source>k_p, N/A</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p, Н/А</translation>
     </message>
     <message>
         <source>R²</source>
-        <translation type="unfinished"></translation>
+        <translation>R²</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished">Инструменты</translation>
+        <translation>Инструменты</translation>
     </message>
     <message>
         <source>The calibration database cannot be opened: %1. Tables can still be built and exported, not saved.</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся открыть базу калибровок: %1. Таблицы можно строить и экспортировать, но не сохранять.</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — %2</translation>
     </message>
     <message>
         <source>New: %1
 (not added yet)</source>
-        <translation type="unfinished"></translation>
+        <translation>Новое: %1
+(ещё не добавлено)</translation>
     </message>
     <message>
         <source>ready</source>
-        <translation type="unfinished">готовы</translation>
+        <translation>готово</translation>
     </message>
     <message>
         <source>connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>подключение</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>ошибка</translation>
     </message>
     <message>
         <source>closed</source>
-        <translation type="unfinished"></translation>
+        <translation>закрыто</translation>
     </message>
     <message>
         <source>Settings to correct: %1 (marked in red).</source>
-        <translation type="unfinished"></translation>
+        <translation>Исправьте настройки: %1 (выделены красным).</translation>
     </message>
     <message>
         <source>Remove device</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить устройство</translation>
     </message>
     <message>
         <source>Remove %1? Its settings are deleted; the loop can no longer use it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить устройство «%1»? Его настройки будут удалены, и контур управления больше не сможет его использовать.</translation>
     </message>
     <message>
         <source>Not tested: correct the settings marked in red first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Не проверено: сначала исправьте настройки, выделенные красным.</translation>
     </message>
     <message>
         <source>Testing the connection…</source>
-        <translation type="unfinished"></translation>
+        <translation>Проверка связи…</translation>
     </message>
     <message>
         <source>No connection: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет связи: %1</translation>
     </message>
     <message>
         <source>Connected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Связь есть: %1</translation>
     </message>
     <message>
         <source>Connected — %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Связь есть — %1</translation>
     </message>
     <message>
         <source>No answer within %1 s: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет ответа в течение %1 с: %2</translation>
     </message>
     <message>
         <source>Not added</source>
-        <translation type="unfinished"></translation>
+        <translation>Не добавлено</translation>
     </message>
     <message>
         <source>Fill in the settings, test the connection, then add the device.</source>
-        <translation type="unfinished"></translation>
+        <translation>Заполните настройки, проверьте связь, затем добавьте устройство.</translation>
     </message>
     <message>
         <source>none</source>
-        <translation type="unfinished">нет</translation>
+        <translation>нет</translation>
     </message>
     <message>
         <source>Ready</source>
-        <translation type="unfinished"></translation>
+        <translation>Готово</translation>
     </message>
     <message>
         <source>Connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>Подключение</translation>
     </message>
     <message>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Ошибка</translation>
     </message>
     <message>
         <source>Closed</source>
-        <translation type="unfinished"></translation>
+        <translation>Закрыто</translation>
     </message>
     <message>
         <source>%1 (last value)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (последнее значение)</translation>
     </message>
     <message>
         <source>Device instances</source>
-        <translation type="unfinished"></translation>
+        <translation>Список устройств</translation>
     </message>
     <message>
         <source>Add a device of type</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить устройство типа</translation>
     </message>
     <message>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить</translation>
     </message>
     <message>
         <source>No device selected</source>
-        <translation type="unfinished"></translation>
+        <translation>Устройство не выбрано</translation>
     </message>
     <message>
         <source>Add a gauge micrometer, probe mandrel, drive-current readout or correction output to the CNC. The built-in simulator provides every kind, with fault switches.</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавьте цифровой микрометр, оправку-датчик, датчик тока привода или выход коррекции в ЧПУ. Встроенный симулятор предоставляет устройства всех типов с переключателями неисправностей.</translation>
     </message>
     <message>
         <source>State</source>
-        <translation type="unfinished"></translation>
+        <translation>Состояние</translation>
     </message>
     <message>
         <source>Live value</source>
-        <translation type="unfinished"></translation>
+        <translation>Текущее значение</translation>
     </message>
     <message>
         <source>Last error</source>
-        <translation type="unfinished"></translation>
+        <translation>Последняя ошибка</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Название</translation>
     </message>
     <message>
         <source>Settings</source>
-        <translation type="unfinished">Настройки</translation>
+        <translation>Настройки</translation>
     </message>
     <message>
         <source>Test connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Проверить связь</translation>
     </message>
     <message>
         <source>Add device</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить устройство</translation>
     </message>
     <message>
         <source>Apply</source>
-        <translation type="unfinished"></translation>
+        <translation>Применить</translation>
     </message>
     <message>
         <source>Revert</source>
-        <translation type="unfinished"></translation>
+        <translation>Вернуть</translation>
     </message>
     <message>
         <source>Simulator fault switches</source>
-        <translation type="unfinished"></translation>
+        <translation>Неисправности симулятора</translation>
     </message>
     <message>
         <source>Silent</source>
-        <translation type="unfinished"></translation>
+        <translation>Молчит</translation>
     </message>
     <message>
         <source>Noisy</source>
-        <translation type="unfinished"></translation>
+        <translation>Шумит</translation>
     </message>
     <message>
         <source>Stuck value</source>
-        <translation type="unfinished"></translation>
+        <translation>Залипшее значение</translation>
     </message>
     <message>
         <source>Malformed frames</source>
-        <translation type="unfinished"></translation>
+        <translation>Искажённые кадры</translation>
     </message>
     <message>
         <source>Unplugged</source>
-        <translation type="unfinished"></translation>
+        <translation>Кабель отключён</translation>
     </message>
     <message>
         <source>Counters</source>
-        <translation type="unfinished"></translation>
+        <translation>Счётчики</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::KpCalibrationWizard</name>
     <message>
         <source>k_p from known loads</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p по известным нагрузкам</translation>
     </message>
     <message>
         <source>&lt; Back</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt; Назад</translation>
     </message>
     <message>
         <source>Next &gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Далее &gt;</translation>
     </message>
     <message>
         <source>Finish</source>
-        <translation type="unfinished"></translation>
+        <translation>Готово</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Отмена</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::KpFitPage</name>
     <message>
         <source>Refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонено: %1</translation>
     </message>
     <message>
         <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;k_p = %1 Н/А&lt;/b&gt; (смещение %2 Н, R² %3, СКО остатков %4 Н), нагрузок: %5.&lt;/p&gt;&lt;p&gt;Прямая P = k_p ΔI + смещение строится методом наименьших квадратов; смещение должно быть малым по сравнению с нагрузками (оно показывает асимметрию привода).&lt;/p&gt;</translation>
     </message>
     <message>
         <source>known loads</source>
-        <translation type="unfinished"></translation>
+        <translation>известные нагрузки</translation>
     </message>
     <message>
         <source>k_p ΔI + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p ΔI + смещение</translation>
     </message>
     <message>
         <source>residual</source>
-        <translation type="unfinished"></translation>
+        <translation>остаток</translation>
     </message>
     <message>
         <source>Fit k_p</source>
-        <translation type="unfinished"></translation>
+        <translation>Расчёт k_p</translation>
     </message>
     <message>
         <source>Force against the current difference.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сила в зависимости от разности токов.</translation>
     </message>
     <message>
         <source>Load against ΔI</source>
-        <translation type="unfinished"></translation>
+        <translation>Нагрузка в зависимости от ΔI</translation>
     </message>
     <message>
         <source>ΔI, A</source>
-        <translation type="unfinished"></translation>
+        <translation>ΔI, А</translation>
     </message>
     <message>
         <source>Load, N</source>
-        <translation type="unfinished"></translation>
+        <translation>Нагрузка, Н</translation>
     </message>
     <message>
         <source>Residuals</source>
-        <translation type="unfinished"></translation>
+        <translation>Остатки</translation>
     </message>
     <message>
         <source>Load − fit, N</source>
-        <translation type="unfinished"></translation>
+        <translation>Нагрузка − аппроксимация, Н</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::KpLoadsPage</name>
     <message>
         <source>The drive read-out is not ready: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Датчик тока привода не готов: %1</translation>
     </message>
     <message>
         <source>Measuring at %1 N: keep the load steady…</source>
-        <translation type="unfinished"></translation>
+        <translation>Измерение при %1 Н: удерживайте нагрузку постоянной…</translation>
     </message>
     <message>
         <source>No reliable current difference at %1 N: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Нет надёжной разности токов при %1 Н: %2</translation>
     </message>
     <message>
         <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Н: ΔI = %2 А (пар ходов: %3).</translation>
     </message>
     <message>
         <source>Typed point added.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка, введённая вручную, добавлена.</translation>
     </message>
     <message>
         <source>measured, %1 pairs</source>
-        <translation type="unfinished"></translation>
+        <translation>измерено, пар ходов: %1</translation>
     </message>
     <message>
         <source>typed</source>
-        <translation type="unfinished"></translation>
+        <translation>вручную</translation>
     </message>
     <message>
         <source>known loads</source>
-        <translation type="unfinished"></translation>
+        <translation>известные нагрузки</translation>
     </message>
     <message>
         <source>Known loads</source>
-        <translation type="unfinished"></translation>
+        <translation>Известные нагрузки</translation>
     </message>
     <message>
         <source>Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
-        <translation type="unfinished"></translation>
+        <translation>Симулятор: домкрат создаёт введённую нагрузку. Измерьте не менее 3 нагрузок, включая 0.</translation>
     </message>
     <message>
         <source>Apply the load, enter what the gauge shows, measure. At least 3 loads, 0 included.</source>
-        <translation type="unfinished"></translation>
+        <translation>Приложите нагрузку, введите показание прибора, измерьте. Не менее 3 нагрузок, включая 0.</translation>
     </message>
     <message>
         <source>Known load</source>
-        <translation type="unfinished"></translation>
+        <translation>Известная нагрузка</translation>
     </message>
     <message>
         <source>Measure</source>
-        <translation type="unfinished"></translation>
+        <translation>Измерить</translation>
     </message>
     <message>
         <source>ΔI (typed)</source>
-        <translation type="unfinished"></translation>
+        <translation>ΔI (вручную)</translation>
     </message>
     <message>
         <source>Add typed point</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить точку вручную</translation>
     </message>
     <message>
         <source>Remove point</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить точку</translation>
     </message>
     <message>
         <source>Load, N</source>
-        <translation type="unfinished"></translation>
+        <translation>Нагрузка, Н</translation>
     </message>
     <message>
         <source>ΔI, A</source>
-        <translation type="unfinished"></translation>
+        <translation>ΔI, А</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>Источник</translation>
     </message>
     <message>
         <source>Current difference against the load</source>
-        <translation type="unfinished"></translation>
+        <translation>Разность токов в зависимости от нагрузки</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::KpSavePage</name>
     <message>
         <source>Save k_p</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранение k_p</translation>
     </message>
     <message>
         <source>Enter your name on the Settings page first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала введите своё имя на странице «Настройки».</translation>
     </message>
     <message>
         <source>Not saved: no operator name (Settings).</source>
-        <translation type="unfinished"></translation>
+        <translation>Не сохранено: нет имени оператора («Настройки»).</translation>
     </message>
     <message>
         <source>The calibration database is not open.</source>
-        <translation type="unfinished"></translation>
+        <translation>База калибровок не открыта.</translation>
     </message>
     <message>
         <source>Not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не сохранено: %1</translation>
     </message>
     <message>
         <source>Saved. No tool was chosen, so the tool table is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранено. Инструмент не выбран, поэтому таблица инструментов не изменилась.</translation>
     </message>
     <message>
         <source>Saved; k_p %1 N/A written into %2 (recorded in the tool audit).</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранено; k_p %1 Н/А записан в %2 (отмечено в журнале изменений инструментов).</translation>
     </message>
     <message>
         <source>The calibration is kept with your name; the chosen tools get the new k_p.</source>
-        <translation type="unfinished"></translation>
+        <translation>Калибровка сохраняется с вашим именем; выбранные инструменты получают новый k_p.</translation>
     </message>
     <message>
         <source>Save and write into the tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранить и записать в инструменты</translation>
     </message>
     <message>
         <source>k_p = %1 N/A, to be written into: %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p = %1 Н/А, будет записан в: %2.</translation>
     </message>
     <message>
         <source>no tool (only the calibration is kept)</source>
-        <translation type="unfinished"></translation>
+        <translation>никуда (сохраняется только калибровка)</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::KpSetupPage</name>
     <message>
         <source>%1 %2 — k_p now %3 N/A</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 — сейчас k_p %3 Н/А</translation>
     </message>
     <message>
         <source>Drive and tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Привод и инструменты</translation>
     </message>
     <message>
         <source>k_p turns the cross-feed motor current into force: P = k_p (I_fwd − I_rev) / 2.</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p пересчитывает ток двигателя поперечной подачи в силу: P = k_p (I_fwd − I_rev) / 2.</translation>
     </message>
     <message>
         <source>Cross-feed drive</source>
-        <translation type="unfinished"></translation>
+        <translation>Привод поперечной подачи</translation>
     </message>
     <message>
         <source>Write the new k_p into</source>
-        <translation type="unfinished"></translation>
+        <translation>Записать новый k_p в</translation>
     </message>
     <message>
         <source>Put a dynamometer or a hydraulic jack with a gauge between the tool block and the workpiece so it pushes the tool towards the axis like the cutting force. Start the cross-feed dither (as for boring) and keep it running; at each load the current is averaged at constant velocity in both directions.</source>
-        <translation type="unfinished"></translation>
+        <translation>Установите динамометр или гидравлический домкрат с манометром между резцедержателем и заготовкой так, чтобы он отжимал инструмент к оси, как сила резания. Включите дизеринг поперечной подачи (как при растачивании) и не выключайте его; при каждой нагрузке ток усредняется на постоянной скорости в обоих направлениях.</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::LatheLink</name>
     <message>
         <source>ready</source>
-        <translation type="unfinished">готовы</translation>
+        <translation>готов</translation>
     </message>
     <message>
         <source>still connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>ещё подключается</translation>
     </message>
     <message>
         <source>closed</source>
-        <translation type="unfinished"></translation>
+        <translation>закрыт</translation>
     </message>
     <message>
         <source>in error</source>
-        <translation type="unfinished"></translation>
+        <translation>в состоянии ошибки</translation>
     </message>
     <message>
         <source>the %1 “%2” is no longer on the Devices page</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 «%2» удалён со страницы «Устройства»</translation>
     </message>
     <message>
         <source>the Run page was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>страница «Работа» закрыта</translation>
     </message>
     <message>
         <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выход в ЧПУ не выбран. Добавьте выход коррекции (файл G-кода или Modbus) на странице «Устройства» и выберите его в поле «Выход в ЧПУ».</translation>
     </message>
     <message>
         <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выбранного выхода в ЧПУ больше нет на странице «Устройства»; выберите другой.</translation>
     </message>
     <message>
         <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выход в ЧПУ «%1» %2: %3. Проверьте его на странице «Устройства».</translation>
     </message>
     <message>
         <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
-        <translation type="unfinished"></translation>
+        <translation>Выбранного микрометра больше нет на странице «Устройства»; выберите другой или вводите диаметры вручную.</translation>
     </message>
     <message>
         <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
-        <translation type="unfinished"></translation>
+        <translation>Микрометр «%1» %2: %3. Проверьте его на странице «Устройства» или выберите ручной ввод диаметров.</translation>
     </message>
     <message>
         <source>a new run was started</source>
-        <translation type="unfinished"></translation>
+        <translation>начата новая серия</translation>
     </message>
     <message>
         <source>gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>микрометр</translation>
     </message>
     <message>
         <source>CNC output</source>
-        <translation type="unfinished"></translation>
+        <translation>выход в ЧПУ</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::LathePanel</name>
     <message>
         <source>No run on the lathe</source>
-        <translation type="unfinished"></translation>
+        <translation>Серия на станке не запущена</translation>
     </message>
     <message>
         <source>No part on the machine</source>
-        <translation type="unfinished"></translation>
+        <translation>На станке нет детали</translation>
     </message>
     <message>
         <source>Machine part %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Обработайте деталь %1</translation>
     </message>
     <message>
         <source>Press Start: the corrections of part 1 go to the CNC.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нажмите «Пуск»: коррекции детали 1 будут переданы в ЧПУ.</translation>
     </message>
     <message>
         <source>The next part starts when its corrections are on the CNC.</source>
-        <translation type="unfinished"></translation>
+        <translation>Следующая деталь начнётся, когда её коррекции будут в ЧПУ.</translation>
     </message>
     <message>
         <source>Its corrections are on the CNC.</source>
-        <translation type="unfinished"></translation>
+        <translation>Её коррекции переданы в ЧПУ.</translation>
     </message>
     <message>
         <source>Its corrections are on the CNC (%1).</source>
-        <translation type="unfinished"></translation>
+        <translation>Её коррекции переданы в ЧПУ (%1).</translation>
     </message>
     <message>
         <source>Nothing to measure</source>
-        <translation type="unfinished"></translation>
+        <translation>Измерять нечего</translation>
     </message>
     <message>
         <source>Part %1: type its diameters below</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь %1: введите её диаметры ниже</translation>
     </message>
     <message>
         <source>Measure part %1 at x = %2 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Измерьте деталь %1 в точке x = %2 мм</translation>
     </message>
     <message>
         <source>Point %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1 из %2</translation>
     </message>
     <message>
         <source>%1 · last reading %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · последнее показание %2</translation>
     </message>
     <message>
         <source>Take gauge reading</source>
-        <translation type="unfinished"></translation>
+        <translation>Снять показание</translation>
     </message>
     <message>
         <source>Part %1 finished</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь %1 готова</translation>
     </message>
     <message>
         <source>Part finished</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь готова</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::LoopWorker</name>
     <message>
         <source>the real lathe&apos;s devices are not connected</source>
-        <translation type="unfinished"></translation>
+        <translation>устройства реального станка не подключены</translation>
     </message>
     <message>
         <source>the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
-        <translation type="unfinished"></translation>
+        <translation>выход в ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 — для %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
     </message>
     <message>
         <source>A run is already going; stop it first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Серия уже выполняется; сначала остановите её.</translation>
     </message>
     <message>
         <source>The run history cannot be opened: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся открыть историю серий: %1</translation>
     </message>
     <message>
         <source>The run cannot start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Серию невозможно запустить: %1</translation>
     </message>
     <message numerus="yes">
         <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n показание микрометра, снятое во время ручного ввода диаметров, не использовано.</numerusform>
+            <numerusform>%n показания микрометра, снятые во время ручного ввода диаметров, не использованы.</numerusform>
+            <numerusform>%n показаний микрометра, снятых во время ручного ввода диаметров, не использованы.</numerusform>
         </translation>
     </message>
     <message>
         <source>No run is going: the diameters were not taken.</source>
-        <translation type="unfinished"></translation>
+        <translation>Серия не выполняется: диаметры не приняты.</translation>
     </message>
     <message>
         <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь %1 не ожидает ввода диаметров; ничего не принято.</translation>
     </message>
 </context>
 <context>
@@ -1143,140 +1144,140 @@
     <name>tt::ui::ManualEntryPanel</name>
     <message>
         <source>Part %1 by hand: diameters in mm, nominal %2, Enter for the next point</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь %1 вручную: диаметры в мм, номинал %2, Enter — следующая точка</translation>
     </message>
     <message>
         <source>By hand: no part is waiting for its diameters</source>
-        <translation type="unfinished"></translation>
+        <translation>Вручную: ни одна деталь не ожидает ввода диаметров</translation>
     </message>
     <message>
         <source>x = %1 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>x = %1 мм</translation>
     </message>
     <message>
         <source>&apos;%1&apos; is not a diameter in mm.</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» — не диаметр в мм.</translation>
     </message>
     <message>
         <source>Rejected: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонено: %1</translation>
     </message>
     <message>
         <source>Point %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1: %2</translation>
     </message>
     <message>
         <source>No part is waiting for its diameters: nothing was sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ни одна деталь не ожидает ввода диаметров: ничего не отправлено.</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::MaterialsModel</name>
     <message>
         <source>Material</source>
-        <translation type="unfinished"></translation>
+        <translation>Материал</translation>
     </message>
     <message>
         <source>Young&apos;s modulus E, MPa</source>
-        <translation type="unfinished"></translation>
+        <translation>Модуль Юнга E, МПа</translation>
     </message>
     <message>
         <source>material: the name must not be empty</source>
-        <translation type="unfinished"></translation>
+        <translation>материал: название не может быть пустым</translation>
     </message>
     <message>
         <source>Young&apos;s modulus E: &apos;%1&apos; must be a number between %2 and %3 MPa</source>
-        <translation type="unfinished"></translation>
+        <translation>Модуль Юнга E: «%1» должен быть числом от %2 до %3 МПа</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::MeasurementsModel</name>
     <message>
         <source>—</source>
-        <translation type="unfinished"></translation>
+        <translation>—</translation>
     </message>
     <message>
         <source>accepted</source>
-        <translation type="unfinished"></translation>
+        <translation>принято</translation>
     </message>
     <message>
         <source>rejected</source>
-        <translation type="unfinished"></translation>
+        <translation>отклонено</translation>
     </message>
     <message>
         <source>not measured</source>
-        <translation type="unfinished"></translation>
+        <translation>не измерено</translation>
     </message>
     <message>
         <source>Part</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь</translation>
     </message>
     <message>
         <source>Point</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка</translation>
     </message>
     <message>
         <source>x, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>x, мм</translation>
     </message>
     <message>
         <source>Measured, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Измерено, мм</translation>
     </message>
     <message>
         <source>Nominal, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Номинал, мм</translation>
     </message>
     <message>
         <source>Deviation, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонение, мм</translation>
     </message>
     <message>
         <source>Verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Решение</translation>
     </message>
     <message>
         <source>Reason</source>
-        <translation type="unfinished"></translation>
+        <translation>Причина</translation>
     </message>
     <message>
         <source>Correction, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Коррекция, мм</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::MeasurementsPage</name>
     <message>
         <source>Run</source>
-        <translation type="unfinished">Работа</translation>
+        <translation>Серия</translation>
     </message>
     <message>
         <source>Only rejected and unmeasured</source>
-        <translation type="unfinished"></translation>
+        <translation>Только отклонённые и неизмеренные</translation>
     </message>
     <message>
         <source>Refresh</source>
-        <translation type="unfinished"></translation>
+        <translation>Обновить</translation>
     </message>
     <message>
         <source>The run history cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся прочитать историю серий</translation>
     </message>
     <message>
         <source>No parts recorded yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Детали ещё не записаны</translation>
     </message>
     <message>
         <source>Start a run on the Run page: every measured part appears here with its diameters at the control points, whether each was accepted and why not.</source>
-        <translation type="unfinished"></translation>
+        <translation>Запустите серию на странице «Работа»: здесь появится каждая измеренная деталь с диаметрами в контрольных точках — принят ли каждый из них, а если нет, то почему.</translation>
     </message>
     <message>
         <source>Run %1 · %2 · %3, z = %4 · %5 parts · %6</source>
-        <translation type="unfinished"></translation>
+        <translation>Серия %1 · %2 · %3, z = %4 · %5 дет. · %6</translation>
     </message>
     <message>
         <source>%1 parts recorded, %2 measured; %3 values rejected or not measured.</source>
-        <translation type="unfinished"></translation>
+        <translation>Записано деталей: %1, измерено: %2; отклонено или не измерено значений: %3.</translation>
     </message>
 </context>
 <context>
@@ -1370,508 +1371,510 @@
     <name>tt::ui::ProbeAcceptPage</name>
     <message>
         <source>(typed points)</source>
-        <translation type="unfinished"></translation>
+        <translation>(точки введены вручную)</translation>
     </message>
     <message>
         <source>&lt;p&gt;Characteristic of degree %1 from %2 points, residual RMS %3 µm.&lt;/p&gt;&lt;p&gt;Table: %4 entries of %5 nm, worst error at the calibration points %6 µm, step between codes up to %7 µm; %8 entries outside the calibrated range %9 .. %10 µm are extrapolated.%11&lt;/p&gt;&lt;p&gt;It will be saved as version &lt;b&gt;%12&lt;/b&gt; of %13, plane %14, by &lt;b&gt;%15&lt;/b&gt;.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Характеристика степени %1, точек: %2, СКО остатков %3 мкм.&lt;/p&gt;&lt;p&gt;Таблица: значений %4, дискретность %5 нм, наибольшая погрешность в точках калибровки %6 мкм, шаг между кодами до %7 мкм; экстраполировано значений вне калиброванного диапазона %9 .. %10 мкм: %8.%11&lt;/p&gt;&lt;p&gt;Она будет сохранена как версия &lt;b&gt;%12&lt;/b&gt; для «%13», плоскость %14, оператор &lt;b&gt;%15&lt;/b&gt;.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>(no operator name — set it in Settings)</source>
-        <translation type="unfinished"></translation>
+        <translation>(нет имени оператора — укажите его в «Настройках»)</translation>
     </message>
     <message>
         <source>Accept the table</source>
-        <translation type="unfinished"></translation>
+        <translation>Принятие таблицы</translation>
     </message>
     <message>
         <source>Check the figures; the table is stored only when you accept it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Проверьте значения; таблица сохраняется, только когда вы её примете.</translation>
     </message>
     <message>
         <source>I accept this linearisation table</source>
-        <translation type="unfinished"></translation>
+        <translation>Принимаю эту таблицу линеаризации</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeCalibrationWizard</name>
     <message>
         <source>Probe mandrel linearisation</source>
-        <translation type="unfinished"></translation>
+        <translation>Линеаризация оправки-датчика</translation>
     </message>
     <message>
         <source>&lt; Back</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt; Назад</translation>
     </message>
     <message>
         <source>Next &gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Далее &gt;</translation>
     </message>
     <message>
         <source>Finish</source>
-        <translation type="unfinished"></translation>
+        <translation>Готово</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Отмена</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeCapturePage</name>
     <message>
         <source>Probe: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка: %1</translation>
     </message>
     <message>
         <source>Live ADC code %1 (mean of %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Текущий код АЦП %1 (среднее, отсчётов: %2)</translation>
     </message>
     <message>
         <source>Waiting for probe samples…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ожидание отсчётов датчика…</translation>
     </message>
     <message>
         <source>now</source>
-        <translation type="unfinished"></translation>
+        <translation>сейчас</translation>
     </message>
     <message>
         <source>The jack bends the bar to %1 µm; wait for the live code to settle, then capture.</source>
-        <translation type="unfinished"></translation>
+        <translation>Домкрат изгибает оправку до %1 мкм; дождитесь, пока текущий код установится, и снимите точку.</translation>
     </message>
     <message>
         <source>The probe is not ready: type the point instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>Датчик не готов: введите точку вручную.</translation>
     </message>
     <message>
         <source>Too few live samples yet (%1 of %2): wait a moment.</source>
-        <translation type="unfinished"></translation>
+        <translation>Пока мало отсчётов (%1 из %2): подождите немного.</translation>
     </message>
     <message>
         <source>Point %1: %2 µm at ADC code %3.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1: %2 мкм при коде АЦП %3.</translation>
     </message>
     <message>
         <source>Typed point %1 added.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1 (вручную) добавлена.</translation>
     </message>
     <message>
         <source>Point removed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка удалена.</translation>
     </message>
     <message>
         <source>live, %1 samples</source>
-        <translation type="unfinished"></translation>
+        <translation>с датчика, отсчётов: %1</translation>
     </message>
     <message>
         <source>typed</source>
-        <translation type="unfinished"></translation>
+        <translation>вручную</translation>
     </message>
     <message>
         <source>captured</source>
-        <translation type="unfinished"></translation>
+        <translation>снятые точки</translation>
     </message>
     <message>
         <source>Capture points</source>
-        <translation type="unfinished"></translation>
+        <translation>Снятие точек</translation>
     </message>
     <message>
         <source>Load the bar, read the instrument, capture. At least %1 points; both directions.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нагрузите оправку, снимите показание прибора, зафиксируйте точку. Минимум точек: %1, в обоих направлениях.</translation>
     </message>
     <message>
         <source>Simulator jack</source>
-        <translation type="unfinished"></translation>
+        <translation>Домкрат симулятора</translation>
     </message>
     <message>
         <source>Bend the bar</source>
-        <translation type="unfinished"></translation>
+        <translation>Изогнуть оправку</translation>
     </message>
     <message>
         <source>Reference reading</source>
-        <translation type="unfinished"></translation>
+        <translation>Показание эталона</translation>
     </message>
     <message>
         <source>Capture point</source>
-        <translation type="unfinished"></translation>
+        <translation>Снять точку</translation>
     </message>
     <message>
         <source>ADC code (typed)</source>
-        <translation type="unfinished"></translation>
+        <translation>Код АЦП (вручную)</translation>
     </message>
     <message>
         <source>Add typed point</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить точку вручную</translation>
     </message>
     <message>
         <source>Remove point</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить точку</translation>
     </message>
     <message>
         <source>Reference, µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталон, мкм</translation>
     </message>
     <message>
         <source>ADC code</source>
-        <translation type="unfinished"></translation>
+        <translation>Код АЦП</translation>
     </message>
     <message>
         <source>Source</source>
-        <translation type="unfinished"></translation>
+        <translation>Источник</translation>
     </message>
     <message>
         <source>ADC code against the reference deflection</source>
-        <translation type="unfinished"></translation>
+        <translation>Код АЦП в зависимости от эталонного прогиба</translation>
     </message>
     <message>
         <source>Reference deflection, µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонный прогиб, мкм</translation>
     </message>
     <message>
         <source>Captured points stay here when you go back or cancel.</source>
-        <translation type="unfinished"></translation>
+        <translation>Снятые точки сохраняются, если вернуться назад или отменить.</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeChoosePage</name>
     <message>
         <source>No probe mandrel is configured: add one on the Devices page, or type the points.</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка-датчик не настроена: добавьте её на странице «Устройства» или вводите точки вручную.</translation>
     </message>
     <message>
         <source>%1 is ready.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: готово.</translation>
     </message>
     <message>
         <source>%1: %2 — you can still type the points by hand.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 — точки можно ввести вручную.</translation>
     </message>
     <message>
         <source>Probe and bending plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка и плоскость изгиба</translation>
     </message>
     <message>
         <source>Which probe mandrel is calibrated, in which plane, and its ADC resolution.</source>
-        <translation type="unfinished"></translation>
+        <translation>Какая оправка-датчик калибруется, в какой плоскости, и разрядность её АЦП.</translation>
     </message>
     <message>
         <source>Probe mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка-датчик</translation>
     </message>
     <message>
         <source>Bending plane</source>
-        <translation type="unfinished"></translation>
+        <translation>Плоскость изгиба</translation>
     </message>
     <message>
         <source>ADC resolution</source>
-        <translation type="unfinished"></translation>
+        <translation>Разрядность АЦП</translation>
     </message>
     <message>
         <source>X — radial (bore diameter)</source>
-        <translation type="unfinished"></translation>
+        <translation>X — радиальная (диаметр отверстия)</translation>
     </message>
     <message>
         <source>Y — tangential</source>
-        <translation type="unfinished"></translation>
+        <translation>Y — тангенциальная</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeFitPage</name>
     <message>
         <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>degree %1: leave-one-out %2 µm, in-sample %3 µm%4</source>
-        <translation type="unfinished"></translation>
+        <translation>степень %1: скользящий контроль %2 мкм, по самим точкам %3 мкм%4</translation>
     </message>
     <message>
         <source> — chosen</source>
-        <translation type="unfinished"></translation>
+        <translation> — выбрана</translation>
     </message>
     <message>
         <source>&lt;p&gt;Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p&gt;Каждая точка предсказывается по аппроксимации остальных (скользящий контроль); более высокая степень всегда лучше проходит через сами точки, поэтому она выбирается, только если лучше их предсказывает.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Отклонено: %1</translation>
     </message>
     <message>
         <source>&lt;p style=&apos;color:#1b5e20&apos;&gt;&lt;b&gt;Monotonic over the whole ADC range; residual RMS %1 µm.&lt;/b&gt;&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;p style=&apos;color:#1b5e20&apos;&gt;&lt;b&gt;Монотонна во всём диапазоне АЦП; СКО остатков %1 мкм.&lt;/b&gt;&lt;/p&gt;</translation>
     </message>
     <message>
         <source>captured</source>
-        <translation type="unfinished"></translation>
+        <translation>снятые точки</translation>
     </message>
     <message>
         <source>fitted, degree %1</source>
-        <translation type="unfinished"></translation>
+        <translation>аппроксимация, степень %1</translation>
     </message>
     <message>
         <source>residual</source>
-        <translation type="unfinished"></translation>
+        <translation>остаток</translation>
     </message>
     <message>
         <source>zero</source>
-        <translation type="unfinished"></translation>
+        <translation>ноль</translation>
     </message>
     <message>
         <source>Fit the characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Аппроксимация характеристики</translation>
     </message>
     <message>
         <source>The inductive sensor&apos;s characteristic is a polynomial of degree 2 to 4; the table inverts it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Характеристика индуктивного датчика — полином степени от 2 до 4; таблица задаёт обратную функцию.</translation>
     </message>
     <message>
         <source>Degree</source>
-        <translation type="unfinished"></translation>
+        <translation>Степень</translation>
     </message>
     <message>
         <source>Automatic (cross-validation)</source>
-        <translation type="unfinished"></translation>
+        <translation>Автоматически (перекрёстная проверка)</translation>
     </message>
     <message>
         <source>2</source>
-        <translation type="unfinished"></translation>
+        <translation>2</translation>
     </message>
     <message>
         <source>3</source>
-        <translation type="unfinished"></translation>
+        <translation>3</translation>
     </message>
     <message>
         <source>4</source>
-        <translation type="unfinished"></translation>
+        <translation>4</translation>
     </message>
     <message>
         <source>Characteristic</source>
-        <translation type="unfinished"></translation>
+        <translation>Характеристика</translation>
     </message>
     <message>
         <source>Reference deflection, µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонный прогиб, мкм</translation>
     </message>
     <message>
         <source>ADC code</source>
-        <translation type="unfinished"></translation>
+        <translation>Код АЦП</translation>
     </message>
     <message>
         <source>Residuals</source>
-        <translation type="unfinished"></translation>
+        <translation>Остатки</translation>
     </message>
     <message>
         <source>Table reading − reference, µm</source>
-        <translation type="unfinished"></translation>
+        <translation>Показание по таблице − эталон, мкм</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeReferencePage</name>
     <message>
         <source>Set up the reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Установка эталона</translation>
     </message>
     <message>
         <source>The deflection is read on an instrument at the tool tip while the bar is loaded.</source>
-        <translation type="unfinished"></translation>
+        <translation>Прогиб отсчитывается по прибору у вершины резца при нагруженной оправке.</translation>
     </message>
     <message>
         <source>Reference instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>Эталонный прибор</translation>
     </message>
     <message>
         <source>Dial indicator</source>
-        <translation type="unfinished"></translation>
+        <translation>Индикатор часового типа</translation>
     </message>
     <message>
         <source>Micrometer</source>
-        <translation type="unfinished"></translation>
+        <translation>Микрометр</translation>
     </message>
     <message>
         <source>Division of the instrument</source>
-        <translation type="unfinished"></translation>
+        <translation>Цена деления прибора</translation>
     </message>
     <message>
         <source>1. Clamp the boring bar as for cutting; mount the instrument on the lathe bed touching the tool tip in the chosen plane.
 2. With the bar unloaded, set the instrument to zero.
 3. Load the bar in both directions in steps (a screw jack against the tool block) over the whole travel of the probe; at each step read the instrument and capture the point. Aim for 15 to 25 points, both signs.</source>
-        <translation type="unfinished"></translation>
+        <translation>1. Закрепите расточную оправку как для резания; установите прибор на станине так, чтобы он касался вершины резца в выбранной плоскости.
+2. При ненагруженной оправке установите прибор на ноль.
+3. Нагружайте оправку ступенями в обоих направлениях (винтовым домкратом, упёртым в резцедержатель) на весь ход датчика; на каждой ступени снимите показание прибора и зафиксируйте точку. Желательно 15–25 точек обоих знаков.</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProbeSavePage</name>
     <message>
         <source>Export the table</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт таблицы</translation>
     </message>
     <message>
         <source>C header (*.h);;Binary image (*.bin);;CSV (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Заголовочный файл C (*.h);;Двоичный образ (*.bin);;CSV (*.csv)</translation>
     </message>
     <message>
         <source>The calibration database is not open; export the table instead.</source>
-        <translation type="unfinished"></translation>
+        <translation>База калибровок не открыта; экспортируйте таблицу в файл.</translation>
     </message>
     <message>
         <source>Save the table</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранение таблицы</translation>
     </message>
     <message>
         <source>Enter your name on the Settings page first: the table is saved with it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала введите своё имя на странице «Настройки»: таблица сохраняется вместе с ним.</translation>
     </message>
     <message>
         <source>Not saved: no operator name (Settings).</source>
-        <translation type="unfinished"></translation>
+        <translation>Не сохранено: нет имени оператора («Настройки»).</translation>
     </message>
     <message>
         <source>(typed points)</source>
-        <translation type="unfinished"></translation>
+        <translation>(точки введены вручную)</translation>
     </message>
     <message>
         <source>Not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не сохранено: %1</translation>
     </message>
     <message>
         <source>Saved as version %1 of %2 by %3 at %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранено как версия %1 для «%2», оператор %3, %4.</translation>
     </message>
     <message>
         <source>Now upload it to the mandrel.</source>
-        <translation type="unfinished"></translation>
+        <translation>Теперь загрузите её в оправку.</translation>
     </message>
     <message>
         <source>Upload refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Загрузка отклонена: %1</translation>
     </message>
     <message>
         <source>Uploading…</source>
-        <translation type="unfinished"></translation>
+        <translation>Загрузка…</translation>
     </message>
     <message>
         <source>Upload failed: %1. The saved table is kept; try again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Загрузка не удалась: %1. Сохранённая таблица не потеряна; повторите попытку.</translation>
     </message>
     <message>
         <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Проверено: оправка сообщает версию %1, %2 — как у отправленного образа.</translation>
     </message>
     <message>
         <source>Read-back does not match: the mandrel reports version %1, %2; the image has version %3, CRC-32C %4. Upload again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Контрольное считывание не совпадает: оправка сообщает версию %1, %2, а у образа версия %3, CRC-32C %4. Загрузите снова.</translation>
     </message>
     <message>
         <source>The mandrel did not report its table; upload again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Оправка не сообщила данные своей таблицы; загрузите снова.</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся записать %1: %2</translation>
     </message>
     <message>
         <source>Exported to %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспортировано в %1.</translation>
     </message>
     <message>
         <source>Save and upload</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранение и загрузка</translation>
     </message>
     <message>
         <source>The table is saved as a new version with your name, then sent to the mandrel and read back.</source>
-        <translation type="unfinished"></translation>
+        <translation>Таблица сохраняется как новая версия с вашим именем, затем передаётся в оправку и считывается обратно для контроля.</translation>
     </message>
     <message>
         <source>Save the table, then upload it to %1. Finish is possible once the mandrel reports the same version and CRC as the image sent.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохраните таблицу, затем загрузите её в «%1». Завершить можно, когда оправка сообщит ту же версию и CRC, что у отправленного образа.</translation>
     </message>
     <message>
         <source>This probe takes no uploads here: save the table and export it for the microcontroller (C header or binary image).</source>
-        <translation type="unfinished"></translation>
+        <translation>Этот датчик не принимает загрузку отсюда: сохраните таблицу и экспортируйте её для микроконтроллера (заголовочный файл C или двоичный образ).</translation>
     </message>
     <message>
         <source>Save table</source>
-        <translation type="unfinished"></translation>
+        <translation>Сохранить таблицу</translation>
     </message>
     <message>
         <source>Upload to the mandrel</source>
-        <translation type="unfinished"></translation>
+        <translation>Загрузить в оправку</translation>
     </message>
     <message>
         <source>Export…</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт…</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ProfilePanel</name>
     <message>
         <source>Last part: diameter error along the shaft</source>
-        <translation type="unfinished"></translation>
+        <translation>Последняя деталь: погрешность диаметра по длине вала</translation>
     </message>
     <message>
         <source>x along the shaft, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>x по длине вала, мм</translation>
     </message>
     <message>
         <source>diameter error, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>погрешность диаметра, мм</translation>
     </message>
     <message>
         <source>Error at the points, last %1 parts</source>
-        <translation type="unfinished"></translation>
+        <translation>Погрешность в точках, последние %1 дет.</translation>
     </message>
     <message>
         <source>part</source>
-        <translation type="unfinished"></translation>
+        <translation>деталь</translation>
     </message>
     <message>
         <source>tolerance ±%1</source>
-        <translation type="unfinished"></translation>
+        <translation>допуск ±%1</translation>
     </message>
     <message>
         <source>model d(x)</source>
-        <translation type="unfinished"></translation>
+        <translation>модель d(x)</translation>
     </message>
     <message>
         <source>correction, part %1</source>
-        <translation type="unfinished"></translation>
+        <translation>коррекция, деталь %1</translation>
     </message>
     <message>
         <source>part %1 gauged</source>
-        <translation type="unfinished"></translation>
+        <translation>деталь %1, измерено</translation>
     </message>
     <message>
         <source>between points</source>
-        <translation type="unfinished"></translation>
+        <translation>между точками</translation>
     </message>
     <message>
         <source>simulated</source>
-        <translation type="unfinished"></translation>
+        <translation>симуляция</translation>
     </message>
     <message>
         <source>x = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>x = %1</translation>
     </message>
     <message>
         <source>tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>допуск</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::RunPage</name>
     <message>
         <source>Shaft profile (run-to-run)</source>
-        <translation type="unfinished"></translation>
+        <translation>Профиль вала (от детали к детали)</translation>
     </message>
     <message>
         <source>Boring bar (in-process)</source>
-        <translation type="unfinished"></translation>
+        <translation>Расточная оправка (в процессе)</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::SettingsForm</name>
     <message>
         <source>%1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>от %1 до %2</translation>
     </message>
 </context>
 <context>
@@ -1901,633 +1904,635 @@
     <name>tt::ui::ShaftRunPanel</name>
     <message>
         <source>ready</source>
-        <translation type="unfinished">готовы</translation>
+        <translation>готов</translation>
     </message>
     <message>
         <source>connecting</source>
-        <translation type="unfinished"></translation>
+        <translation>подключается</translation>
     </message>
     <message>
         <source>not answering</source>
-        <translation type="unfinished"></translation>
+        <translation>не отвечает</translation>
     </message>
     <message>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>ошибка</translation>
     </message>
     <message>
         <source>the Run page was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>страница «Работа» закрыта</translation>
     </message>
     <message>
         <source>Start</source>
-        <translation type="unfinished"></translation>
+        <translation>Пуск</translation>
     </message>
     <message>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Стоп</translation>
     </message>
     <message>
         <source>Set-up</source>
-        <translation type="unfinished"></translation>
+        <translation>Наладка</translation>
     </message>
     <message>
         <source>Controller</source>
-        <translation type="unfinished">Регулятор</translation>
+        <translation>Регулятор</translation>
     </message>
     <message>
         <source>Delay z, parts</source>
-        <translation type="unfinished"></translation>
+        <translation>Запаздывание z, дет.</translation>
     </message>
     <message>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Скорость</translation>
     </message>
     <message>
         <source>LQG</source>
-        <translation type="unfinished"></translation>
+        <translation>ЛКГ</translation>
     </message>
     <message>
         <source>EWMA</source>
-        <translation type="unfinished"></translation>
+        <translation>EWMA</translation>
     </message>
     <message>
         <source>Open loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Разомкнутый контур</translation>
     </message>
     <message>
         <source>×1 (6 min a part)</source>
-        <translation type="unfinished"></translation>
+        <translation>×1 (6 мин на деталь)</translation>
     </message>
     <message>
         <source>×60 (6 s a part)</source>
-        <translation type="unfinished"></translation>
+        <translation>×60 (6 с на деталь)</translation>
     </message>
     <message>
         <source>×360 (1 s a part)</source>
-        <translation type="unfinished"></translation>
+        <translation>×360 (1 с на деталь)</translation>
     </message>
     <message>
         <source>×3600 (fastest)</source>
-        <translation type="unfinished"></translation>
+        <translation>×3600 (максимально)</translation>
     </message>
     <message>
         <source>Machine</source>
-        <translation type="unfinished"></translation>
+        <translation>Станок</translation>
     </message>
     <message>
         <source>Simulated lathe (built in)</source>
-        <translation type="unfinished"></translation>
+        <translation>Симулятор станка (встроенный)</translation>
     </message>
     <message>
         <source>Real lathe (Devices page)</source>
-        <translation type="unfinished"></translation>
+        <translation>Реальный станок (страница «Устройства»)</translation>
     </message>
     <message>
         <source>CNC output</source>
-        <translation type="unfinished"></translation>
+        <translation>Выход в ЧПУ</translation>
     </message>
     <message>
         <source>Diameters from</source>
-        <translation type="unfinished"></translation>
+        <translation>Источник диаметров</translation>
     </message>
     <message>
         <source>Typed in by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>Ручной ввод</translation>
     </message>
     <message>
         <source>Diameters by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>Диаметры вручную</translation>
     </message>
     <message>
         <source>Part not measured</source>
-        <translation type="unfinished"></translation>
+        <translation>Деталь не измерена</translation>
     </message>
     <message>
         <source>Alarms</source>
-        <translation type="unfinished"></translation>
+        <translation>Тревоги</translation>
     </message>
     <message>
         <source>%1 — %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — %2</translation>
     </message>
     <message>
         <source>Not started: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не запущено: %1</translation>
     </message>
     <message>
         <source>The run cannot start</source>
-        <translation type="unfinished"></translation>
+        <translation>Серию невозможно запустить</translation>
     </message>
     <message>
         <source>real lathe</source>
-        <translation type="unfinished"></translation>
+        <translation>реальный станок</translation>
     </message>
     <message>
         <source>simulated lathe</source>
-        <translation type="unfinished"></translation>
+        <translation>симулятор станка</translation>
     </message>
     <message>
         <source>Run started: %1, %2, z = %3, %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Серия запущена: %1, %2, z = %3, %4</translation>
     </message>
     <message>
         <source>the run did not start</source>
-        <translation type="unfinished"></translation>
+        <translation>серия не запустилась</translation>
     </message>
     <message>
         <source>the run is over</source>
-        <translation type="unfinished"></translation>
+        <translation>серия завершена</translation>
     </message>
     <message>
         <source>Continue</source>
-        <translation type="unfinished"></translation>
+        <translation>Продолжить</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Пауза</translation>
     </message>
     <message>
         <source>Stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>Остановлено</translation>
     </message>
     <message>
         <source>Ready to start</source>
-        <translation type="unfinished"></translation>
+        <translation>Готов к пуску</translation>
     </message>
     <message>
         <source>Running</source>
-        <translation type="unfinished">Выполняется</translation>
+        <translation>Выполняется</translation>
     </message>
     <message>
         <source>Paused — the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
+        <translation>Пауза — ЧПУ сохраняет последнюю коррекцию</translation>
     </message>
     <message>
         <source>Fault — the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
+        <translation>Авария — ЧПУ сохраняет последнюю коррекцию</translation>
     </message>
     <message>
         <source>Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)</source>
-        <translation type="unfinished"></translation>
+        <translation>Устройства: встроенный симулятор станка (свои ЧПУ, микрометр и цикл обработки деталей)</translation>
     </message>
     <message>
         <source>Gauge: %1 · CNC: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Микрометр: %1 · ЧПУ: %2</translation>
     </message>
     <message>
         <source>%1: “%2” — %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» — %3</translation>
     </message>
     <message>
         <source>CNC</source>
-        <translation type="unfinished"></translation>
+        <translation>ЧПУ</translation>
     </message>
     <message>
         <source>CNC: none (add a correction output on the Devices page)</source>
-        <translation type="unfinished"></translation>
+        <translation>ЧПУ: нет (добавьте выход коррекции на странице «Устройства»)</translation>
     </message>
     <message>
         <source>Gauge</source>
-        <translation type="unfinished"></translation>
+        <translation>Микрометр</translation>
     </message>
     <message>
         <source>Diameters: typed in by hand</source>
-        <translation type="unfinished"></translation>
+        <translation>Диаметры: ручной ввод</translation>
     </message>
     <message>
         <source>Press Start: each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нажмите «Пуск»: коррекции каждой детали передаются в ЧПУ; обработайте деталь и нажмите «Деталь готова».</translation>
     </message>
     <message>
         <source>Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нажмите «Пуск»: валы длиной 325 мм обтачиваются на симуляторе станка и измеряются в контрольных точках, а следующая деталь корректируется.</translation>
     </message>
     <message>
         <source>Parts done: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Готово деталей: %1</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ToolAuditModel</name>
     <message>
         <source>When</source>
-        <translation type="unfinished"></translation>
+        <translation>Когда</translation>
     </message>
     <message>
         <source>Who</source>
-        <translation type="unfinished"></translation>
+        <translation>Кто</translation>
     </message>
     <message>
         <source>Tool or material</source>
-        <translation type="unfinished"></translation>
+        <translation>Инструмент или материал</translation>
     </message>
     <message>
         <source>Field</source>
-        <translation type="unfinished"></translation>
+        <translation>Поле</translation>
     </message>
     <message>
         <source>Old</source>
-        <translation type="unfinished"></translation>
+        <translation>Было</translation>
     </message>
     <message>
         <source>New</source>
-        <translation type="unfinished"></translation>
+        <translation>Стало</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ToolImportModel</name>
     <message>
         <source>Take from file</source>
-        <translation type="unfinished"></translation>
+        <translation>Взять из файла</translation>
     </message>
     <message>
         <source>Keep table</source>
-        <translation type="unfinished"></translation>
+        <translation>Оставить таблицу</translation>
     </message>
     <message>
         <source>Line</source>
-        <translation type="unfinished"></translation>
+        <translation>Строка</translation>
     </message>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Инструмент</translation>
     </message>
     <message>
         <source>In the table</source>
-        <translation type="unfinished"></translation>
+        <translation>В таблице</translation>
     </message>
     <message>
         <source>Differences (table → file) or problems</source>
-        <translation type="unfinished"></translation>
+        <translation>Различия (таблица → файл) или ошибки</translation>
     </message>
     <message>
         <source>Import</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт</translation>
     </message>
     <message>
         <source>new</source>
-        <translation type="unfinished"></translation>
+        <translation>новый</translation>
     </message>
     <message>
         <source>same</source>
-        <translation type="unfinished"></translation>
+        <translation>совпадает</translation>
     </message>
     <message>
         <source>different</source>
-        <translation type="unfinished"></translation>
+        <translation>отличается</translation>
     </message>
     <message>
         <source>cannot be read</source>
-        <translation type="unfinished"></translation>
+        <translation>не читается</translation>
     </message>
     <message>
         <source>Add</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить</translation>
     </message>
     <message>
         <source>Nothing to do</source>
-        <translation type="unfinished"></translation>
+        <translation>Без изменений</translation>
     </message>
     <message>
         <source>Skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>Пропущен</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ToolTableModel</name>
     <message>
         <source>Tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Инструмент</translation>
     </message>
     <message>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Название</translation>
     </message>
     <message>
         <source>Section</source>
-        <translation type="unfinished"></translation>
+        <translation>Сечение</translation>
     </message>
     <message>
         <source>d, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>d, мм</translation>
     </message>
     <message>
         <source>b, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>b, мм</translation>
     </message>
     <message>
         <source>h, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>h, мм</translation>
     </message>
     <message>
         <source>Overhang l, mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Вылет l, мм</translation>
     </message>
     <message>
         <source>Material</source>
-        <translation type="unfinished"></translation>
+        <translation>Материал</translation>
     </message>
     <message>
         <source>E, MPa</source>
-        <translation type="unfinished"></translation>
+        <translation>E, МПа</translation>
     </message>
     <message>
         <source>Measured k, N/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>Измеренная k, Н/мм</translation>
     </message>
     <message>
         <source>Measured on</source>
-        <translation type="unfinished"></translation>
+        <translation>Дата измерения</translation>
     </message>
     <message>
         <source>Measured by</source>
-        <translation type="unfinished"></translation>
+        <translation>Кем измерено</translation>
     </message>
     <message>
         <source>k_p, N/A</source>
-        <translation type="unfinished"></translation>
+        <translation>k_p, Н/А</translation>
     </message>
     <message>
         <source>k = 3EI/l³, N/mm</source>
-        <translation type="unfinished"></translation>
+        <translation>k = 3EI/l³, Н/мм</translation>
     </message>
     <message>
         <source>l/d</source>
-        <translation type="unfinished"></translation>
+        <translation>l/d</translation>
     </message>
     <message>
         <source>Computed from the section, the overhang and E; a measured stiffness overrides it</source>
-        <translation type="unfinished"></translation>
+        <translation>Рассчитывается по сечению, вылету и E; измеренная жёсткость имеет приоритет</translation>
     </message>
     <message>
         <source>round</source>
-        <translation type="unfinished"></translation>
+        <translation>круглое</translation>
     </message>
     <message>
         <source>rectangular</source>
-        <translation type="unfinished"></translation>
+        <translation>прямоугольное</translation>
     </message>
     <message>
         <source>Removed when you apply the changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Будет удалён при применении изменений</translation>
     </message>
     <message>
         <source>Applied value: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Применённое значение: %1</translation>
     </message>
     <message>
         <source>%1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%2: %1</translation>
     </message>
     <message>
         <source>Add %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить %1</translation>
     </message>
     <message>
         <source>Remove %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить %1</translation>
     </message>
     <message>
         <source>Remove %1 tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить инструменты (%1)</translation>
     </message>
     <message>
         <source>id: %1 is also used in row %2</source>
-        <translation type="unfinished"></translation>
+        <translation>id: %1 уже используется в строке %2</translation>
     </message>
 </context>
 <context>
     <name>tt::ui::ToolsPage</name>
     <message>
         <source>Not accepted: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не принято: %1</translation>
     </message>
     <message>
         <source>round</source>
-        <translation type="unfinished"></translation>
+        <translation>круглое</translation>
     </message>
     <message>
         <source>rectangular</source>
-        <translation type="unfinished"></translation>
+        <translation>прямоугольное</translation>
     </message>
     <message>
         <source>%1 (E %2 MPa)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (E %2 МПа)</translation>
     </message>
     <message>
         <source>Enter your name on the Settings page first: every applied change is recorded with it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала введите своё имя на странице «Настройки»: каждое применённое изменение записывается вместе с ним.</translation>
     </message>
     <message>
         <source>%1: no operator name (Settings)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: нет имени оператора («Настройки»)</translation>
     </message>
     <message>
         <source>Undo: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Отменить: %1</translation>
     </message>
     <message>
         <source>Redo: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Повторить: %1</translation>
     </message>
     <message>
         <source>Fix before applying: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Исправьте перед применением: %1</translation>
     </message>
     <message>
         <source>Changed tools: %1 (highlighted). They are not stored until you apply them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Изменено инструментов: %1 (выделены). Они не сохраняются, пока вы не примените изменения.</translation>
     </message>
     <message>
         <source>All changes are applied. Double-click a cell to edit it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Все изменения применены. Дважды щёлкните ячейку, чтобы изменить её.</translation>
     </message>
     <message>
         <source>Select the tools to remove first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала выберите инструменты для удаления.</translation>
     </message>
     <message>
         <source>Nothing to apply.</source>
-        <translation type="unfinished"></translation>
+        <translation>Нечего применять.</translation>
     </message>
     <message>
         <source>Apply changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Применить изменения</translation>
     </message>
     <message>
         <source>These rows need fixing first:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала исправьте эти строки:
+%1</translation>
     </message>
     <message>
         <source>Applied. Audit entries written with your name: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Применено. Записей в журнале изменений с вашим именем: %1.</translation>
     </message>
     <message>
         <source>Nothing was stored: %1
 Your edits are still here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ничего не сохранено: %1
+Ваши правки не потеряны.</translation>
     </message>
     <message>
         <source>Not stored: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не сохранено: %1</translation>
     </message>
     <message>
         <source>Discard changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Отменить изменения</translation>
     </message>
     <message>
         <source>Discard the pending changes of %1 tools? The stored table stays as it is.</source>
-        <translation type="unfinished"></translation>
+        <translation>Отменить несохранённые изменения инструментов (%1)? Сохранённая таблица останется как есть.</translation>
     </message>
     <message>
         <source>Pending changes discarded.</source>
-        <translation type="unfinished"></translation>
+        <translation>Несохранённые изменения отменены.</translation>
     </message>
     <message>
         <source>Import tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт инструментов</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Файлы CSV (*.csv)</translation>
     </message>
     <message>
         <source>%1 cannot be imported: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся импортировать %1: %2</translation>
     </message>
     <message>
         <source>Import %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт %1</translation>
     </message>
     <message>
         <source>Tools imported from %1: %2, highlighted until you apply them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Импортировано инструментов из %1: %2; они выделены, пока вы не примените изменения.</translation>
     </message>
     <message>
         <source>Import cancelled; the table is unchanged.</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт отменён; таблица не изменилась.</translation>
     </message>
     <message>
         <source>Export tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт инструментов</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся записать %1: %2</translation>
     </message>
     <message>
         <source>Exported %1 tools to %2, including %3 change(s) not applied yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспортировано инструментов: %1 в %2, в том числе ещё не применённых изменений: %3.</translation>
     </message>
     <message>
         <source>Exported %1 tools to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспортировано инструментов: %1 в %2.</translation>
     </message>
     <message>
         <source>Add material</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить материал</translation>
     </message>
     <message>
         <source>New material %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Новый материал %1</translation>
     </message>
     <message>
         <source>Added %1 (E 210000 MPa): double-click to rename it and set E.</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавлен %1 (E 210000 МПа): дважды щёлкните, чтобы переименовать его и задать E.</translation>
     </message>
     <message>
         <source>Select the material to remove first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сначала выберите материал для удаления.</translation>
     </message>
     <message>
         <source>Remove material</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить материал</translation>
     </message>
     <message>
         <source>Removed %1; tools keep their stored E.</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалён %1; у инструментов остаётся записанное E.</translation>
     </message>
     <message>
         <source>Edit material</source>
-        <translation type="unfinished"></translation>
+        <translation>Изменение материала</translation>
     </message>
     <message>
         <source>%1: E %2 MPa stored; tools keep the E they have until you choose the material again.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: сохранено E %2 МПа; у инструментов остаётся прежнее E, пока вы снова не выберете этот материал.</translation>
     </message>
     <message>
         <source>Add tool</source>
-        <translation type="unfinished"></translation>
+        <translation>Добавить инструмент</translation>
     </message>
     <message>
         <source>Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>Удалить</translation>
     </message>
     <message>
         <source>Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>Отменить</translation>
     </message>
     <message>
         <source>Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>Повторить</translation>
     </message>
     <message>
         <source>Import CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Импорт CSV…</translation>
     </message>
     <message>
         <source>Export CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Экспорт CSV…</translation>
     </message>
     <message>
         <source>Discard</source>
-        <translation type="unfinished"></translation>
+        <translation>Сбросить</translation>
     </message>
     <message>
         <source>Young&apos;s modulus of each holder material. Choosing a material for a tool copies its E; every change here is stored at once and recorded in the audit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Модуль Юнга каждого материала державки. При выборе материала для инструмента копируется его E; каждое изменение здесь сразу сохраняется и записывается в журнал изменений.</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished">Инструменты</translation>
+        <translation>Инструменты</translation>
     </message>
     <message>
         <source>Materials</source>
-        <translation type="unfinished"></translation>
+        <translation>Материалы</translation>
     </message>
     <message>
         <source>Audit</source>
-        <translation type="unfinished"></translation>
+        <translation>Журнал изменений</translation>
     </message>
     <message>
         <source>Take all from file</source>
-        <translation type="unfinished"></translation>
+        <translation>Всё взять из файла</translation>
     </message>
     <message>
         <source>Keep all in table</source>
-        <translation type="unfinished"></translation>
+        <translation>Всё оставить в таблице</translation>
     </message>
     <message>
         <source>Import</source>
-        <translation type="unfinished"></translation>
+        <translation>Импортировать</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Отмена</translation>
     </message>
     <message>
         <source>%1 new, %2 different from the table, %3 the same, %4 cannot be read. Choose for each different tool whether to keep the table&apos;s values or take the file&apos;s; imported rows stay pending until you apply them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Новых: %1, отличающихся от таблицы: %2, совпадающих: %3, нечитаемых: %4. Для каждого отличающегося инструмента выберите, оставить значения таблицы или взять из файла; импортированные строки не сохраняются, пока вы не примените изменения.</translation>
     </message>
     <message>
         <source>The tool table cannot be opened</source>
-        <translation type="unfinished"></translation>
+        <translation>Не удаётся открыть таблицу инструментов</translation>
     </message>
     <message>
         <source>%1&lt;br&gt;&lt;br&gt;The table is stored in the run history database; check the database on the Settings page.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&lt;br&gt;&lt;br&gt;Таблица хранится в базе данных истории серий; проверьте базу данных на странице «Настройки».</translation>
     </message>
 </context>
 </TS>
