@@ -11,12 +11,6 @@
 
 namespace tt::ui {
 
-namespace {
-QString tr(const char* text) {
-    return QCoreApplication::translate("tt::ui::HistoryCheck", text);
-}
-}  // namespace
-
 bool checkHistoryAtStart(AppContext& context, QWidget* parent, Prompt* prompt) {
     try {
         const auto database = openContextDatabase(context.databasePath);
@@ -25,11 +19,14 @@ bool checkHistoryAtStart(AppContext& context, QWidget* parent, Prompt* prompt) {
         return true;
     } catch (const std::exception& e) {
         const QString reason = QString::fromStdString(e.what());
-        if (context.state) context.state->setDatabaseDescription(tr("not available — %1").arg(reason));
+        if (context.state)
+            context.state->setDatabaseDescription(
+                QCoreApplication::translate("tt::ui::HistoryCheck", "not available — %1").arg(reason));
         if (prompt)
-            prompt->warn(parent, tr("Run history"),
-                         tr("The run history cannot be used: %1\n\nRuns are not recorded until this is "
-                            "fixed (Settings shows where the history is kept).")
+            prompt->warn(parent, QCoreApplication::translate("tt::ui::HistoryCheck", "Run history"),
+                         QCoreApplication::translate("tt::ui::HistoryCheck",
+                                                     "The run history cannot be used: %1\n\nRuns are not recorded "
+                                                     "until this is fixed (Settings shows where the history is kept).")
                              .arg(reason));
         return false;
     }

@@ -1,5 +1,7 @@
 #include "devices/api/device_kind.h"
 
+#include <QCoreApplication>
+
 namespace tt::devices {
 
 QString kindKey(DeviceKind kind) {
@@ -25,13 +27,13 @@ std::optional<DeviceKind> kindFromKey(const QString& key) {
 QString kindName(DeviceKind kind) {
     switch (kind) {
         case DeviceKind::Gauge:
-            return QStringLiteral("Gauge micrometer");
+            return QCoreApplication::translate("DeviceKinds", "Gauge micrometer");
         case DeviceKind::Probe:
-            return QStringLiteral("Probe mandrel");
+            return QCoreApplication::translate("DeviceKinds", "Probe mandrel");
         case DeviceKind::DriveCurrent:
-            return QStringLiteral("Drive-current readout");
+            return QCoreApplication::translate("DeviceKinds", "Drive-current readout");
         case DeviceKind::CorrectionOutput:
-            return QStringLiteral("Correction output to the CNC");
+            return QCoreApplication::translate("DeviceKinds", "Correction output to the CNC");
     }
     return {};
 }

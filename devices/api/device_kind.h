@@ -25,7 +25,8 @@ inline const QList<DeviceKind>& allDeviceKinds() {
 QString kindKey(DeviceKind kind);
 /// The kind of a key; nullopt for an unknown key.
 std::optional<DeviceKind> kindFromKey(const QString& key);
-/// English name for messages and the Devices page ("Gauge micrometer").
+/// Name for messages and the Devices page in the user's language ("Gauge micrometer"; translated
+/// in the context "DeviceKinds" when a translator is installed).
 QString kindName(DeviceKind kind);
 
 }  // namespace tt::devices

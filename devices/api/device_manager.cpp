@@ -9,6 +9,25 @@
 
 namespace tt::devices {
 
+namespace {
+
+/// A device's state in a word of the user's language, for the summary ("connecting").
+QString stateWord(core::DeviceState state) {
+    switch (state) {
+        case core::DeviceState::Ready:
+            return DeviceManager::tr("ready");
+        case core::DeviceState::Connecting:
+            return DeviceManager::tr("connecting");
+        case core::DeviceState::Error:
+            return DeviceManager::tr("error");
+        case core::DeviceState::Disconnected:
+            break;
+    }
+    return DeviceManager::tr("closed");
+}
+
+}  // namespace
+
 DeviceManager::DeviceManager(const core::Clock* clock, QObject* parent)
     : QObject(parent), m_clock(clock ? clock : &m_ownClock), m_simulator(std::make_unique<SimulatorPlugin>()) {}
 
@@ -194,8 +213,7 @@ DeviceSummary DeviceManager::summary() const {
         s.text = tr("%1 of %2 ready; %3 %4")
                      .arg(ready)
                      .arg(total)
-                     .arg(firstWaiting->name,
-                          QString::fromLatin1(core::toString(firstWaiting->device->health().state).data()));
+                     .arg(firstWaiting->name, stateWord(firstWaiting->device->health().state));
     } else {
         s.tone = DeviceSummary::Tone::Ok;
         s.text = tr("%n ready", nullptr, total);

@@ -21,8 +21,10 @@ public:
 
     /// Stable id stored with each instance ("gauge-serial").
     virtual QString pluginId() const = 0;
-    /// English name of how the plugin connects, shown after the kind on the Devices page
-    /// ("Serial data cable", "Modbus TCP/RTU").
+    /// Name of how the plugin connects, shown after the kind on the Devices page ("Serial data
+    /// cable", "Modbus TCP/RTU"), in the user's language. Like every text a plugin shows (schema
+    /// labels, units, choices, help, issues, state messages, counters), it is English in the
+    /// source and goes through QCoreApplication::translate with the plugin's context.
     virtual QString displayName() const = 0;
     /// The kinds this plugin creates.
     virtual QList<DeviceKind> kinds() const = 0;

@@ -1,5 +1,7 @@
 #include "devices/api/gauge_settings.h"
 
+#include <QCoreApplication>
+
 namespace tt::devices {
 
 namespace {
@@ -9,25 +11,33 @@ LengthUnit unitOf(const QVariantMap& settings, const QString& key) {
 }
 
 QList<SettingChoice> unitChoices() {
-    return {{QStringLiteral("mm"), QStringLiteral("Millimetres")}, {QStringLiteral("in"), QStringLiteral("Inches")}};
+    return {{QStringLiteral("mm"), QCoreApplication::translate("DeviceSettings", "Millimetres")},
+            {QStringLiteral("in"), QCoreApplication::translate("DeviceSettings", "Inches")}};
 }
 
 }  // namespace
 
 SettingsSchema gaugeFormatFields() {
     SettingsSchema fields;
-    fields << SettingField::choice(QStringLiteral("format"), QStringLiteral("Output format"),
-                                   {{QStringLiteral("ascii"), QStringLiteral("ASCII data cable (01A+00026.812)")},
-                                    {QStringLiteral("digimatic-nibbles"), QStringLiteral("Digimatic, 13 nibbles")},
-                                    {QStringLiteral("digimatic-hex"), QStringLiteral("Digimatic, hexadecimal text")}},
-                                   QStringLiteral("ascii"), QStringLiteral("What the data cable or interface sends."));
-    fields << SettingField::choice(QStringLiteral("instrumentUnit"), QStringLiteral("Instrument unit"), unitChoices(),
-                                   QStringLiteral("mm"),
-                                   QStringLiteral("The unit the micrometer displays; the ASCII format does not say."))
+    fields << SettingField::choice(
+        QStringLiteral("format"), QCoreApplication::translate("DeviceSettings", "Output format"),
+        {{QStringLiteral("ascii"), QCoreApplication::translate("DeviceSettings", "ASCII data cable (01A+00026.812)")},
+         {QStringLiteral("digimatic-nibbles"), QCoreApplication::translate("DeviceSettings", "Digimatic, 13 nibbles")},
+         {QStringLiteral("digimatic-hex"),
+          QCoreApplication::translate("DeviceSettings", "Digimatic, hexadecimal text")}},
+        QStringLiteral("ascii"),
+        QCoreApplication::translate("DeviceSettings", "What the data cable or interface sends."));
+    fields << SettingField::choice(
+                  QStringLiteral("instrumentUnit"), QCoreApplication::translate("DeviceSettings", "Instrument unit"),
+                  unitChoices(), QStringLiteral("mm"),
+                  QCoreApplication::translate("DeviceSettings",
+                                              "The unit the micrometer displays; the ASCII format does not say."))
                   .visibleWhen(QStringLiteral("format"), {QStringLiteral("ascii")});
-    fields << SettingField::choice(QStringLiteral("jobUnit"), QStringLiteral("Job unit"), unitChoices(),
-                                   QStringLiteral("mm"),
-                                   QStringLiteral("Readings in another unit are refused, never converted silently."));
+    fields << SettingField::choice(
+        QStringLiteral("jobUnit"), QCoreApplication::translate("DeviceSettings", "Job unit"), unitChoices(),
+        QStringLiteral("mm"),
+        QCoreApplication::translate("DeviceSettings",
+                                    "Readings in another unit are refused, never converted silently."));
     return fields;
 }
 

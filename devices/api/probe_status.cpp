@@ -1,5 +1,7 @@
 #include "devices/api/probe_status.h"
 
+#include <QCoreApplication>
+
 namespace tt::devices {
 
 TableUploadStatus toUploadStatus(const probe::ProbeSession::UploadState& state) {
@@ -34,25 +36,29 @@ std::optional<MandrelInfo> toMandrelInfo(const probe::ProbeSession& session) {
 QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::uint64_t queueOverflow) {
     const probe::FrameStats& f = session.frameStats();
     QList<DeviceStatistic> list{
-        {QStringLiteral("Samples used"), QString::number(session.samplesUsed())},
-        {QStringLiteral("Frames lost"), QString::number(f.lost)},
-        {QStringLiteral("Frames duplicated"), QString::number(f.duplicate)},
-        {QStringLiteral("Frames corrupt"), QString::number(f.corrupt + f.malformed)},
-        {QStringLiteral("Samples dropped (over-range, excitation)"), QString::number(session.samplesDropped())},
-        {QStringLiteral("Commands resent"), QString::number(session.resends())},
+        {QCoreApplication::translate("ProbeStatus", "Samples used"), QString::number(session.samplesUsed())},
+        {QCoreApplication::translate("ProbeStatus", "Frames lost"), QString::number(f.lost)},
+        {QCoreApplication::translate("ProbeStatus", "Frames duplicated"), QString::number(f.duplicate)},
+        {QCoreApplication::translate("ProbeStatus", "Frames corrupt"), QString::number(f.corrupt + f.malformed)},
+        {QCoreApplication::translate("ProbeStatus", "Samples dropped (over-range, excitation)"),
+         QString::number(session.samplesDropped())},
+        {QCoreApplication::translate("ProbeStatus", "Commands resent"), QString::number(session.resends())},
     };
-    if (queueOverflow > 0) list.append({QStringLiteral("Samples not taken in time"), QString::number(queueOverflow)});
+    if (queueOverflow > 0)
+        list.append(
+            {QCoreApplication::translate("ProbeStatus", "Samples not taken in time"), QString::number(queueOverflow)});
     if (const auto& mandrel = session.mandrel())
-        list.append({QStringLiteral("Protocol"), mandrel->protocol >= 2
-                                                     ? QStringLiteral("%1 (tables up to %2 KiB, CRC-32C)")
-                                                           .arg(mandrel->protocol)
-                                                           .arg(mandrel->maxTableBytes / 1024)
-                                                     : QStringLiteral("1 (tables up to 64 KiB, CRC-16)")});
+        list.append({QCoreApplication::translate("ProbeStatus", "Protocol"),
+                     mandrel->protocol >= 2
+                         ? QCoreApplication::translate("ProbeStatus", "%1 (tables up to %2 KiB, CRC-32C)")
+                               .arg(mandrel->protocol)
+                               .arg(mandrel->maxTableBytes / 1024)
+                         : QCoreApplication::translate("ProbeStatus", "1 (tables up to 64 KiB, CRC-16)")});
     if (const auto& info = session.tableInfo())
         list.append(
-            {QStringLiteral("Linearisation table"),
+            {QCoreApplication::translate("ProbeStatus", "Linearisation table"),
              info->valid
-                 ? QStringLiteral("version %1, %2, %3 bytes")
+                 ? QCoreApplication::translate("ProbeStatus", "version %1, %2, %3 bytes")
                        .arg(info->version)
                        .arg(
                            info->crc32c
@@ -63,7 +69,7 @@ QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::
                                : QStringLiteral("CRC 0x%1")
                                      .arg(QString::number(info->crc, 16).toUpper().rightJustified(4, QLatin1Char('0'))))
                        .arg(info->sizeBytes)
-                 : QStringLiteral("none (raw ADC codes only)")});
+                 : QCoreApplication::translate("ProbeStatus", "none (raw ADC codes only)")});
     return list;
 }
 

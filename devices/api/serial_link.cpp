@@ -1,5 +1,6 @@
 #include "devices/api/serial_link.h"
 
+#include <QCoreApplication>
 #include <QSerialPort>
 
 #include "devices/api/serial_settings.h"
@@ -26,12 +27,14 @@ SerialLink::SerialLink(QVariantMap settings, QString what, Callbacks callbacks)
     QObject::connect(m_port.get(), &QSerialPort::errorOccurred, [this](QSerialPort::SerialPortError error) {
         if (error == QSerialPort::NoError || error == QSerialPort::TimeoutError || !m_port->isOpen()) return;
         // Qt's own text for a vanished port is the stale errno ("File exists"): say what happened.
-        const QString what = error == QSerialPort::ResourceError
-                                 ? QStringLiteral("the port went away: cable or adapter unplugged")
-                             : error == QSerialPort::ReadError  ? QStringLiteral("reading failed")
-                             : error == QSerialPort::WriteError ? QStringLiteral("writing failed")
-                                                                : m_port->errorString();
-        lost(QStringLiteral("the %1 on %2 was disconnected (%3)").arg(m_what, m_portName, what));
+        const QString what =
+            error == QSerialPort::ResourceError
+                ? QCoreApplication::translate("SerialLink", "the port went away: cable or adapter unplugged")
+            : error == QSerialPort::ReadError  ? QCoreApplication::translate("SerialLink", "reading failed")
+            : error == QSerialPort::WriteError ? QCoreApplication::translate("SerialLink", "writing failed")
+                                               : m_port->errorString();
+        lost(QCoreApplication::translate("SerialLink", "the %1 on %2 was disconnected (%3)")
+                 .arg(m_what, m_portName, what));
     });
 }
 
@@ -80,10 +83,12 @@ void SerialLink::attempt() {
     ++m_failedAttempts;
     const QString reason = m_port->errorString();
     if (m_callbacks.onLost)
-        m_callbacks.onLost(m_disconnected.isEmpty()
-                               ? QStringLiteral("cannot open %1 for the %2: %3").arg(m_portName, m_what, reason)
-                               : QStringLiteral("%1; reopening (%2)").arg(m_disconnected, reason),
-                           false);
+        m_callbacks.onLost(
+            m_disconnected.isEmpty()
+                ? QCoreApplication::translate("SerialLink", "cannot open %1 for the %2: %3")
+                      .arg(m_portName, m_what, reason)
+                : QCoreApplication::translate("SerialLink", "%1; reopening (%2)").arg(m_disconnected, reason),
+            false);
     scheduleRetry();
 }
 

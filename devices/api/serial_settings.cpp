@@ -1,5 +1,6 @@
 #include "devices/api/serial_settings.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QSerialPort>
 #include <QSerialPortInfo>
@@ -14,24 +15,26 @@ const QList<qint64>& standardBaudRates() {
 SettingsSchema serialFields(qint64 defaultBaud, int defaultDataBits, const QString& defaultParity) {
     SettingsSchema fields;
     fields << SettingField::serialPort(
-        QStringLiteral("port"), QStringLiteral("Serial port"), QString(),
-        QStringLiteral("The port the cable is plugged into, e.g. /dev/ttyUSB0 or COM3."));
+        QStringLiteral("port"), QCoreApplication::translate("DeviceSettings", "Serial port"), QString(),
+        QCoreApplication::translate("DeviceSettings",
+                                    "The port the cable is plugged into, e.g. /dev/ttyUSB0 or COM3."));
     SettingField baud =
-        SettingField::integer(QStringLiteral("baud"), QStringLiteral("Baud rate"), defaultBaud, 1200, 115200,
-                              QStringLiteral("bit/s"), QStringLiteral("Must match the instrument's setting."));
+        SettingField::integer(QStringLiteral("baud"), QCoreApplication::translate("DeviceSettings", "Baud rate"),
+                              defaultBaud, 1200, 115200, QCoreApplication::translate("DeviceSettings", "bit/s"),
+                              QCoreApplication::translate("DeviceSettings", "Must match the instrument's setting."));
     baud.allowedValues = standardBaudRates();
     fields << baud;
     fields << SettingField::choice(
-        QStringLiteral("dataBits"), QStringLiteral("Data bits"),
+        QStringLiteral("dataBits"), QCoreApplication::translate("DeviceSettings", "Data bits"),
         {{QStringLiteral("7"), QStringLiteral("7")}, {QStringLiteral("8"), QStringLiteral("8")}},
         QString::number(defaultDataBits));
-    fields << SettingField::choice(QStringLiteral("parity"), QStringLiteral("Parity"),
-                                   {{QStringLiteral("none"), QStringLiteral("None")},
-                                    {QStringLiteral("even"), QStringLiteral("Even")},
-                                    {QStringLiteral("odd"), QStringLiteral("Odd")}},
+    fields << SettingField::choice(QStringLiteral("parity"), QCoreApplication::translate("DeviceSettings", "Parity"),
+                                   {{QStringLiteral("none"), QCoreApplication::translate("DeviceSettings", "None")},
+                                    {QStringLiteral("even"), QCoreApplication::translate("DeviceSettings", "Even")},
+                                    {QStringLiteral("odd"), QCoreApplication::translate("DeviceSettings", "Odd")}},
                                    defaultParity);
     fields << SettingField::choice(
-        QStringLiteral("stopBits"), QStringLiteral("Stop bits"),
+        QStringLiteral("stopBits"), QCoreApplication::translate("DeviceSettings", "Stop bits"),
         {{QStringLiteral("1"), QStringLiteral("1")}, {QStringLiteral("2"), QStringLiteral("2")}}, QStringLiteral("1"));
     return fields;
 }

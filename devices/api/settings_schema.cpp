@@ -1,5 +1,6 @@
 #include "devices/api/settings_schema.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <cmath>
@@ -107,7 +108,8 @@ QString formatNumber(double v) {
 }
 
 QString rangeText(const SettingField& field) {
-    QString text = QStringLiteral("%1 to %2").arg(formatNumber(field.minimum), formatNumber(field.maximum));
+    QString text = QCoreApplication::translate("DeviceSettings", "%1 to %2")
+                       .arg(formatNumber(field.minimum), formatNumber(field.maximum));
     if (!field.unit.isEmpty()) text += QLatin1Char(' ') + field.unit;
     return text;
 }
@@ -127,29 +129,36 @@ QString validateField(const SettingField& field, const QVariant& value, Validati
         case SettingField::Type::Bool:
             if (value.typeId() == QMetaType::Bool || text == QLatin1String("true") || text == QLatin1String("false"))
                 return {};
-            return QStringLiteral("%1: '%2' is not on or off").arg(name, text);
+            return QCoreApplication::translate("DeviceSettings", "%1: '%2' is not on or off").arg(name, text);
         case SettingField::Type::Integer: {
             bool ok = false;
             const qint64 v = text.toLongLong(&ok);
-            if (text.isEmpty()) return QStringLiteral("%1: a whole number is required").arg(name);
-            if (!ok) return QStringLiteral("%1: '%2' is not a whole number").arg(name, text);
+            if (text.isEmpty())
+                return QCoreApplication::translate("DeviceSettings", "%1: a whole number is required").arg(name);
+            if (!ok)
+                return QCoreApplication::translate("DeviceSettings", "%1: '%2' is not a whole number").arg(name, text);
             if (!field.allowedValues.isEmpty() && !field.allowedValues.contains(v)) {
                 QStringList allowed;
                 for (qint64 a : field.allowedValues)
                     allowed << QString::number(a);
-                return QStringLiteral("%1: %2 is not one of %3").arg(name, text, allowed.join(QStringLiteral(", ")));
+                return QCoreApplication::translate("DeviceSettings", "%1: %2 is not one of %3")
+                    .arg(name, text, allowed.join(QStringLiteral(", ")));
             }
             if (hasRange(field) && (static_cast<double>(v) < field.minimum || static_cast<double>(v) > field.maximum))
-                return QStringLiteral("%1: %2 is outside %3").arg(name, text, rangeText(field));
+                return QCoreApplication::translate("DeviceSettings", "%1: %2 is outside %3")
+                    .arg(name, text, rangeText(field));
             return {};
         }
         case SettingField::Type::Number: {
             bool ok = false;
             const double v = text.toDouble(&ok);
-            if (text.isEmpty()) return QStringLiteral("%1: a number is required").arg(name);
-            if (!ok || !std::isfinite(v)) return QStringLiteral("%1: '%2' is not a number").arg(name, text);
+            if (text.isEmpty())
+                return QCoreApplication::translate("DeviceSettings", "%1: a number is required").arg(name);
+            if (!ok || !std::isfinite(v))
+                return QCoreApplication::translate("DeviceSettings", "%1: '%2' is not a number").arg(name, text);
             if (hasRange(field) && (v < field.minimum || v > field.maximum))
-                return QStringLiteral("%1: %2 is outside %3").arg(name, text, rangeText(field));
+                return QCoreApplication::translate("DeviceSettings", "%1: %2 is outside %3")
+                    .arg(name, text, rangeText(field));
             return {};
         }
         case SettingField::Type::Choice: {
@@ -158,21 +167,29 @@ QString validateField(const SettingField& field, const QVariant& value, Validati
                 if (c.value == text) return {};
                 labels << c.label;
             }
-            return QStringLiteral("%1: '%2' is not one of %3").arg(name, text, labels.join(QStringLiteral(", ")));
+            return QCoreApplication::translate("DeviceSettings", "%1: '%2' is not one of %3")
+                .arg(name, text, labels.join(QStringLiteral(", ")));
         }
         case SettingField::Type::SerialPort:
             if (text.isEmpty())
-                return QStringLiteral("%1: choose the serial port the device is connected to").arg(name);
+                return QCoreApplication::translate("DeviceSettings",
+                                                   "%1: choose the serial port the device is connected to")
+                    .arg(name);
             if (depth == Validation::Full && !serialPortExists(text))
-                return QStringLiteral("%1: %2 does not exist on this computer (is the cable plugged in?)")
+                return QCoreApplication::translate("DeviceSettings",
+                                                   "%1: %2 does not exist on this computer (is the cable plugged in?)")
                     .arg(name, text);
             return {};
         case SettingField::Type::Folder: {
-            if (text.isEmpty()) return QStringLiteral("%1: choose a folder").arg(name);
+            if (text.isEmpty()) return QCoreApplication::translate("DeviceSettings", "%1: choose a folder").arg(name);
             if (depth == Validation::Structure) return {};
             const QFileInfo info(text);
-            if (!info.isDir()) return QStringLiteral("%1: the folder %2 does not exist").arg(name, text);
-            if (!info.isWritable()) return QStringLiteral("%1: the folder %2 is not writable").arg(name, text);
+            if (!info.isDir())
+                return QCoreApplication::translate("DeviceSettings", "%1: the folder %2 does not exist")
+                    .arg(name, text);
+            if (!info.isWritable())
+                return QCoreApplication::translate("DeviceSettings", "%1: the folder %2 is not writable")
+                    .arg(name, text);
             return {};
         }
     }

@@ -1,5 +1,6 @@
 #include "devices/cnc_output/gcode_file_output.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 #include <QSaveFile>
@@ -26,14 +27,17 @@ GCodeFileOutput::GCodeFileOutput(const QVariantMap& settings, const DeviceContex
 void GCodeFileOutput::open() {
     const QFileInfo folder(m_folder);
     if (!folder.isDir()) {
-        setState(core::DeviceState::Error, QStringLiteral("the folder %1 does not exist").arg(m_folder));
+        setState(core::DeviceState::Error,
+                 QCoreApplication::translate("GCodeOutput", "the folder %1 does not exist").arg(m_folder));
         return;
     }
     if (!folder.isWritable()) {
-        setState(core::DeviceState::Error, QStringLiteral("the folder %1 is not writable").arg(m_folder));
+        setState(core::DeviceState::Error,
+                 QCoreApplication::translate("GCodeOutput", "the folder %1 is not writable").arg(m_folder));
         return;
     }
-    setState(core::DeviceState::Ready, QStringLiteral("G-code files go to %1").arg(m_folder));
+    setState(core::DeviceState::Ready,
+             QCoreApplication::translate("GCodeOutput", "G-code files go to %1").arg(m_folder));
 }
 
 void GCodeFileOutput::close() {
@@ -53,7 +57,9 @@ core::OutputResult GCodeFileOutput::sendPartCorrection(const core::PartCorrectio
     try {
         program = writeCorrectionGCode(correction, m_job);
     } catch (const std::invalid_argument& e) {
-        return refuse(QStringLiteral("part %1: %2").arg(correction.partNumber).arg(QString::fromStdString(e.what())));
+        return refuse(QCoreApplication::translate("GCodeOutput", "part %1: %2")
+                          .arg(correction.partNumber)
+                          .arg(QString::fromStdString(e.what())));
     }
     QString name = m_fileName;
     name.replace(QStringLiteral("{part}"), QString::number(correction.partNumber));
@@ -62,24 +68,29 @@ core::OutputResult GCodeFileOutput::sendPartCorrection(const core::PartCorrectio
     if (!file.open(QIODevice::WriteOnly | QIODevice::Text) ||
         file.write(program.data(), static_cast<qint64>(program.size())) != static_cast<qint64>(program.size()) ||
         !file.commit()) {
-        const QString message = QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        const QString message =
+            QCoreApplication::translate("GCodeOutput", "cannot write %1: %2").arg(path, file.errorString());
         setState(core::DeviceState::Error, message);
         return refuse(message);
     }
     ++m_written;
     m_lastFile = path;
-    setLiveValue(QStringLiteral("part %1: %2").arg(correction.partNumber).arg(QFileInfo(path).fileName()));
+    setLiveValue(QCoreApplication::translate("GCodeOutput", "part %1: %2")
+                     .arg(correction.partNumber)
+                     .arg(QFileInfo(path).fileName()));
     return {true, {}};
 }
 
 core::OutputResult GCodeFileOutput::sendDynamicOffset(double) {
-    return refuse(QStringLiteral("a G-code file cannot apply a dynamic X offset; use a Modbus correction output"));
+    return refuse(QCoreApplication::translate(
+        "GCodeOutput", "a G-code file cannot apply a dynamic X offset; use a Modbus correction output"));
 }
 
 QList<DeviceStatistic> GCodeFileOutput::statistics() const {
-    return {{QStringLiteral("Files written"), QString::number(m_written)},
-            {QStringLiteral("Refused"), QString::number(m_refused)},
-            {QStringLiteral("Last file"), m_lastFile.isEmpty() ? QStringLiteral("none") : m_lastFile}};
+    return {{QCoreApplication::translate("GCodeOutput", "Files written"), QString::number(m_written)},
+            {QCoreApplication::translate("GCodeOutput", "Refused"), QString::number(m_refused)},
+            {QCoreApplication::translate("GCodeOutput", "Last file"),
+             m_lastFile.isEmpty() ? QCoreApplication::translate("GCodeOutput", "none") : m_lastFile}};
 }
 
 }  // namespace tt::devices

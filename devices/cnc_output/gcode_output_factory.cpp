@@ -1,5 +1,6 @@
 #include "devices/cnc_output/gcode_output_factory.h"
 
+#include <QCoreApplication>
 #include <QDir>
 
 #include "devices/cnc_output/gcode_file_output.h"
@@ -10,36 +11,48 @@ SettingsSchema GCodeOutputFactory::settingsSchema(DeviceKind kind) const {
     if (kind != DeviceKind::CorrectionOutput) return {};
     const GCodeJob d;
     return {
-        SettingField::folder(QStringLiteral("folder"), QStringLiteral("Folder"), QDir::homePath(),
-                             QStringLiteral("Where the CNC picks up its programs (network share, DNC folder).")),
-        SettingField::text(QStringLiteral("fileName"), QStringLiteral("File name"), QStringLiteral("part-{part}.nc"),
-                           QStringLiteral("{part} becomes the part number.")),
-        SettingField::number(QStringLiteral("nominalDiameterMm"), QStringLiteral("Nominal diameter"),
-                             d.nominalDiameterMm, 0.5, 2000.0, QStringLiteral("mm")),
-        SettingField::number(QStringLiteral("feedMmPerRev"), QStringLiteral("Finishing feed"), d.feedMmPerRev, 0.01,
-                             5.0, QStringLiteral("mm/rev")),
-        SettingField::integer(QStringLiteral("spindleRpm"), QStringLiteral("Spindle speed"), d.spindleRpm, 0, 10000,
-                              QStringLiteral("rpm"), QStringLiteral("0 leaves the spindle to the main program.")),
-        SettingField::choice(QStringLiteral("xMode"), QStringLiteral("X words"),
-                             {{QStringLiteral("diameter"), QStringLiteral("Diameters (diameter mode)")},
-                              {QStringLiteral("radius"), QStringLiteral("Radii (radius mode)")}},
-                             QStringLiteral("diameter")),
-        SettingField::boolean(QStringLiteral("emitModeCode"), QStringLiteral("Write G7/G8"), d.emitModeCode,
-                              QStringLiteral("For controls that select the X mode by G-code (LinuxCNC).")),
-        SettingField::number(QStringLiteral("zOriginMm"), QStringLiteral("Machine Z of the part's left end"),
-                             d.zOriginMm, -5000.0, 5000.0, QStringLiteral("mm")),
-        SettingField::choice(QStringLiteral("zDirection"), QStringLiteral("Z direction along the part"),
-                             {{QStringLiteral("-1"), QStringLiteral("Towards the chuck is -Z")},
-                              {QStringLiteral("+1"), QStringLiteral("Towards the chuck is +Z")}},
-                             QStringLiteral("-1")),
-        SettingField::number(QStringLiteral("clearanceMm"), QStringLiteral("Clearance"), d.clearanceMm, 0.1, 100.0,
-                             QStringLiteral("mm")),
-        SettingField::integer(QStringLiteral("toolNumber"), QStringLiteral("Tool"), d.toolNumber, 1, 99),
-        SettingField::integer(QStringLiteral("programNumber"), QStringLiteral("Program number"), d.programNumber, 1,
-                              9999),
-        SettingField::number(QStringLiteral("maxCorrectionMm"), QStringLiteral("Correction limit"), d.maxCorrectionMm,
-                             0.001, 5.0, QStringLiteral("mm"), 3,
-                             QStringLiteral("A path with a larger correction is refused, never written.")),
+        SettingField::folder(QStringLiteral("folder"), QCoreApplication::translate("GCodeOutput", "Folder"),
+                             QDir::homePath(),
+                             QCoreApplication::translate(
+                                 "GCodeOutput", "Where the CNC picks up its programs (network share, DNC folder).")),
+        SettingField::text(QStringLiteral("fileName"), QCoreApplication::translate("GCodeOutput", "File name"),
+                           QStringLiteral("part-{part}.nc"),
+                           QCoreApplication::translate("GCodeOutput", "{part} becomes the part number.")),
+        SettingField::number(QStringLiteral("nominalDiameterMm"),
+                             QCoreApplication::translate("GCodeOutput", "Nominal diameter"), d.nominalDiameterMm, 0.5,
+                             2000.0, QCoreApplication::translate("GCodeOutput", "mm")),
+        SettingField::number(QStringLiteral("feedMmPerRev"),
+                             QCoreApplication::translate("GCodeOutput", "Finishing feed"), d.feedMmPerRev, 0.01, 5.0,
+                             QCoreApplication::translate("GCodeOutput", "mm/rev")),
+        SettingField::integer(QStringLiteral("spindleRpm"), QCoreApplication::translate("GCodeOutput", "Spindle speed"),
+                              d.spindleRpm, 0, 10000, QCoreApplication::translate("GCodeOutput", "rpm"),
+                              QCoreApplication::translate("GCodeOutput", "0 leaves the spindle to the main program.")),
+        SettingField::choice(
+            QStringLiteral("xMode"), QCoreApplication::translate("GCodeOutput", "X words"),
+            {{QStringLiteral("diameter"), QCoreApplication::translate("GCodeOutput", "Diameters (diameter mode)")},
+             {QStringLiteral("radius"), QCoreApplication::translate("GCodeOutput", "Radii (radius mode)")}},
+            QStringLiteral("diameter")),
+        SettingField::boolean(
+            QStringLiteral("emitModeCode"), QCoreApplication::translate("GCodeOutput", "Write G7/G8"), d.emitModeCode,
+            QCoreApplication::translate("GCodeOutput", "For controls that select the X mode by G-code (LinuxCNC).")),
+        SettingField::number(QStringLiteral("zOriginMm"),
+                             QCoreApplication::translate("GCodeOutput", "Machine Z of the part's left end"),
+                             d.zOriginMm, -5000.0, 5000.0, QCoreApplication::translate("GCodeOutput", "mm")),
+        SettingField::choice(
+            QStringLiteral("zDirection"), QCoreApplication::translate("GCodeOutput", "Z direction along the part"),
+            {{QStringLiteral("-1"), QCoreApplication::translate("GCodeOutput", "Towards the chuck is -Z")},
+             {QStringLiteral("+1"), QCoreApplication::translate("GCodeOutput", "Towards the chuck is +Z")}},
+            QStringLiteral("-1")),
+        SettingField::number(QStringLiteral("clearanceMm"), QCoreApplication::translate("GCodeOutput", "Clearance"),
+                             d.clearanceMm, 0.1, 100.0, QCoreApplication::translate("GCodeOutput", "mm")),
+        SettingField::integer(QStringLiteral("toolNumber"), QCoreApplication::translate("GCodeOutput", "Tool"),
+                              d.toolNumber, 1, 99),
+        SettingField::integer(QStringLiteral("programNumber"),
+                              QCoreApplication::translate("GCodeOutput", "Program number"), d.programNumber, 1, 9999),
+        SettingField::number(
+            QStringLiteral("maxCorrectionMm"), QCoreApplication::translate("GCodeOutput", "Correction limit"),
+            d.maxCorrectionMm, 0.001, 5.0, QCoreApplication::translate("GCodeOutput", "mm"), 3,
+            QCoreApplication::translate("GCodeOutput", "A path with a larger correction is refused, never written.")),
     };
 }
 

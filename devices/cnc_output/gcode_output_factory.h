@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QCoreApplication>
+
 #include "devices/api/device_plugin.h"
 
 namespace tt::devices {
@@ -9,7 +11,7 @@ namespace tt::devices {
 class GCodeOutputFactory : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("cnc-gcode"); }
-    QString displayName() const override { return QStringLiteral("G-code file"); }
+    QString displayName() const override { return QCoreApplication::translate("GCodeOutput", "G-code file"); }
     QList<DeviceKind> kinds() const override { return {DeviceKind::CorrectionOutput}; }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;

@@ -1,5 +1,7 @@
 #include "devices/gauge_serial/gauge_serial_factory.h"
 
+#include <QCoreApplication>
+
 #include "devices/api/gauge_settings.h"
 #include "devices/api/serial_settings.h"
 #include "devices/gauge_serial/serial_gauge_device.h"
@@ -11,16 +13,21 @@ SettingsSchema GaugeSerialFactory::settingsSchema(DeviceKind kind) const {
     if (kind != DeviceKind::Gauge) return {};
     SettingsSchema s = serialFields(9600);
     s << gaugeFormatFields();
-    s << SettingField::choice(QStringLiteral("mode"), QStringLiteral("Readings"),
-                              {{QStringLiteral("push"), QStringLiteral("Sent with the DATA button")},
-                               {QStringLiteral("polled"), QStringLiteral("Asked for by TrueTurn")}},
-                              QStringLiteral("push"));
-    s << SettingField::text(QStringLiteral("request"), QStringLiteral("Request string"), QStringLiteral("\\r"),
-                            QStringLiteral("Sent to ask for a reading, as the interface's manual gives it; "
-                                           "escapes \\r \\n \\xNN."))
+    s << SettingField::choice(
+        QStringLiteral("mode"), QCoreApplication::translate("SerialGauge", "Readings"),
+        {{QStringLiteral("push"), QCoreApplication::translate("SerialGauge", "Sent with the DATA button")},
+         {QStringLiteral("polled"), QCoreApplication::translate("SerialGauge", "Asked for by TrueTurn")}},
+        QStringLiteral("push"));
+    s << SettingField::text(
+             QStringLiteral("request"), QCoreApplication::translate("SerialGauge", "Request string"),
+             QStringLiteral("\\r"),
+             QCoreApplication::translate("SerialGauge",
+                                         "Sent to ask for a reading, as the interface's manual gives it; "
+                                         "escapes \\r \\n \\xNN."))
              .visibleWhen(QStringLiteral("mode"), {QStringLiteral("polled")});
-    s << SettingField::integer(QStringLiteral("replyTimeoutMs"), QStringLiteral("Reply timeout"), 1000, 50, 10000,
-                               QStringLiteral("ms"))
+    s << SettingField::integer(QStringLiteral("replyTimeoutMs"),
+                               QCoreApplication::translate("SerialGauge", "Reply timeout"), 1000, 50, 10000,
+                               QCoreApplication::translate("SerialGauge", "ms"))
              .visibleWhen(QStringLiteral("mode"), {QStringLiteral("polled")});
     return s;
 }
@@ -32,7 +39,8 @@ QList<SettingIssue> GaugeSerialFactory::validate(DeviceKind kind, const QVariant
         const auto request = unescapeRequest(values.value(QStringLiteral("request")).toString().toStdString());
         if (!request || request->empty())
             issues.append({QStringLiteral("request"),
-                           QStringLiteral("Request string: '%1' is empty or has a bad escape (use \\r, \\n, \\xNN)")
+                           QCoreApplication::translate(
+                               "SerialGauge", "Request string: '%1' is empty or has a bad escape (use \\r, \\n, \\xNN)")
                                .arg(values.value(QStringLiteral("request")).toString())});
     }
     return issues;

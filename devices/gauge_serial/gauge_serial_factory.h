@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QCoreApplication>
+
 #include "devices/api/device_plugin.h"
 
 namespace tt::devices {
@@ -9,7 +11,7 @@ namespace tt::devices {
 class GaugeSerialFactory : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("gauge-serial"); }
-    QString displayName() const override { return QStringLiteral("Serial data cable"); }
+    QString displayName() const override { return QCoreApplication::translate("SerialGauge", "Serial data cable"); }
     QList<DeviceKind> kinds() const override { return {DeviceKind::Gauge}; }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     QList<SettingIssue> validate(DeviceKind kind, const QVariantMap& settings, Validation depth) const override;

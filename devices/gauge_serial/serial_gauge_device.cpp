@@ -1,5 +1,7 @@
 #include "devices/gauge_serial/serial_gauge_device.h"
 
+#include <QCoreApplication>
+
 #include "devices/api/gauge_settings.h"
 #include "devices/parsers/request_string.h"
 
@@ -17,7 +19,7 @@ SerialGaugeDevice::SerialGaugeDevice(const QVariantMap& settings, const DeviceCo
       m_replyTimeoutMs(settings.value(QStringLiteral("replyTimeoutMs"), 1000).toInt()),
       m_decoder(gaugeFormat(settings), instrumentUnit(settings), jobUnit(settings)) {
     m_link = std::make_unique<SerialLink>(
-        settings, QStringLiteral("gauge"),
+        settings, QCoreApplication::translate("SerialGauge", "gauge"),
         SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
                               [this](const QString& reason, bool disconnected) { lost(reason, disconnected); }});
     m_replyTimer.setSingleShot(true);
@@ -29,12 +31,14 @@ SerialGaugeDevice::~SerialGaugeDevice() {
 }
 
 QString SerialGaugeDevice::readyMessage() const {
-    return m_polled ? QStringLiteral("%1 open; readings on request").arg(m_link->portName())
-                    : QStringLiteral("%1 open; press DATA on the micrometer").arg(m_link->portName());
+    return m_polled ? QCoreApplication::translate("SerialGauge", "%1 open; readings on request").arg(m_link->portName())
+                    : QCoreApplication::translate("SerialGauge", "%1 open; press DATA on the micrometer")
+                          .arg(m_link->portName());
 }
 
 void SerialGaugeDevice::open() {
-    setState(core::DeviceState::Connecting, QStringLiteral("opening %1").arg(m_link->portName()));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("SerialGauge", "opening %1").arg(m_link->portName()));
     m_link->open();
 }
 
@@ -77,9 +81,10 @@ void SerialGaugeDevice::requestReading() {
 
 void SerialGaugeDevice::timedOut() {
     ++m_timeouts;
-    setState(core::DeviceState::Error, QStringLiteral("no answer from the gauge on %1 for %2 s")
-                                           .arg(m_link->portName())
-                                           .arg(m_replyTimeoutMs / 1000.0, 0, 'f', 1));
+    setState(core::DeviceState::Error,
+             QCoreApplication::translate("SerialGauge", "no answer from the gauge on %1 for %2 s")
+                 .arg(m_link->portName())
+                 .arg(m_replyTimeoutMs / 1000.0, 0, 'f', 1));
 }
 
 void SerialGaugeDevice::bytesArrived(const QByteArray& bytes) {
@@ -95,7 +100,8 @@ void SerialGaugeDevice::bytesArrived(const QByteArray& bytes) {
         m_readings.push_back({*d.diameterMm, now()});
         setLiveValue(QStringLiteral("%1 %2")
                          .arg(d.value, 0, 'f', d.decimals)
-                         .arg(QString::fromLatin1(unitSymbol(d.unit).data())));
+                         .arg(d.unit == LengthUnit::Inch ? QCoreApplication::translate("SerialGauge", "in")
+                                                         : QCoreApplication::translate("SerialGauge", "mm")));
     }
 }
 
@@ -107,11 +113,12 @@ std::optional<core::GaugeReading> SerialGaugeDevice::takeReading() {
 }
 
 QList<DeviceStatistic> SerialGaugeDevice::statistics() const {
-    return {{QStringLiteral("Readings accepted"), QString::number(m_decoder.accepted())},
-            {QStringLiteral("Malformed frames"), QString::number(m_decoder.malformed())},
-            {QStringLiteral("Readings refused"), QString::number(m_decoder.refused())},
-            {QStringLiteral("Bytes discarded"), QString::number(m_decoder.discardedBytes())},
-            {QStringLiteral("Requests unanswered"), QString::number(m_timeouts)}};
+    return {
+        {QCoreApplication::translate("SerialGauge", "Readings accepted"), QString::number(m_decoder.accepted())},
+        {QCoreApplication::translate("SerialGauge", "Malformed frames"), QString::number(m_decoder.malformed())},
+        {QCoreApplication::translate("SerialGauge", "Readings refused"), QString::number(m_decoder.refused())},
+        {QCoreApplication::translate("SerialGauge", "Bytes discarded"), QString::number(m_decoder.discardedBytes())},
+        {QCoreApplication::translate("SerialGauge", "Requests unanswered"), QString::number(m_timeouts)}};
 }
 
 }  // namespace tt::devices

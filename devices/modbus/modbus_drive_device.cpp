@@ -1,5 +1,7 @@
 #include "devices/modbus/modbus_drive_device.h"
 
+#include <QCoreApplication>
+
 #include "devices/modbus/modbus_settings.h"
 #include "devices/parsers/drive_units.h"
 
@@ -39,7 +41,8 @@ ModbusDriveDevice::~ModbusDriveDevice() {
 }
 
 void ModbusDriveDevice::open() {
-    setState(core::DeviceState::Connecting, QStringLiteral("connecting to %1").arg(m_link->endpoint()));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("Modbus", "connecting to %1").arg(m_link->endpoint()));
     m_link->open();
 }
 
@@ -61,7 +64,8 @@ void ModbusDriveDevice::testConnection() {
 void ModbusDriveDevice::connected() {
     m_failedInARow = 0;
     m_polling = false;
-    setState(core::DeviceState::Connecting, QStringLiteral("connected to %1; reading").arg(m_link->endpoint()));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("Modbus", "connected to %1; reading").arg(m_link->endpoint()));
     m_timer.start();
     poll();
 }
@@ -88,7 +92,8 @@ void ModbusDriveDevice::poll() {
     m_pollException = false;
     for (std::size_t i = 0; i < m_blocks.size(); ++i) {
         if (!m_link->read(m_blocks[i], [this, i](const ModbusResult& r) { blockDone(i, r); })) {
-            m_pollError = QStringLiteral("cannot send the request to %1").arg(m_link->endpoint());
+            m_pollError =
+                QCoreApplication::translate("Modbus", "cannot send the request to %1").arg(m_link->endpoint());
             if (--m_pending == 0) finishPoll();
         }
     }
@@ -115,9 +120,11 @@ void ModbusDriveDevice::finishPoll() {
         reportError(m_pollError);
         // A Modbus exception is an answer: the map is wrong, not the line. Timeouts count up.
         if (m_pollException || ++m_failedInARow >= kFailedPollsForError) {
-            setState(core::DeviceState::Error,
-                     m_pollException ? m_pollError
-                                     : QStringLiteral("%1 (%2 polls in a row)").arg(m_pollError).arg(m_failedInARow));
+            setState(core::DeviceState::Error, m_pollException
+                                                   ? m_pollError
+                                                   : QCoreApplication::translate("Modbus", "%1 (%2 polls in a row)")
+                                                         .arg(m_pollError)
+                                                         .arg(m_failedInARow));
         }
         return;
     }
@@ -128,7 +135,8 @@ void ModbusDriveDevice::finishPoll() {
             if (q.spec.table != b.table || q.spec.address < b.start || q.spec.address >= b.start + b.count) continue;
             const auto r = modbus::extractValue(q.spec, b, m_words[i]);
             if (!r) {
-                reportError(QStringLiteral("sample refused: %1").arg(QString::fromStdString(r.error())));
+                reportError(
+                    QCoreApplication::translate("Modbus", "sample refused: %1").arg(QString::fromStdString(r.error())));
                 return std::nullopt;
             }
             return r.value() * q.toEngineUnit;
@@ -140,18 +148,18 @@ void ModbusDriveDevice::finishPoll() {
     const auto position = value(m_position);
     if (!current || !velocity || !position) {
         ++m_refused;
-        setState(core::DeviceState::Ready, QStringLiteral("polling %1").arg(m_link->endpoint()));
+        setState(core::DeviceState::Ready, QCoreApplication::translate("Modbus", "polling %1").arg(m_link->endpoint()));
         return;
     }
     const core::DriveSample s{(m_sentAtS + receivedAtS) / 2.0, *current, *velocity, *position};
     if (m_samples.size() == kMaxQueued) m_samples.pop_front();
     m_samples.push_back(s);
     ++m_samplesOk;
-    setLiveValue(QStringLiteral("%1 A, %2 mm/s, %3 mm")
+    setLiveValue(QCoreApplication::translate("Modbus", "%1 A, %2 mm/s, %3 mm")
                      .arg(s.currentA, 0, 'f', 2)
                      .arg(s.velocityMmPerS, 0, 'f', 3)
                      .arg(s.positionMm, 0, 'f', 4));
-    setState(core::DeviceState::Ready, QStringLiteral("polling %1").arg(m_link->endpoint()));
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Modbus", "polling %1").arg(m_link->endpoint()));
 }
 
 std::optional<core::DriveSample> ModbusDriveDevice::takeSample() {
@@ -162,12 +170,13 @@ std::optional<core::DriveSample> ModbusDriveDevice::takeSample() {
 }
 
 QList<DeviceStatistic> ModbusDriveDevice::statistics() const {
-    return {{QStringLiteral("Polls"), QString::number(m_polls)},
-            {QStringLiteral("Samples"), QString::number(m_samplesOk)},
-            {QStringLiteral("Timeouts"), QString::number(m_timeouts)},
-            {QStringLiteral("Modbus exceptions"), QString::number(m_exceptions)},
-            {QStringLiteral("Samples refused"), QString::number(m_refused)},
-            {QStringLiteral("Polls skipped (previous still running)"), QString::number(m_overruns)}};
+    return {
+        {QCoreApplication::translate("Modbus", "Polls"), QString::number(m_polls)},
+        {QCoreApplication::translate("Modbus", "Samples"), QString::number(m_samplesOk)},
+        {QCoreApplication::translate("Modbus", "Timeouts"), QString::number(m_timeouts)},
+        {QCoreApplication::translate("Modbus", "Modbus exceptions"), QString::number(m_exceptions)},
+        {QCoreApplication::translate("Modbus", "Samples refused"), QString::number(m_refused)},
+        {QCoreApplication::translate("Modbus", "Polls skipped (previous still running)"), QString::number(m_overruns)}};
 }
 
 }  // namespace tt::devices

@@ -1,5 +1,6 @@
 #include "devices/modbus/modbus_link.h"
 
+#include <QCoreApplication>
 #include <QModbusReply>
 #include <QModbusRtuSerialClient>
 #include <QModbusTcpClient>
@@ -64,12 +65,12 @@ ModbusLink::ModbusLink(QVariantMap settings, Callbacks callbacks)
             m_connectedOnce = true;
             if (m_callbacks.onConnected) m_callbacks.onConnected();
         } else if (state == QModbusDevice::UnconnectedState && m_wanted) {
-            const QString why = m_client->error() != QModbusDevice::NoError ? m_client->errorString()
-                                                                            : QStringLiteral("connection closed");
-            lost(QStringLiteral("%1 %2 (%3)")
-                     .arg(m_connectedOnce ? QStringLiteral("lost the connection to")
-                                          : QStringLiteral("cannot connect to"),
-                          m_endpoint, why));
+            const QString why = m_client->error() != QModbusDevice::NoError
+                                    ? m_client->errorString()
+                                    : QCoreApplication::translate("Modbus", "connection closed");
+            lost((m_connectedOnce ? QCoreApplication::translate("Modbus", "lost the connection to %1 (%2)")
+                                  : QCoreApplication::translate("Modbus", "cannot connect to %1 (%2)"))
+                     .arg(m_endpoint, why));
         }
     });
 }
@@ -101,7 +102,8 @@ bool ModbusLink::isConnected() const {
 void ModbusLink::attempt() {
     if (!m_wanted || m_client->state() != QModbusDevice::UnconnectedState) return;
     if (!m_client->connectDevice() && m_client->state() == QModbusDevice::UnconnectedState)
-        lost(QStringLiteral("cannot connect to %1 (%2)").arg(m_endpoint, m_client->errorString()));
+        lost(QCoreApplication::translate("Modbus", "cannot connect to %1 (%2)")
+                 .arg(m_endpoint, m_client->errorString()));
 }
 
 void ModbusLink::lost(const QString& reason) {
@@ -117,12 +119,10 @@ bool ModbusLink::read(const modbus::ReadBlock& block, Done done) {
                                                                    : QModbusDataUnit::HoldingRegisters;
     QModbusReply* reply = m_client->sendReadRequest(QModbusDataUnit(table, block.start, block.count), m_unitId);
     if (!reply) return false;
-    watch(reply,
-          QStringLiteral("reading %1 register%2 from %3")
-              .arg(block.count)
-              .arg(block.count == 1 ? QString() : QStringLiteral("s"))
-              .arg(block.start),
-          std::move(done));
+    watch(
+        reply,
+        QCoreApplication::translate("Modbus", "reading %n register(s) from %1", nullptr, block.count).arg(block.start),
+        std::move(done));
     return true;
 }
 
@@ -133,11 +133,8 @@ bool ModbusLink::write(std::uint16_t start, const std::vector<std::uint16_t>& wo
         unit.setValue(static_cast<qsizetype>(i), words[i]);
     QModbusReply* reply = m_client->sendWriteRequest(unit, m_unitId);
     if (!reply) return false;
-    watch(reply,
-          QStringLiteral("writing %1 register%2 at %3")
-              .arg(words.size())
-              .arg(words.size() == 1 ? QString() : QStringLiteral("s"))
-              .arg(start),
+    const int count = static_cast<int>(words.size());
+    watch(reply, QCoreApplication::translate("Modbus", "writing %n register(s) at %1", nullptr, count).arg(start),
           std::move(done));
     return true;
 }
@@ -157,23 +154,25 @@ void ModbusLink::watch(QModbusReply* reply, const QString& what, Done done) {
             case QModbusDevice::ProtocolError:
                 if (reply->rawResult().isException()) {
                     r.exceptionCode = static_cast<std::uint8_t>(reply->rawResult().exceptionCode());
-                    r.error = QStringLiteral("Modbus exception %1 (%2) %3 of %4")
+                    r.error = QCoreApplication::translate("Modbus", "Modbus exception %1 (%2) %3 of %4")
                                   .arg(*r.exceptionCode)
                                   .arg(QString::fromStdString(modbus::modbusExceptionName(*r.exceptionCode)), what,
                                        m_endpoint);
                 } else {
-                    r.error = QStringLiteral("invalid reply %1 of %2: %3").arg(what, m_endpoint, reply->errorString());
+                    r.error = QCoreApplication::translate("Modbus", "invalid reply %1 of %2: %3")
+                                  .arg(what, m_endpoint, reply->errorString());
                 }
                 break;
             case QModbusDevice::TimeoutError:
                 r.timeout = true;
-                r.error = QStringLiteral("no answer from %1 within %2 ms (%3)")
+                r.error = QCoreApplication::translate("Modbus", "no answer from %1 within %2 ms (%3)")
                               .arg(m_endpoint)
                               .arg(m_client->timeout())
                               .arg(what);
                 break;
             default:
-                r.error = QStringLiteral("%1 of %2 failed: %3").arg(what, m_endpoint, reply->errorString());
+                r.error = QCoreApplication::translate("Modbus", "%1 of %2 failed: %3")
+                              .arg(what, m_endpoint, reply->errorString());
                 break;
         }
         reply->deleteLater();

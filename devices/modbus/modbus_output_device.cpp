@@ -1,5 +1,6 @@
 #include "devices/modbus/modbus_output_device.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 #include "devices/modbus/modbus_settings.h"
@@ -31,19 +32,21 @@ ModbusOutputDevice::ModbusOutputDevice(const QVariantMap& settings, const Device
     m_order = spec.order;
     m_scaleMm = spec.scale;
     m_link = std::make_unique<ModbusLink>(
-        settings, ModbusLink::Callbacks{[this] {
-                                            setState(core::DeviceState::Ready,
-                                                     QStringLiteral("connected to %1").arg(m_link->endpoint()));
-                                            startNext();
-                                        },
-                                        [this](const QString& reason) {
-                                            m_current.reset();
-                                            setState(core::DeviceState::Error, reason);
-                                        }});
+        settings, ModbusLink::Callbacks{
+                      [this] {
+                          setState(core::DeviceState::Ready,
+                                   QCoreApplication::translate("Modbus", "connected to %1").arg(m_link->endpoint()));
+                          startNext();
+                      },
+                      [this](const QString& reason) {
+                          m_current.reset();
+                          setState(core::DeviceState::Error, reason);
+                      }});
 }
 
 void ModbusOutputDevice::open() {
-    setState(core::DeviceState::Connecting, QStringLiteral("connecting to %1").arg(m_link->endpoint()));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("Modbus", "connecting to %1").arg(m_link->endpoint()));
     m_link->open();
 }
 
@@ -66,8 +69,9 @@ void ModbusOutputDevice::testConnection() {
                                                   static_cast<std::size_t>(m_pointsTarget ? m_maxPoints : 1));
     m_link->read({modbus::RegisterTable::Holding, start, count}, [this](const ModbusResult& r) {
         if (r.ok)
-            setState(core::DeviceState::Ready,
-                     QStringLiteral("connected to %1; registers readable").arg(m_link->endpoint()));
+            setState(
+                core::DeviceState::Ready,
+                QCoreApplication::translate("Modbus", "connected to %1; registers readable").arg(m_link->endpoint()));
         else
             fail(r.error);
     });
@@ -81,18 +85,22 @@ core::OutputResult ModbusOutputDevice::refuse(const QString& message) {
 
 core::OutputResult ModbusOutputDevice::sendPartCorrection(const core::PartCorrection& correction) {
     if (!m_pointsTarget)
-        return refuse(QStringLiteral("this output is set up for the dynamic X offset, not per-point corrections"));
+        return refuse(QCoreApplication::translate(
+            "Modbus", "this output is set up for the dynamic X offset, not per-point corrections"));
     const auto& values = correction.pointCorrectionMm;
     if (values.empty() || static_cast<int>(values.size()) > m_maxPoints)
-        return refuse(QStringLiteral("part %1 has %2 corrections; this output takes 1 to %3")
+        return refuse(QCoreApplication::translate("Modbus", "part %1 has %2 corrections; this output takes 1 to %3")
                           .arg(correction.partNumber)
                           .arg(values.size())
                           .arg(m_maxPoints));
     Job job;
-    Step step{m_pointsAddress, {}, QStringLiteral("corrections of part %1").arg(correction.partNumber)};
+    Step step{m_pointsAddress,
+              {},
+              QCoreApplication::translate("Modbus", "corrections of part %1").arg(correction.partNumber)};
     for (const double v : values) {
         if (!std::isfinite(v) || std::fabs(v) > m_maxCorrectionMm)
-            return refuse(QStringLiteral("part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent")
+            return refuse(QCoreApplication::translate(
+                              "Modbus", "part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent")
                               .arg(correction.partNumber)
                               .arg(v, 0, 'f', 4)
                               .arg(m_maxCorrectionMm, 0, 'f', 3));
@@ -100,8 +108,9 @@ core::OutputResult ModbusOutputDevice::sendPartCorrection(const core::PartCorrec
             const auto words = modbus::encodeValue(v, m_type, m_order, m_scaleMm);
             step.words.insert(step.words.end(), words.begin(), words.end());
         } catch (const std::invalid_argument& e) {
-            return refuse(
-                QStringLiteral("part %1: %2").arg(correction.partNumber).arg(QString::fromStdString(e.what())));
+            return refuse(QCoreApplication::translate("Modbus", "part %1: %2")
+                              .arg(correction.partNumber)
+                              .arg(QString::fromStdString(e.what())));
         }
     }
     job.steps.push_back(step);
@@ -109,35 +118,38 @@ core::OutputResult ModbusOutputDevice::sendPartCorrection(const core::PartCorrec
         const auto part = static_cast<std::uint32_t>(correction.partNumber);
         job.steps.push_back({m_partAddress,
                              {static_cast<std::uint16_t>(part >> 16), static_cast<std::uint16_t>(part & 0xFFFF)},
-                             QStringLiteral("part number %1").arg(correction.partNumber)});
+                             QCoreApplication::translate("Modbus", "part number %1").arg(correction.partNumber)});
     }
-    job.done =
-        QStringLiteral("part %1: %2 corrections written and verified").arg(correction.partNumber).arg(values.size());
+    job.done = QCoreApplication::translate("Modbus", "part %1: %2 corrections written and verified")
+                   .arg(correction.partNumber)
+                   .arg(values.size());
     return accept(std::move(job), false);
 }
 
 core::OutputResult ModbusOutputDevice::sendDynamicOffset(double xOffsetMm) {
     if (m_pointsTarget)
-        return refuse(QStringLiteral("this output is set up for per-point corrections, not the dynamic X offset"));
+        return refuse(QCoreApplication::translate(
+            "Modbus", "this output is set up for per-point corrections, not the dynamic X offset"));
     if (!std::isfinite(xOffsetMm) || std::fabs(xOffsetMm) > m_maxCorrectionMm)
-        return refuse(QStringLiteral("X offset %1 mm is beyond the limit of %2 mm; nothing sent")
+        return refuse(QCoreApplication::translate("Modbus", "X offset %1 mm is beyond the limit of %2 mm; nothing sent")
                           .arg(xOffsetMm, 0, 'f', 4)
                           .arg(m_maxCorrectionMm, 0, 'f', 3));
     Job job;
     try {
         job.steps.push_back({m_offsetAddress, modbus::encodeValue(xOffsetMm, m_type, m_order, m_scaleMm),
-                             QStringLiteral("X offset %1 mm").arg(xOffsetMm, 0, 'f', 4)});
+                             QCoreApplication::translate("Modbus", "X offset %1 mm").arg(xOffsetMm, 0, 'f', 4)});
     } catch (const std::invalid_argument& e) {
         return refuse(QString::fromStdString(e.what()));
     }
-    job.done = QStringLiteral("X offset %1 mm written and verified").arg(xOffsetMm, 0, 'f', 4);
+    job.done = QCoreApplication::translate("Modbus", "X offset %1 mm written and verified").arg(xOffsetMm, 0, 'f', 4);
     return accept(std::move(job), true);
 }
 
 core::OutputResult ModbusOutputDevice::accept(Job job, bool isOffset) {
     if (state() != core::DeviceState::Ready && state() != core::DeviceState::Error)
-        return refuse(QStringLiteral("%1 is not connected").arg(m_link->endpoint()));
-    if (!m_link->isConnected()) return refuse(QStringLiteral("%1 is not connected").arg(m_link->endpoint()));
+        return refuse(QCoreApplication::translate("Modbus", "%1 is not connected").arg(m_link->endpoint()));
+    if (!m_link->isConnected())
+        return refuse(QCoreApplication::translate("Modbus", "%1 is not connected").arg(m_link->endpoint()));
     if (isOffset)
         m_pendingOffset = std::move(job);  // only the newest offset matters
     else
@@ -164,7 +176,7 @@ void ModbusOutputDevice::startNext() {
 void ModbusOutputDevice::runStep() {
     const Step& step = m_current->steps[m_step];
     if (!m_link->write(step.start, step.words, [this](const ModbusResult& r) { written(r); }))
-        fail(QStringLiteral("cannot send %1 to %2").arg(step.what, m_link->endpoint()));
+        fail(QCoreApplication::translate("Modbus", "cannot send %1 to %2").arg(step.what, m_link->endpoint()));
 }
 
 void ModbusOutputDevice::written(const ModbusResult& result) {
@@ -177,7 +189,7 @@ void ModbusOutputDevice::written(const ModbusResult& result) {
     const modbus::ReadBlock block{modbus::RegisterTable::Holding, step.start,
                                   static_cast<std::uint16_t>(step.words.size())};
     if (!m_link->read(block, [this](const ModbusResult& r) { readBack(r); }))
-        fail(QStringLiteral("cannot read back %1 from %2").arg(step.what, m_link->endpoint()));
+        fail(QCoreApplication::translate("Modbus", "cannot read back %1 from %2").arg(step.what, m_link->endpoint()));
 }
 
 void ModbusOutputDevice::readBack(const ModbusResult& result) {
@@ -188,7 +200,7 @@ void ModbusOutputDevice::readBack(const ModbusResult& result) {
     }
     const Step& step = m_current->steps[m_step];
     if (result.words != step.words) {
-        fail(QStringLiteral("read-back mismatch for %1 at register %2: wrote %3, read %4")
+        fail(QCoreApplication::translate("Modbus", "read-back mismatch for %1 at register %2: wrote %3, read %4")
                  .arg(step.what)
                  .arg(step.start)
                  .arg(wordsText(step.words), wordsText(result.words)));
@@ -200,7 +212,8 @@ void ModbusOutputDevice::readBack(const ModbusResult& result) {
     }
     ++m_verified;
     setLiveValue(m_current->done);
-    setState(core::DeviceState::Ready, QStringLiteral("connected to %1").arg(m_link->endpoint()));
+    setState(core::DeviceState::Ready,
+             QCoreApplication::translate("Modbus", "connected to %1").arg(m_link->endpoint()));
     m_current.reset();
     startNext();
 }
@@ -214,8 +227,8 @@ void ModbusOutputDevice::fail(const QString& message) {
 }
 
 QList<DeviceStatistic> ModbusOutputDevice::statistics() const {
-    return {{QStringLiteral("Writes verified"), QString::number(m_verified)},
-            {QStringLiteral("Refused or failed"), QString::number(m_failed)}};
+    return {{QCoreApplication::translate("Modbus", "Writes verified"), QString::number(m_verified)},
+            {QCoreApplication::translate("Modbus", "Refused or failed"), QString::number(m_failed)}};
 }
 
 }  // namespace tt::devices

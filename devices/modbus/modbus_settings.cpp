@@ -1,5 +1,7 @@
 #include "devices/modbus/modbus_settings.h"
 
+#include <QCoreApplication>
+
 #include "devices/api/serial_settings.h"
 
 namespace tt::devices {
@@ -8,22 +10,24 @@ using namespace modbus;
 
 SettingsSchema modbusConnectionFields() {
     SettingsSchema s;
-    s << SettingField::choice(QStringLiteral("transport"), QStringLiteral("Connection"),
-                              {{QStringLiteral("tcp"), QStringLiteral("Modbus TCP (Ethernet)")},
-                               {QStringLiteral("rtu"), QStringLiteral("Modbus RTU (serial)")}},
+    s << SettingField::choice(QStringLiteral("transport"), QCoreApplication::translate("Modbus", "Connection"),
+                              {{QStringLiteral("tcp"), QCoreApplication::translate("Modbus", "Modbus TCP (Ethernet)")},
+                               {QStringLiteral("rtu"), QCoreApplication::translate("Modbus", "Modbus RTU (serial)")}},
                               QStringLiteral("tcp"));
-    s << SettingField::text(QStringLiteral("host"), QStringLiteral("Host"), QStringLiteral("192.168.0.10"),
-                            QStringLiteral("IP address or name of the drive or PLC."))
+    s << SettingField::text(QStringLiteral("host"), QCoreApplication::translate("Modbus", "Host"),
+                            QStringLiteral("192.168.0.10"),
+                            QCoreApplication::translate("Modbus", "IP address or name of the drive or PLC."))
              .visibleWhen(QStringLiteral("transport"), {QStringLiteral("tcp")});
-    s << SettingField::integer(QStringLiteral("tcpPort"), QStringLiteral("TCP port"), 502, 1, 65535)
+    s << SettingField::integer(QStringLiteral("tcpPort"), QCoreApplication::translate("Modbus", "TCP port"), 502, 1,
+                               65535)
              .visibleWhen(QStringLiteral("transport"), {QStringLiteral("tcp")});
     for (SettingField f : serialFields(19200, 8, QStringLiteral("even")))
         s << f.visibleWhen(QStringLiteral("transport"), {QStringLiteral("rtu")});
-    s << SettingField::integer(QStringLiteral("unitId"), QStringLiteral("Unit id"), 1, 1, 247, {},
-                               QStringLiteral("The server address of the drive or PLC."));
-    s << SettingField::integer(QStringLiteral("timeoutMs"), QStringLiteral("Reply timeout"), 200, 10, 5000,
-                               QStringLiteral("ms"));
-    s << SettingField::integer(QStringLiteral("retries"), QStringLiteral("Retries"), 1, 0, 5);
+    s << SettingField::integer(QStringLiteral("unitId"), QCoreApplication::translate("Modbus", "Unit id"), 1, 1, 247,
+                               {}, QCoreApplication::translate("Modbus", "The server address of the drive or PLC."));
+    s << SettingField::integer(QStringLiteral("timeoutMs"), QCoreApplication::translate("Modbus", "Reply timeout"), 200,
+                               10, 5000, QCoreApplication::translate("Modbus", "ms"));
+    s << SettingField::integer(QStringLiteral("retries"), QCoreApplication::translate("Modbus", "Retries"), 1, 0, 5);
     return s;
 }
 
@@ -37,26 +41,32 @@ SettingsSchema registerFields(const QString& prefix, const QString& label, quint
         types.append({key, key});
     }
     SettingsSchema s;
-    s << SettingField::choice(prefix + QStringLiteral("Table"), label + QStringLiteral(": registers"),
-                              {{QStringLiteral("holding"), QStringLiteral("Holding (4x)")},
-                               {QStringLiteral("input"), QStringLiteral("Input (3x)")}},
+    s << SettingField::choice(prefix + QStringLiteral("Table"),
+                              QCoreApplication::translate("Modbus", "%1: registers").arg(label),
+                              {{QStringLiteral("holding"), QCoreApplication::translate("Modbus", "Holding (4x)")},
+                               {QStringLiteral("input"), QCoreApplication::translate("Modbus", "Input (3x)")}},
                               QStringLiteral("holding"));
-    s << SettingField::integer(prefix + QStringLiteral("Address"), label + QStringLiteral(": address"), defaultAddress,
-                               0, 65535, {}, QStringLiteral("Zero-based protocol address."));
-    s << SettingField::choice(prefix + QStringLiteral("Type"), label + QStringLiteral(": type"), types,
+    s << SettingField::integer(prefix + QStringLiteral("Address"),
+                               QCoreApplication::translate("Modbus", "%1: address").arg(label), defaultAddress, 0,
+                               65535, {}, QCoreApplication::translate("Modbus", "Zero-based protocol address."));
+    s << SettingField::choice(prefix + QStringLiteral("Type"),
+                              QCoreApplication::translate("Modbus", "%1: type").arg(label), types,
                               QString::fromLatin1(typeKey(defaultType).data()));
-    s << SettingField::choice(prefix + QStringLiteral("WordOrder"), label + QStringLiteral(": word order"),
-                              {{QStringLiteral("high-first"), QStringLiteral("High word first")},
-                               {QStringLiteral("low-first"), QStringLiteral("Low word first")}},
+    s << SettingField::choice(prefix + QStringLiteral("WordOrder"),
+                              QCoreApplication::translate("Modbus", "%1: word order").arg(label),
+                              {{QStringLiteral("high-first"), QCoreApplication::translate("Modbus", "High word first")},
+                               {QStringLiteral("low-first"), QCoreApplication::translate("Modbus", "Low word first")}},
                               QStringLiteral("high-first"));
-    s << SettingField::number(prefix + QStringLiteral("Scale"), label + QStringLiteral(": scale"), defaultScale, -1e6,
-                              1e6, QStringLiteral("per count"), 6,
-                              QStringLiteral("Value = register x scale (in the unit below)."));
+    s << SettingField::number(prefix + QStringLiteral("Scale"),
+                              QCoreApplication::translate("Modbus", "%1: scale").arg(label), defaultScale, -1e6, 1e6,
+                              QCoreApplication::translate("Modbus", "per count"), 6,
+                              QCoreApplication::translate("Modbus", "Value = register x scale (in the unit below)."));
     if (!units.isEmpty()) {
         QList<SettingChoice> choices;
         for (const QString& u : units)
             choices.append({u, u});
-        s << SettingField::choice(prefix + QStringLiteral("Unit"), label + QStringLiteral(": unit"), choices,
+        s << SettingField::choice(prefix + QStringLiteral("Unit"),
+                                  QCoreApplication::translate("Modbus", "%1: unit").arg(label), choices,
                                   defaultUnit.isEmpty() ? units.front() : defaultUnit);
     }
     return s;
@@ -77,7 +87,8 @@ RegisterSpec registerSpec(const QVariantMap& settings, const QString& prefix) {
 }
 
 QString modbusEndpoint(const QVariantMap& settings) {
-    const QString unit = QStringLiteral("unit %1").arg(settings.value(QStringLiteral("unitId"), 1).toInt());
+    const QString unit =
+        QCoreApplication::translate("Modbus", "unit %1").arg(settings.value(QStringLiteral("unitId"), 1).toInt());
     if (settings.value(QStringLiteral("transport")).toString() == QLatin1String("rtu"))
         return QStringLiteral("%1, %2").arg(settings.value(QStringLiteral("port")).toString(), unit);
     return QStringLiteral("%1:%2, %3")

@@ -1,5 +1,7 @@
 #include "devices/probe_mandrel/probe_mandrel_factory.h"
 
+#include <QCoreApplication>
+
 #include "devices/api/serial_settings.h"
 #include "devices/probe_mandrel/serial_probe_device.h"
 
@@ -8,13 +10,17 @@ namespace tt::devices {
 SettingsSchema ProbeMandrelFactory::settingsSchema(DeviceKind kind) const {
     if (kind != DeviceKind::Probe) return {};
     SettingsSchema s = serialFields(115200);
-    s << SettingField::integer(QStringLiteral("rateHz"), QStringLiteral("Sample rate"), 200, 1, 1000,
-                               QStringLiteral("Hz"),
-                               QStringLiteral("The PLC applies the correction every 10 to 100 ms (paper 001)."));
-    s << SettingField::integer(QStringLiteral("silenceTimeoutMs"), QStringLiteral("Silence timeout"), 500, 50, 10000,
-                               QStringLiteral("ms"), QStringLiteral("No data for this long: the probe is in error."));
-    s << SettingField::integer(QStringLiteral("replyTimeoutMs"), QStringLiteral("Command timeout"), 300, 20, 5000,
-                               QStringLiteral("ms"));
+    s << SettingField::integer(
+        QStringLiteral("rateHz"), QCoreApplication::translate("ProbeMandrel", "Sample rate"), 200, 1, 1000,
+        QCoreApplication::translate("ProbeMandrel", "Hz"),
+        QCoreApplication::translate("ProbeMandrel", "The PLC applies the correction every 10 to 100 ms (paper 001)."));
+    s << SettingField::integer(
+        QStringLiteral("silenceTimeoutMs"), QCoreApplication::translate("ProbeMandrel", "Silence timeout"), 500, 50,
+        10000, QCoreApplication::translate("ProbeMandrel", "ms"),
+        QCoreApplication::translate("ProbeMandrel", "No data for this long: the probe is in error."));
+    s << SettingField::integer(QStringLiteral("replyTimeoutMs"),
+                               QCoreApplication::translate("ProbeMandrel", "Command timeout"), 300, 20, 5000,
+                               QCoreApplication::translate("ProbeMandrel", "ms"));
     return s;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QCoreApplication>
+
 #include "devices/api/device_plugin.h"
 
 namespace tt::devices {
@@ -9,7 +11,7 @@ namespace tt::devices {
 class ProbeMandrelFactory : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("probe-mandrel"); }
-    QString displayName() const override { return QStringLiteral("Serial RS-232/RS-485"); }
+    QString displayName() const override { return QCoreApplication::translate("ProbeMandrel", "Serial RS-232/RS-485"); }
     QList<DeviceKind> kinds() const override { return {DeviceKind::Probe}; }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;

@@ -1,5 +1,7 @@
 #include "devices/probe_mandrel/serial_probe_device.h"
 
+#include <QCoreApplication>
+
 #include "devices/api/probe_status.h"
 
 namespace tt::devices {
@@ -22,7 +24,7 @@ probe::SessionConfig sessionConfig(const QVariantMap& settings) {
 SerialProbeDevice::SerialProbeDevice(const QVariantMap& settings, const DeviceContext& context)
     : DeviceBase(DeviceKind::Probe, context), m_session(sessionConfig(settings)) {
     m_link = std::make_unique<SerialLink>(
-        settings, QStringLiteral("probe mandrel"),
+        settings, QCoreApplication::translate("ProbeMandrel", "probe mandrel"),
         SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
                               [this](const QString& reason, bool disconnected) { lost(reason, disconnected); }});
     m_timer.setInterval(kTickMs);
@@ -35,7 +37,8 @@ SerialProbeDevice::~SerialProbeDevice() {
 }
 
 void SerialProbeDevice::open() {
-    setState(core::DeviceState::Connecting, QStringLiteral("opening %1").arg(m_link->portName()));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("ProbeMandrel", "opening %1").arg(m_link->portName()));
     m_link->open();
 }
 
@@ -94,7 +97,7 @@ void SerialProbeDevice::tick() {
         m_samples.push_back(s);
     }
     if (const auto& last = m_session.lastSample())
-        setLiveValue(QStringLiteral("%1 / %2 mm")
+        setLiveValue(QCoreApplication::translate("ProbeMandrel", "%1 / %2 mm")
                          .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
                          .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
     if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
@@ -106,16 +109,19 @@ void SerialProbeDevice::updateState() {
     if (!m_linkProblem.isEmpty()) return;
     switch (m_session.link()) {
         case probe::ProbeSession::Link::Streaming:
-            setState(core::DeviceState::Ready, QStringLiteral("streaming from %1").arg(m_link->portName()));
+            setState(core::DeviceState::Ready,
+                     QCoreApplication::translate("ProbeMandrel", "streaming from %1").arg(m_link->portName()));
             break;
         case probe::ProbeSession::Link::Handshake:
             setState(core::DeviceState::Connecting,
-                     QStringLiteral("starting the probe mandrel on %1").arg(m_link->portName()));
+                     QCoreApplication::translate("ProbeMandrel", "starting the probe mandrel on %1")
+                         .arg(m_link->portName()));
             break;
         case probe::ProbeSession::Link::Silent:
         case probe::ProbeSession::Link::Failed:
             setState(core::DeviceState::Error,
-                     QString::fromStdString(m_session.problem()) + QStringLiteral(" on %1").arg(m_link->portName()));
+                     QCoreApplication::translate("ProbeMandrel", "%1 on %2")
+                         .arg(QString::fromStdString(m_session.problem()), m_link->portName()));
             break;
         case probe::ProbeSession::Link::Idle:
             break;

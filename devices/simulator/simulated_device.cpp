@@ -1,5 +1,7 @@
 #include "devices/simulator/simulated_device.h"
 
+#include <QCoreApplication>
+
 namespace tt::devices {
 
 SimulatedDevice::SimulatedDevice(DeviceKind kind, const DeviceContext& context, int tickMs)
@@ -14,13 +16,23 @@ SimulatedDevice::~SimulatedDevice() {
 }
 
 QString SimulatedDevice::what() const {
-    return QStringLiteral("the simulated %1").arg(kindName(kind()).toLower());
+    switch (kind()) {
+        case DeviceKind::Gauge:
+            return QCoreApplication::translate("Simulator", "the simulated gauge micrometer");
+        case DeviceKind::Probe:
+            return QCoreApplication::translate("Simulator", "the simulated probe mandrel");
+        case DeviceKind::DriveCurrent:
+            return QCoreApplication::translate("Simulator", "the simulated drive-current readout");
+        case DeviceKind::CorrectionOutput:
+            return QCoreApplication::translate("Simulator", "the simulated CNC output");
+    }
+    return {};
 }
 
 void SimulatedDevice::open() {
     m_open = true;
     m_wasUnplugged = false;
-    setState(core::DeviceState::Connecting, QStringLiteral("connecting to %1").arg(what()));
+    setState(core::DeviceState::Connecting, QCoreApplication::translate("Simulator", "connecting to %1").arg(what()));
     m_timer.start();
     if (m_faults.disconnected) {
         heartbeat();
@@ -47,12 +59,14 @@ void SimulatedDevice::heartbeat() {
     if (!m_open) return;
     if (m_faults.disconnected) {
         m_wasUnplugged = true;
-        setState(core::DeviceState::Error, QStringLiteral("%1 is unplugged (fault switch)").arg(what()));
+        setState(core::DeviceState::Error,
+                 QCoreApplication::translate("Simulator", "%1 is unplugged (fault switch)").arg(what()));
         return;
     }
     if (m_wasUnplugged) {
         m_wasUnplugged = false;
-        setState(core::DeviceState::Connecting, QStringLiteral("reconnecting to %1").arg(what()));
+        setState(core::DeviceState::Connecting,
+                 QCoreApplication::translate("Simulator", "reconnecting to %1").arg(what()));
         connected();
     }
     tick();

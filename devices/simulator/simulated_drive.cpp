@@ -1,5 +1,6 @@
 #include "devices/simulator/simulated_drive.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 #include "devices/parsers/modbus_registers.h"
@@ -48,7 +49,7 @@ void SimulatedDrive::setDriveSource(std::function<core::DriveSample(double)> sou
 
 void SimulatedDrive::connected() {
     m_missedPolls = 0;
-    setState(core::DeviceState::Ready, QStringLiteral("polling the simulated drive"));
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
 }
 
 void SimulatedDrive::testConnection() {
@@ -61,7 +62,8 @@ void SimulatedDrive::tick() {
     if (faults().silent) {
         if (++m_missedPolls >= kMissedPollsForError)
             setState(core::DeviceState::Error,
-                     QStringLiteral("no answer from the simulated drive for %1 polls").arg(m_missedPolls));
+                     QCoreApplication::translate("Simulator", "no answer from the simulated drive for %1 polls")
+                         .arg(m_missedPolls));
         return;
     }
     m_missedPolls = 0;
@@ -81,22 +83,22 @@ void SimulatedDrive::tick() {
     const auto x = decodeValue(position, RegisterType::Int32, WordOrder::HighWordFirst, 0.0001);
     if (!i || !v || !x) {
         ++m_refused;
-        reportError(QStringLiteral("sample refused: %1")
+        reportError(QCoreApplication::translate("Simulator", "sample refused: %1")
                         .arg(QString::fromStdString(!i   ? i.error()
                                                     : !v ? "velocity: " + v.error()
                                                          : x.error())));
-        setState(core::DeviceState::Ready, QStringLiteral("polling the simulated drive"));
+        setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
         return;
     }
     core::DriveSample s{t, i.value(), v.value(), x.value()};
     m_last = truth;
     if (m_samples.size() == kMaxQueued) m_samples.pop_front();
     m_samples.push_back(s);
-    setLiveValue(QStringLiteral("%1 A, %2 mm/s, %3 mm")
+    setLiveValue(QCoreApplication::translate("Simulator", "%1 A, %2 mm/s, %3 mm")
                      .arg(s.currentA, 0, 'f', 2)
                      .arg(s.velocityMmPerS, 0, 'f', 3)
                      .arg(s.positionMm, 0, 'f', 4));
-    setState(core::DeviceState::Ready, QStringLiteral("polling the simulated drive"));
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
 }
 
 std::optional<core::DriveSample> SimulatedDrive::takeSample() {
@@ -107,8 +109,8 @@ std::optional<core::DriveSample> SimulatedDrive::takeSample() {
 }
 
 QList<DeviceStatistic> SimulatedDrive::statistics() const {
-    return {{QStringLiteral("Polls"), QString::number(m_polls)},
-            {QStringLiteral("Samples refused"), QString::number(m_refused)}};
+    return {{QCoreApplication::translate("Simulator", "Polls"), QString::number(m_polls)},
+            {QCoreApplication::translate("Simulator", "Samples refused"), QString::number(m_refused)}};
 }
 
 }  // namespace tt::devices

@@ -1,5 +1,7 @@
 #include "devices/simulator/simulated_gauge.h"
 
+#include <QCoreApplication>
+
 #include "devices/simulator/simulator_settings.h"
 
 namespace tt::devices {
@@ -25,7 +27,7 @@ void SimulatedGauge::setDiameterSource(std::function<double()> source) {
 void SimulatedGauge::connected() {
     m_decoder.reset();
     m_requestedAtS.reset();
-    setState(core::DeviceState::Ready, QStringLiteral("simulated gauge ready"));
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "simulated gauge ready"));
 }
 
 void SimulatedGauge::testConnection() {
@@ -51,9 +53,9 @@ void SimulatedGauge::requestReading() {
         }
         if (m_readings.size() == kMaxQueued) m_readings.pop_front();
         m_readings.push_back({*d.diameterMm, now()});
-        setLiveValue(QStringLiteral("%1 mm").arg(*d.diameterMm, 0, 'f', d.decimals));
+        setLiveValue(QCoreApplication::translate("Simulator", "%1 mm").arg(*d.diameterMm, 0, 'f', d.decimals));
     }
-    setState(core::DeviceState::Ready, QStringLiteral("simulated gauge ready"));
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "simulated gauge ready"));
 }
 
 std::optional<core::GaugeReading> SimulatedGauge::takeReading() {
@@ -67,14 +69,15 @@ void SimulatedGauge::tick() {
     if (state() == core::DeviceState::Connecting) connected();
     if (m_requestedAtS && now() - *m_requestedAtS > m_replyTimeoutS) {
         setState(core::DeviceState::Error,
-                 QStringLiteral("no answer from the simulated gauge for %1 s").arg(now() - *m_requestedAtS, 0, 'f', 1));
+                 QCoreApplication::translate("Simulator", "no answer from the simulated gauge for %1 s")
+                     .arg(now() - *m_requestedAtS, 0, 'f', 1));
     }
 }
 
 QList<DeviceStatistic> SimulatedGauge::statistics() const {
-    return {{QStringLiteral("Readings accepted"), QString::number(m_decoder.accepted())},
-            {QStringLiteral("Malformed frames"), QString::number(m_decoder.malformed())},
-            {QStringLiteral("Readings refused"), QString::number(m_decoder.refused())}};
+    return {{QCoreApplication::translate("Simulator", "Readings accepted"), QString::number(m_decoder.accepted())},
+            {QCoreApplication::translate("Simulator", "Malformed frames"), QString::number(m_decoder.malformed())},
+            {QCoreApplication::translate("Simulator", "Readings refused"), QString::number(m_decoder.refused())}};
 }
 
 }  // namespace tt::devices

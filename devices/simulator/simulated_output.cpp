@@ -1,5 +1,6 @@
 #include "devices/simulator/simulated_output.h"
 
+#include <QCoreApplication>
 #include <cmath>
 
 #include "devices/parsers/modbus_registers.h"
@@ -18,7 +19,8 @@ SimulatedOutput::SimulatedOutput(const QVariantMap& settings, const DeviceContex
       m_maxCorrectionMm(settings.value(QStringLiteral("maxCorrectionMm"), 0.5).toDouble()) {}
 
 void SimulatedOutput::connected() {
-    setState(core::DeviceState::Ready, QStringLiteral("the simulated CNC accepts corrections"));
+    setState(core::DeviceState::Ready,
+             QCoreApplication::translate("Simulator", "the simulated CNC accepts corrections"));
 }
 
 void SimulatedOutput::testConnection() {
@@ -43,7 +45,7 @@ std::optional<QString> SimulatedOutput::writeAndVerify(const std::vector<double>
         if (stored[i] != written[i]) {
             const double readBack =
                 decodeValue(stored[i], RegisterType::Int32, WordOrder::HighWordFirst, kScaleMm).value();
-            return QStringLiteral("read-back mismatch at value %1: wrote %2 mm, read %3 mm")
+            return QCoreApplication::translate("Simulator", "read-back mismatch at value %1: wrote %2 mm, read %3 mm")
                 .arg(i + 1)
                 .arg(valuesMm[i], 0, 'f', 4)
                 .arg(readBack, 0, 'f', 4);
@@ -56,15 +58,18 @@ std::optional<QString> SimulatedOutput::writeAndVerify(const std::vector<double>
 }
 
 core::OutputResult SimulatedOutput::sendPartCorrection(const core::PartCorrection& correction) {
-    if (!isOpen() || unplugged()) return refuse(QStringLiteral("%1 is not connected").arg(what()), false);
-    if (faults().silent) return refuse(QStringLiteral("no answer from %1").arg(what()), true);
+    if (!isOpen() || unplugged())
+        return refuse(QCoreApplication::translate("Simulator", "%1 is not connected").arg(what()), false);
+    if (faults().silent) return refuse(QCoreApplication::translate("Simulator", "no answer from %1").arg(what()), true);
     if (correction.pointCorrectionMm.empty() || correction.pointCorrectionMm.size() != correction.pointZMm.size())
         return refuse(
-            QStringLiteral("part %1: the corrections do not match the control points").arg(correction.partNumber),
+            QCoreApplication::translate("Simulator", "part %1: the corrections do not match the control points")
+                .arg(correction.partNumber),
             false);
     for (const double c : correction.pointCorrectionMm) {
         if (!std::isfinite(c) || std::fabs(c) > m_maxCorrectionMm)
-            return refuse(QStringLiteral("part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent")
+            return refuse(QCoreApplication::translate(
+                              "Simulator", "part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent")
                               .arg(correction.partNumber)
                               .arg(c, 0, 'f', 4)
                               .arg(m_maxCorrectionMm, 0, 'f', 3),
@@ -75,32 +80,38 @@ core::OutputResult SimulatedOutput::sendPartCorrection(const core::PartCorrectio
     if (const auto mismatch = writeAndVerify(correction.pointCorrectionMm, plc)) return refuse(*mismatch, true);
     m_plcCorrections = plc;
     if (m_partSink) m_partSink(correction);
-    setLiveValue(QStringLiteral("part %1: %2 corrections verified").arg(correction.partNumber).arg(plc.size()));
-    setState(core::DeviceState::Ready, QStringLiteral("the simulated CNC accepts corrections"));
+    setLiveValue(QCoreApplication::translate("Simulator", "part %1: %2 corrections verified")
+                     .arg(correction.partNumber)
+                     .arg(plc.size()));
+    setState(core::DeviceState::Ready,
+             QCoreApplication::translate("Simulator", "the simulated CNC accepts corrections"));
     return {true, {}};
 }
 
 core::OutputResult SimulatedOutput::sendDynamicOffset(double xOffsetMm) {
-    if (!isOpen() || unplugged()) return refuse(QStringLiteral("%1 is not connected").arg(what()), false);
-    if (faults().silent) return refuse(QStringLiteral("no answer from %1").arg(what()), true);
+    if (!isOpen() || unplugged())
+        return refuse(QCoreApplication::translate("Simulator", "%1 is not connected").arg(what()), false);
+    if (faults().silent) return refuse(QCoreApplication::translate("Simulator", "no answer from %1").arg(what()), true);
     if (!std::isfinite(xOffsetMm) || std::fabs(xOffsetMm) > m_maxCorrectionMm)
-        return refuse(QStringLiteral("offset %1 mm is beyond the limit of %2 mm; nothing sent")
-                          .arg(xOffsetMm, 0, 'f', 4)
-                          .arg(m_maxCorrectionMm, 0, 'f', 3),
-                      false);
+        return refuse(
+            QCoreApplication::translate("Simulator", "offset %1 mm is beyond the limit of %2 mm; nothing sent")
+                .arg(xOffsetMm, 0, 'f', 4)
+                .arg(m_maxCorrectionMm, 0, 'f', 3),
+            false);
     ++m_writes;
     std::vector<double> plc;
     if (const auto mismatch = writeAndVerify({xOffsetMm}, plc)) return refuse(*mismatch, true);
     m_plcOffset = plc.front();
     if (m_offsetSink) m_offsetSink(xOffsetMm);
-    setLiveValue(QStringLiteral("X offset %1 mm").arg(xOffsetMm, 0, 'f', 4));
-    setState(core::DeviceState::Ready, QStringLiteral("the simulated CNC accepts corrections"));
+    setLiveValue(QCoreApplication::translate("Simulator", "X offset %1 mm").arg(xOffsetMm, 0, 'f', 4));
+    setState(core::DeviceState::Ready,
+             QCoreApplication::translate("Simulator", "the simulated CNC accepts corrections"));
     return {true, {}};
 }
 
 QList<DeviceStatistic> SimulatedOutput::statistics() const {
-    return {{QStringLiteral("Writes"), QString::number(m_writes)},
-            {QStringLiteral("Refused or failed"), QString::number(m_failures)}};
+    return {{QCoreApplication::translate("Simulator", "Writes"), QString::number(m_writes)},
+            {QCoreApplication::translate("Simulator", "Refused or failed"), QString::number(m_failures)}};
 }
 
 }  // namespace tt::devices

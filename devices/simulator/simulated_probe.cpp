@@ -1,5 +1,7 @@
 #include "devices/simulator/simulated_probe.h"
 
+#include <QCoreApplication>
+
 namespace tt::devices {
 
 namespace {
@@ -79,17 +81,18 @@ void SimulatedProbe::tick() {
         m_samples.push_back(s);
     }
     if (const auto& last = m_session.lastSample())
-        setLiveValue(QStringLiteral("%1 / %2 mm")
+        setLiveValue(QCoreApplication::translate("Simulator", "%1 / %2 mm")
                          .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
                          .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
     if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
         reportError(QString::fromStdString(m_session.lastError()));
     switch (m_session.link()) {
         case probe::ProbeSession::Link::Streaming:
-            setState(core::DeviceState::Ready, QStringLiteral("streaming"));
+            setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "streaming"));
             break;
         case probe::ProbeSession::Link::Handshake:
-            setState(core::DeviceState::Connecting, QStringLiteral("starting the probe mandrel"));
+            setState(core::DeviceState::Connecting,
+                     QCoreApplication::translate("Simulator", "starting the probe mandrel"));
             break;
         case probe::ProbeSession::Link::Silent:
         case probe::ProbeSession::Link::Failed:

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QCoreApplication>
+
 #include "devices/api/device_plugin.h"
 
 namespace tt::devices {
@@ -10,7 +12,7 @@ namespace tt::devices {
 class SimulatorPlugin final : public DevicePlugin {
 public:
     QString pluginId() const override { return QStringLiteral("simulator"); }
-    QString displayName() const override { return QStringLiteral("Simulator"); }
+    QString displayName() const override { return QCoreApplication::translate("Simulator", "Simulator"); }
     QList<DeviceKind> kinds() const override { return allDeviceKinds(); }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;

@@ -61,6 +61,920 @@
     </message>
 </context>
 <context>
+    <name>DeviceKinds</name>
+    <message>
+        <source>Gauge micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive-current readout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction output to the CNC</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>DeviceSettings</name>
+    <message>
+        <source>Millimetres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Output format</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ASCII data cable (01A+00026.812)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Digimatic, 13 nibbles</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Digimatic, hexadecimal text</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What the data cable or interface sends.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Instrument unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The unit the micrometer displays; the ASCII format does not say.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Job unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings in another unit are refused, never converted silently.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The port the cable is plugged into, e.g. /dev/ttyUSB0 or COM3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bit/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Must match the instrument&apos;s setting.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Data bits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Even</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Odd</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop bits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a whole number is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is not one of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a number is required</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not one of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: choose the serial port the device is connected to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 does not exist on this computer (is the cable plugged in?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: choose a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the folder %2 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the folder %2 is not writable</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>GCodeOutput</name>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the folder %1 is not writable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G-code files go to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a G-code file cannot apply a dynamic X offset; use a Modbus correction output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Files written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where the CNC picks up its programs (network share, DNC folder).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>{part} becomes the part number.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finishing feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0 leaves the spindle to the main program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X words</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameters (diameter mode)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radii (radius mode)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write G7/G8</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For controls that select the X mode by G-code (LinuxCNC).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine Z of the part&apos;s left end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z direction along the part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Towards the chuck is -Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Towards the chuck is +Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clearance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A path with a larger correction is refused, never written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>G-code file</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Modbus</name>
+    <message>
+        <source>connecting to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected to %1; reading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot send the request to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2 polls in a row)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sample refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>polling %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 A, %2 mm/s, %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus exceptions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polls skipped (previous still running)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polling period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC cycle of paper 001: 10 to 100 ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What is written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Per-point corrections of the next part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dynamic X offset, every PLC cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First correction register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paper 000 controls five points.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write the part number last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A handshake: the PLC applies the corrections when the number changes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part number register (int32)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X offset register</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm per count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Larger corrections are refused, never sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Host: enter the IP address or name of the drive or PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the scale must not be zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First correction register: the corrections run past address 65535</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction: the scale must not be zero</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction: type must be signed (corrections can be negative)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lost the connection to %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot connect to %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>reading %n register(s) from %1</source>
+        <translation>
+            <numerusform>reading %n register from %1</numerusform>
+            <numerusform>reading %n registers from %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Modbus exception %1 (%2) %3 of %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>invalid reply %1 of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from %1 within %2 ms (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 failed: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connected to %1; registers readable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this output is set up for the dynamic X offset, not per-point corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 has %2 corrections; this output takes 1 to %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corrections of part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part number %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: %2 corrections written and verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this output is set up for per-point corrections, not the dynamic X offset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X offset %1 mm is beyond the limit of %2 mm; nothing sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X offset %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X offset %1 mm written and verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot send %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot read back %1 from %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read-back mismatch for %1 at register %2: wrote %3, read %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused or failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus TCP (Ethernet)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Modbus RTU (serial)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IP address or name of the drive or PLC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TCP port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unit id</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server address of the drive or PLC.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: registers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Holding (4x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Input (3x)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zero-based protocol address.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: word order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>High word first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Low word first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>per count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value = register x scale (in the unit below).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: unit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unit %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>writing %n register(s) at %1</source>
+        <translation>
+            <numerusform>writing %n register at %1</numerusform>
+            <numerusform>writing %n registers at %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ProbeMandrel</name>
+    <message>
+        <source>Sample rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC applies the correction every 10 to 100 ms (paper 001).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silence timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data for this long: the probe is in error.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Command timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serial RS-232/RS-485</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>streaming from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>starting the probe mandrel on %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ProbeStatus</name>
+    <message>
+        <source>Samples used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames lost</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames duplicated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frames corrupt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples dropped (over-range, excitation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Commands resent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples not taken in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (tables up to %2 KiB, CRC-32C)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>1 (tables up to 64 KiB, CRC-16)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Linearisation table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>version %1, %2, %3 bytes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none (raw ADC codes only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SerialGauge</name>
+    <message>
+        <source>Readings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent with the DATA button</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Asked for by TrueTurn</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Request string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sent to ask for a reading, as the interface&apos;s manual gives it; escapes \r \n \xNN.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Request string: &apos;%1&apos; is empty or has a bad escape (use \r, \n, \xNN)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Serial data cable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 open; readings on request</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 open; press DATA on the micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from the gauge on %1 for %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Malformed frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bytes discarded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Requests unanswered</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SerialLink</name>
+    <message>
+        <source>the port went away: cable or adapter unplugged</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 on %2 was disconnected (%3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open %1 for the %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; reopening (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>SimulatedCalibrationProbe</name>
     <message>
         <source>Sending chunk %1 of %2</source>
@@ -72,6 +986,307 @@
     </message>
     <message>
         <source>Stored, but the mandrel rejects it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Simulator</name>
+    <message>
+        <source>the simulated gauge micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the simulated probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the simulated drive-current readout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the simulated CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is unplugged (fault switch)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reconnecting to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>polling the simulated drive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from the simulated drive for %1 polls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sample refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 A, %2 mm/s, %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Samples refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated gauge ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from the simulated gauge for %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings accepted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Malformed frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Readings refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the simulated CNC accepts corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>read-back mismatch at value %1: wrote %2 mm, read %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not connected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: the corrections do not match the control points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: %2 corrections verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offset %1 mm is beyond the limit of %2 mm; nothing sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X offset %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refused or failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>starting the probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameter measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stand-alone: every reading is this diameter (plus noise when switched on).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resolution, decimals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>3 = 0.001 mm, the micrometer of paper 000.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sample rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection, plane 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stand-alone: constant bending of the bar.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deflection, plane 2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Silence timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polling period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Oscillation amplitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paper 001: 0.005 to 0.05 mm, inside the tolerance.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Oscillation period</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paper 001: 0.2 to 2 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Friction current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cutting current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Larger corrections are refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::devices::DeviceManager</name>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plugin folder %1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: not a TrueTurn device plugin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a plugin with id %2 is already loaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device plugin %1 is not installed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the plugin %1 does not provide a %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no device with id %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (%1 more in error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 ready; %3 %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ready</source>
+        <translation>
+            <numerusform>%n ready</numerusform>
+            <numerusform>%n ready</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>device %1: the saved entry is incomplete</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -669,6 +1884,23 @@
     </message>
     <message>
         <source>Counters</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::HistoryCheck</name>
+    <message>
+        <source>not available — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run history cannot be used: %1
+
+Runs are not recorded until this is fixed (Settings shows where the history is kept).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2104,6 +3336,25 @@
     </message>
     <message>
         <source>Parts done: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::TerminalDevices</name>
+    <message>
+        <source>Simulated gauge micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated drive-current readout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated CNC output</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -61,6 +61,922 @@
     </message>
 </context>
 <context>
+    <name>DeviceKinds</name>
+    <message>
+        <source>Gauge micrometer</source>
+        <translation>Цифровой микрометр</translation>
+    </message>
+    <message>
+        <source>Probe mandrel</source>
+        <translation>Оправка-датчик</translation>
+    </message>
+    <message>
+        <source>Drive-current readout</source>
+        <translation>Датчик тока привода</translation>
+    </message>
+    <message>
+        <source>Correction output to the CNC</source>
+        <translation>Выход коррекции в ЧПУ</translation>
+    </message>
+</context>
+<context>
+    <name>DeviceSettings</name>
+    <message>
+        <source>Millimetres</source>
+        <translation>Миллиметры</translation>
+    </message>
+    <message>
+        <source>Inches</source>
+        <translation>Дюймы</translation>
+    </message>
+    <message>
+        <source>Output format</source>
+        <translation>Формат вывода</translation>
+    </message>
+    <message>
+        <source>ASCII data cable (01A+00026.812)</source>
+        <translation>Кабель данных ASCII (01A+00026.812)</translation>
+    </message>
+    <message>
+        <source>Digimatic, 13 nibbles</source>
+        <translation>Digimatic, 13 полубайтов</translation>
+    </message>
+    <message>
+        <source>Digimatic, hexadecimal text</source>
+        <translation>Digimatic, шестнадцатеричный текст</translation>
+    </message>
+    <message>
+        <source>What the data cable or interface sends.</source>
+        <translation>Что передаёт кабель данных или интерфейс.</translation>
+    </message>
+    <message>
+        <source>Instrument unit</source>
+        <translation>Единица прибора</translation>
+    </message>
+    <message>
+        <source>The unit the micrometer displays; the ASCII format does not say.</source>
+        <translation>Единица, в которой показывает микрометр; формат ASCII её не сообщает.</translation>
+    </message>
+    <message>
+        <source>Job unit</source>
+        <translation>Единица задания</translation>
+    </message>
+    <message>
+        <source>Readings in another unit are refused, never converted silently.</source>
+        <translation>Показания в другой единице отклоняются, а не пересчитываются молча.</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Последовательный порт</translation>
+    </message>
+    <message>
+        <source>The port the cable is plugged into, e.g. /dev/ttyUSB0 or COM3.</source>
+        <translation>Порт, к которому подключён кабель, например /dev/ttyUSB0 или COM3.</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Скорость обмена</translation>
+    </message>
+    <message>
+        <source>bit/s</source>
+        <translation>бит/с</translation>
+    </message>
+    <message>
+        <source>Must match the instrument&apos;s setting.</source>
+        <translation>Должна совпадать с настройкой прибора.</translation>
+    </message>
+    <message>
+        <source>Data bits</source>
+        <translation>Биты данных</translation>
+    </message>
+    <message>
+        <source>Parity</source>
+        <translation>Чётность</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Нет</translation>
+    </message>
+    <message>
+        <source>Even</source>
+        <translation>Чёт</translation>
+    </message>
+    <message>
+        <source>Odd</source>
+        <translation>Нечёт</translation>
+    </message>
+    <message>
+        <source>Stop bits</source>
+        <translation>Стоповые биты</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>от %1 до %2</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not on or off</source>
+        <translation>%1: «%2» — не «вкл» и не «выкл»</translation>
+    </message>
+    <message>
+        <source>%1: a whole number is required</source>
+        <translation>%1: требуется целое число</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation>%1: «%2» — не целое число</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not one of %3</source>
+        <translation>%1: %2 не входит в список: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is outside %3</source>
+        <translation>%1: %2 вне диапазона %3</translation>
+    </message>
+    <message>
+        <source>%1: a number is required</source>
+        <translation>%1: требуется число</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation>%1: «%2» — не число</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not one of %3</source>
+        <translation>%1: «%2» не входит в список: %3</translation>
+    </message>
+    <message>
+        <source>%1: choose the serial port the device is connected to</source>
+        <translation>%1: выберите последовательный порт, к которому подключено устройство</translation>
+    </message>
+    <message>
+        <source>%1: %2 does not exist on this computer (is the cable plugged in?)</source>
+        <translation>%1: порта %2 нет на этом компьютере (подключён ли кабель?)</translation>
+    </message>
+    <message>
+        <source>%1: choose a folder</source>
+        <translation>%1: выберите папку</translation>
+    </message>
+    <message>
+        <source>%1: the folder %2 does not exist</source>
+        <translation>%1: папка %2 не существует</translation>
+    </message>
+    <message>
+        <source>%1: the folder %2 is not writable</source>
+        <translation>%1: в папку %2 нельзя записывать</translation>
+    </message>
+</context>
+<context>
+    <name>GCodeOutput</name>
+    <message>
+        <source>the folder %1 does not exist</source>
+        <translation>папка %1 не существует</translation>
+    </message>
+    <message>
+        <source>the folder %1 is not writable</source>
+        <translation>в папку %1 нельзя записывать</translation>
+    </message>
+    <message>
+        <source>G-code files go to %1</source>
+        <translation>файлы G-кода записываются в %1</translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>деталь %1: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>a G-code file cannot apply a dynamic X offset; use a Modbus correction output</source>
+        <translation>файл G-кода не может задать динамическое смещение по X; используйте выход коррекции Modbus</translation>
+    </message>
+    <message>
+        <source>Files written</source>
+        <translation>Записано файлов</translation>
+    </message>
+    <message>
+        <source>Refused</source>
+        <translation>Отклонено</translation>
+    </message>
+    <message>
+        <source>Last file</source>
+        <translation>Последний файл</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Папка</translation>
+    </message>
+    <message>
+        <source>Where the CNC picks up its programs (network share, DNC folder).</source>
+        <translation>Откуда ЧПУ забирает программы (сетевая папка, папка DNC).</translation>
+    </message>
+    <message>
+        <source>File name</source>
+        <translation>Имя файла</translation>
+    </message>
+    <message>
+        <source>{part} becomes the part number.</source>
+        <translation>{part} заменяется номером детали.</translation>
+    </message>
+    <message>
+        <source>Nominal diameter</source>
+        <translation>Номинальный диаметр</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Finishing feed</source>
+        <translation>Чистовая подача</translation>
+    </message>
+    <message>
+        <source>mm/rev</source>
+        <translation>мм/об</translation>
+    </message>
+    <message>
+        <source>Spindle speed</source>
+        <translation>Частота вращения шпинделя</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>об/мин</translation>
+    </message>
+    <message>
+        <source>0 leaves the spindle to the main program.</source>
+        <translation>0 — шпиндель задаёт основная программа.</translation>
+    </message>
+    <message>
+        <source>X words</source>
+        <translation>Значения X</translation>
+    </message>
+    <message>
+        <source>Diameters (diameter mode)</source>
+        <translation>Диаметры (программирование на диаметр)</translation>
+    </message>
+    <message>
+        <source>Radii (radius mode)</source>
+        <translation>Радиусы (программирование на радиус)</translation>
+    </message>
+    <message>
+        <source>Write G7/G8</source>
+        <translation>Записывать G7/G8</translation>
+    </message>
+    <message>
+        <source>For controls that select the X mode by G-code (LinuxCNC).</source>
+        <translation>Для систем ЧПУ, выбирающих режим X G-кодом (LinuxCNC).</translation>
+    </message>
+    <message>
+        <source>Machine Z of the part&apos;s left end</source>
+        <translation>Машинная координата Z левого торца детали</translation>
+    </message>
+    <message>
+        <source>Z direction along the part</source>
+        <translation>Направление Z вдоль детали</translation>
+    </message>
+    <message>
+        <source>Towards the chuck is -Z</source>
+        <translation>К патрону — это -Z</translation>
+    </message>
+    <message>
+        <source>Towards the chuck is +Z</source>
+        <translation>К патрону — это +Z</translation>
+    </message>
+    <message>
+        <source>Clearance</source>
+        <translation>Зазор отвода</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Инструмент</translation>
+    </message>
+    <message>
+        <source>Program number</source>
+        <translation>Номер программы</translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation>Предел коррекции</translation>
+    </message>
+    <message>
+        <source>A path with a larger correction is refused, never written.</source>
+        <translation>Траектория с большей коррекцией отклоняется и не записывается.</translation>
+    </message>
+    <message>
+        <source>G-code file</source>
+        <translation>Файл G-кода</translation>
+    </message>
+</context>
+<context>
+    <name>Modbus</name>
+    <message>
+        <source>connecting to %1</source>
+        <translation>подключение к %1</translation>
+    </message>
+    <message>
+        <source>connected to %1; reading</source>
+        <translation>подключено к %1; чтение</translation>
+    </message>
+    <message>
+        <source>cannot send the request to %1</source>
+        <translation>не удаётся отправить запрос в %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 polls in a row)</source>
+        <translation>%1 (опросов подряд: %2)</translation>
+    </message>
+    <message>
+        <source>sample refused: %1</source>
+        <translation>отсчёт отклонён: %1</translation>
+    </message>
+    <message>
+        <source>polling %1</source>
+        <translation>опрос %1</translation>
+    </message>
+    <message>
+        <source>%1 A, %2 mm/s, %3 mm</source>
+        <translation>%1 А, %2 мм/с, %3 мм</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Опросов</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>Отсчётов</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>Тайм-аутов</translation>
+    </message>
+    <message>
+        <source>Modbus exceptions</source>
+        <translation>Исключений Modbus</translation>
+    </message>
+    <message>
+        <source>Samples refused</source>
+        <translation>Отклонено отсчётов</translation>
+    </message>
+    <message>
+        <source>Polls skipped (previous still running)</source>
+        <translation>Пропущено опросов (предыдущий не завершён)</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Ток</translation>
+    </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Скорость</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>Polling period</source>
+        <translation>Период опроса</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>The PLC cycle of paper 001: 10 to 100 ms.</source>
+        <translation>Цикл ПЛК по статье 001: от 10 до 100 мс.</translation>
+    </message>
+    <message>
+        <source>What is written</source>
+        <translation>Что записывается</translation>
+    </message>
+    <message>
+        <source>Per-point corrections of the next part</source>
+        <translation>Коррекции по точкам для следующей детали</translation>
+    </message>
+    <message>
+        <source>Dynamic X offset, every PLC cycle</source>
+        <translation>Динамическое смещение по X в каждом цикле ПЛК</translation>
+    </message>
+    <message>
+        <source>First correction register</source>
+        <translation>Первый регистр коррекций</translation>
+    </message>
+    <message>
+        <source>Control points</source>
+        <translation>Контрольные точки</translation>
+    </message>
+    <message>
+        <source>Paper 000 controls five points.</source>
+        <translation>В статье 000 регулируются пять точек.</translation>
+    </message>
+    <message>
+        <source>Write the part number last</source>
+        <translation>Записывать номер детали последним</translation>
+    </message>
+    <message>
+        <source>A handshake: the PLC applies the corrections when the number changes.</source>
+        <translation>Квитирование: ПЛК применяет коррекции при смене номера.</translation>
+    </message>
+    <message>
+        <source>Part number register (int32)</source>
+        <translation>Регистр номера детали (int32)</translation>
+    </message>
+    <message>
+        <source>X offset register</source>
+        <translation>Регистр смещения по X</translation>
+    </message>
+    <message>
+        <source>Correction</source>
+        <translation>Коррекция</translation>
+    </message>
+    <message>
+        <source>mm per count</source>
+        <translation>мм на единицу</translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation>Предел коррекции</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Larger corrections are refused, never sent.</source>
+        <translation>Большие коррекции отклоняются и не передаются.</translation>
+    </message>
+    <message>
+        <source>Host: enter the IP address or name of the drive or PLC</source>
+        <translation>Хост: введите IP-адрес или имя привода или ПЛК</translation>
+    </message>
+    <message>
+        <source>%1: the scale must not be zero</source>
+        <translation>%1: масштаб не должен быть нулевым</translation>
+    </message>
+    <message>
+        <source>First correction register: the corrections run past address 65535</source>
+        <translation>Первый регистр коррекций: коррекции выходят за адрес 65535</translation>
+    </message>
+    <message>
+        <source>Correction: the scale must not be zero</source>
+        <translation>Коррекция: масштаб не должен быть нулевым</translation>
+    </message>
+    <message>
+        <source>Correction: type must be signed (corrections can be negative)</source>
+        <translation>Коррекция: тип должен быть знаковым (коррекции бывают отрицательными)</translation>
+    </message>
+    <message>
+        <source>connection closed</source>
+        <translation>соединение закрыто</translation>
+    </message>
+    <message>
+        <source>lost the connection to %1 (%2)</source>
+        <translation>потеряно соединение с %1 (%2)</translation>
+    </message>
+    <message>
+        <source>cannot connect to %1 (%2)</source>
+        <translation>не удаётся подключиться к %1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>reading %n register(s) from %1</source>
+        <translation>
+            <numerusform>чтение %n регистра с адреса %1</numerusform>
+            <numerusform>чтение %n регистров с адреса %1</numerusform>
+            <numerusform>чтение %n регистров с адреса %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Modbus exception %1 (%2) %3 of %4</source>
+        <translation>исключение Modbus %1 (%2): %3, %4</translation>
+    </message>
+    <message>
+        <source>invalid reply %1 of %2: %3</source>
+        <translation>неверный ответ: %1, %2: %3</translation>
+    </message>
+    <message>
+        <source>no answer from %1 within %2 ms (%3)</source>
+        <translation>нет ответа от %1 в течение %2 мс (%3)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 failed: %3</source>
+        <translation>сбой: %1, %2: %3</translation>
+    </message>
+    <message>
+        <source>connected to %1</source>
+        <translation>подключено к %1</translation>
+    </message>
+    <message>
+        <source>connected to %1; registers readable</source>
+        <translation>подключено к %1; регистры читаются</translation>
+    </message>
+    <message>
+        <source>this output is set up for the dynamic X offset, not per-point corrections</source>
+        <translation>этот выход настроен на динамическое смещение по X, а не на коррекции по точкам</translation>
+    </message>
+    <message>
+        <source>part %1 has %2 corrections; this output takes 1 to %3</source>
+        <translation>у детали %1 коррекций: %2; этот выход принимает от 1 до %3</translation>
+    </message>
+    <message>
+        <source>corrections of part %1</source>
+        <translation>коррекции детали %1</translation>
+    </message>
+    <message>
+        <source>part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent</source>
+        <translation>деталь %1: коррекция %2 мм выходит за предел %3 мм; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>part %1: %2</source>
+        <translation>деталь %1: %2</translation>
+    </message>
+    <message>
+        <source>part number %1</source>
+        <translation>номер детали %1</translation>
+    </message>
+    <message>
+        <source>part %1: %2 corrections written and verified</source>
+        <translation>деталь %1: коррекции записаны и проверены (%2)</translation>
+    </message>
+    <message>
+        <source>this output is set up for per-point corrections, not the dynamic X offset</source>
+        <translation>этот выход настроен на коррекции по точкам, а не на динамическое смещение по X</translation>
+    </message>
+    <message>
+        <source>X offset %1 mm is beyond the limit of %2 mm; nothing sent</source>
+        <translation>смещение по X %1 мм выходит за предел %2 мм; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>X offset %1 mm</source>
+        <translation>смещение по X %1 мм</translation>
+    </message>
+    <message>
+        <source>X offset %1 mm written and verified</source>
+        <translation>смещение по X %1 мм записано и проверено</translation>
+    </message>
+    <message>
+        <source>%1 is not connected</source>
+        <translation>%1: нет подключения</translation>
+    </message>
+    <message>
+        <source>cannot send %1 to %2</source>
+        <translation>не удаётся отправить %1 в %2</translation>
+    </message>
+    <message>
+        <source>cannot read back %1 from %2</source>
+        <translation>контрольное считывание не удалось: %1, %2</translation>
+    </message>
+    <message>
+        <source>read-back mismatch for %1 at register %2: wrote %3, read %4</source>
+        <translation>контрольное считывание не совпадает (%1, регистр %2): записано %3, считано %4</translation>
+    </message>
+    <message>
+        <source>Writes verified</source>
+        <translation>Проверенных записей</translation>
+    </message>
+    <message>
+        <source>Refused or failed</source>
+        <translation>Отклонено или с ошибкой</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>Подключение</translation>
+    </message>
+    <message>
+        <source>Modbus TCP (Ethernet)</source>
+        <translation>Modbus TCP (Ethernet)</translation>
+    </message>
+    <message>
+        <source>Modbus RTU (serial)</source>
+        <translation>Modbus RTU (последовательный порт)</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Хост</translation>
+    </message>
+    <message>
+        <source>IP address or name of the drive or PLC.</source>
+        <translation>IP-адрес или имя привода или ПЛК.</translation>
+    </message>
+    <message>
+        <source>TCP port</source>
+        <translation>TCP-порт</translation>
+    </message>
+    <message>
+        <source>Unit id</source>
+        <translation>Адрес устройства</translation>
+    </message>
+    <message>
+        <source>The server address of the drive or PLC.</source>
+        <translation>Адрес привода или ПЛК в сети Modbus (Unit ID).</translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation>Тайм-аут ответа</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>Повторы</translation>
+    </message>
+    <message>
+        <source>%1: registers</source>
+        <translation>%1: регистры</translation>
+    </message>
+    <message>
+        <source>Holding (4x)</source>
+        <translation>Хранения (4x)</translation>
+    </message>
+    <message>
+        <source>Input (3x)</source>
+        <translation>Входные (3x)</translation>
+    </message>
+    <message>
+        <source>%1: address</source>
+        <translation>%1: адрес</translation>
+    </message>
+    <message>
+        <source>Zero-based protocol address.</source>
+        <translation>Адрес в протоколе, отсчёт от нуля.</translation>
+    </message>
+    <message>
+        <source>%1: type</source>
+        <translation>%1: тип</translation>
+    </message>
+    <message>
+        <source>%1: word order</source>
+        <translation>%1: порядок слов</translation>
+    </message>
+    <message>
+        <source>High word first</source>
+        <translation>Старшее слово первым</translation>
+    </message>
+    <message>
+        <source>Low word first</source>
+        <translation>Младшее слово первым</translation>
+    </message>
+    <message>
+        <source>%1: scale</source>
+        <translation>%1: масштаб</translation>
+    </message>
+    <message>
+        <source>per count</source>
+        <translation>на единицу</translation>
+    </message>
+    <message>
+        <source>Value = register x scale (in the unit below).</source>
+        <translation>Значение = регистр × масштаб (в единице ниже).</translation>
+    </message>
+    <message>
+        <source>%1: unit</source>
+        <translation>%1: единица</translation>
+    </message>
+    <message>
+        <source>unit %1</source>
+        <translation>устройство %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>writing %n register(s) at %1</source>
+        <translation>
+            <numerusform>запись %n регистра по адресу %1</numerusform>
+            <numerusform>запись %n регистров по адресу %1</numerusform>
+            <numerusform>запись %n регистров по адресу %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ProbeMandrel</name>
+    <message>
+        <source>Sample rate</source>
+        <translation>Частота отсчётов</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Гц</translation>
+    </message>
+    <message>
+        <source>The PLC applies the correction every 10 to 100 ms (paper 001).</source>
+        <translation>ПЛК применяет коррекцию с периодом от 10 до 100 мс (статья 001).</translation>
+    </message>
+    <message>
+        <source>Silence timeout</source>
+        <translation>Тайм-аут молчания</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>No data for this long: the probe is in error.</source>
+        <translation>Если данных нет так долго, датчик переходит в состояние ошибки.</translation>
+    </message>
+    <message>
+        <source>Command timeout</source>
+        <translation>Тайм-аут команды</translation>
+    </message>
+    <message>
+        <source>Serial RS-232/RS-485</source>
+        <translation>Последовательный порт RS-232/RS-485</translation>
+    </message>
+    <message>
+        <source>probe mandrel</source>
+        <translation>оправка-датчик</translation>
+    </message>
+    <message>
+        <source>opening %1</source>
+        <translation>открытие %1</translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
+        <translation>%1 / %2 мм</translation>
+    </message>
+    <message>
+        <source>streaming from %1</source>
+        <translation>поток данных с %1</translation>
+    </message>
+    <message>
+        <source>starting the probe mandrel on %1</source>
+        <translation>запуск оправки-датчика на %1</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>ProbeStatus</name>
+    <message>
+        <source>Samples used</source>
+        <translation>Использовано отсчётов</translation>
+    </message>
+    <message>
+        <source>Frames lost</source>
+        <translation>Потеряно кадров</translation>
+    </message>
+    <message>
+        <source>Frames duplicated</source>
+        <translation>Повторных кадров</translation>
+    </message>
+    <message>
+        <source>Frames corrupt</source>
+        <translation>Искажённых кадров</translation>
+    </message>
+    <message>
+        <source>Samples dropped (over-range, excitation)</source>
+        <translation>Отброшено отсчётов (перегрузка, возбуждение)</translation>
+    </message>
+    <message>
+        <source>Commands resent</source>
+        <translation>Повторно отправлено команд</translation>
+    </message>
+    <message>
+        <source>Samples not taken in time</source>
+        <translation>Отсчётов не взято вовремя</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Протокол</translation>
+    </message>
+    <message>
+        <source>%1 (tables up to %2 KiB, CRC-32C)</source>
+        <translation>%1 (таблицы до %2 КиБ, CRC-32C)</translation>
+    </message>
+    <message>
+        <source>1 (tables up to 64 KiB, CRC-16)</source>
+        <translation>1 (таблицы до 64 КиБ, CRC-16)</translation>
+    </message>
+    <message>
+        <source>Linearisation table</source>
+        <translation>Таблица линеаризации</translation>
+    </message>
+    <message>
+        <source>version %1, %2, %3 bytes</source>
+        <translation>версия %1, %2, байт: %3</translation>
+    </message>
+    <message>
+        <source>none (raw ADC codes only)</source>
+        <translation>нет (только необработанные коды АЦП)</translation>
+    </message>
+</context>
+<context>
+    <name>SerialGauge</name>
+    <message>
+        <source>Readings</source>
+        <translation>Показания</translation>
+    </message>
+    <message>
+        <source>Sent with the DATA button</source>
+        <translation>Передаются кнопкой DATA</translation>
+    </message>
+    <message>
+        <source>Asked for by TrueTurn</source>
+        <translation>Запрашиваются TrueTurn</translation>
+    </message>
+    <message>
+        <source>Request string</source>
+        <translation>Строка запроса</translation>
+    </message>
+    <message>
+        <source>Sent to ask for a reading, as the interface&apos;s manual gives it; escapes \r \n \xNN.</source>
+        <translation>Отправляется для запроса показания, как указано в руководстве к интерфейсу; escape-последовательности \r \n \xNN.</translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation>Тайм-аут ответа</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>Request string: &apos;%1&apos; is empty or has a bad escape (use \r, \n, \xNN)</source>
+        <translation>Строка запроса: «%1» пуста или содержит неверную escape-последовательность (используйте \r, \n, \xNN)</translation>
+    </message>
+    <message>
+        <source>Serial data cable</source>
+        <translation>Кабель данных (последовательный порт)</translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation>микрометр</translation>
+    </message>
+    <message>
+        <source>%1 open; readings on request</source>
+        <translation>%1 открыт; показания по запросу</translation>
+    </message>
+    <message>
+        <source>%1 open; press DATA on the micrometer</source>
+        <translation>%1 открыт; нажмите DATA на микрометре</translation>
+    </message>
+    <message>
+        <source>opening %1</source>
+        <translation>открытие %1</translation>
+    </message>
+    <message>
+        <source>no answer from the gauge on %1 for %2 s</source>
+        <translation>микрометр на %1 не отвечает %2 с</translation>
+    </message>
+    <message>
+        <source>in</source>
+        <translation>дюйм</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Readings accepted</source>
+        <translation>Принято показаний</translation>
+    </message>
+    <message>
+        <source>Malformed frames</source>
+        <translation>Искажённых кадров</translation>
+    </message>
+    <message>
+        <source>Readings refused</source>
+        <translation>Отклонено показаний</translation>
+    </message>
+    <message>
+        <source>Bytes discarded</source>
+        <translation>Отброшено байт</translation>
+    </message>
+    <message>
+        <source>Requests unanswered</source>
+        <translation>Запросов без ответа</translation>
+    </message>
+</context>
+<context>
+    <name>SerialLink</name>
+    <message>
+        <source>the port went away: cable or adapter unplugged</source>
+        <translation>порт пропал: отключён кабель или адаптер</translation>
+    </message>
+    <message>
+        <source>reading failed</source>
+        <translation>ошибка чтения</translation>
+    </message>
+    <message>
+        <source>writing failed</source>
+        <translation>ошибка записи</translation>
+    </message>
+    <message>
+        <source>the %1 on %2 was disconnected (%3)</source>
+        <translation>%1 на %2: связь потеряна (%3)</translation>
+    </message>
+    <message>
+        <source>cannot open %1 for the %2: %3</source>
+        <translation>не удаётся открыть %1 (%2): %3</translation>
+    </message>
+    <message>
+        <source>%1; reopening (%2)</source>
+        <translation>%1; повторное открытие (%2)</translation>
+    </message>
+</context>
+<context>
     <name>SimulatedCalibrationProbe</name>
     <message>
         <source>Sending chunk %1 of %2</source>
@@ -73,6 +989,308 @@
     <message>
         <source>Stored, but the mandrel rejects it: %1</source>
         <translation>Записано, но оправка отвергает таблицу: %1</translation>
+    </message>
+</context>
+<context>
+    <name>Simulator</name>
+    <message>
+        <source>the simulated gauge micrometer</source>
+        <translation>симулятор микрометра</translation>
+    </message>
+    <message>
+        <source>the simulated probe mandrel</source>
+        <translation>симулятор оправки-датчика</translation>
+    </message>
+    <message>
+        <source>the simulated drive-current readout</source>
+        <translation>симулятор датчика тока привода</translation>
+    </message>
+    <message>
+        <source>the simulated CNC output</source>
+        <translation>симулятор выхода в ЧПУ</translation>
+    </message>
+    <message>
+        <source>connecting to %1</source>
+        <translation>подключение: %1</translation>
+    </message>
+    <message>
+        <source>%1 is unplugged (fault switch)</source>
+        <translation>%1 отключён (переключатель неисправностей)</translation>
+    </message>
+    <message>
+        <source>reconnecting to %1</source>
+        <translation>повторное подключение: %1</translation>
+    </message>
+    <message>
+        <source>polling the simulated drive</source>
+        <translation>опрос симулятора привода</translation>
+    </message>
+    <message>
+        <source>no answer from the simulated drive for %1 polls</source>
+        <translation>симулятор привода не отвечает (опросов: %1)</translation>
+    </message>
+    <message>
+        <source>sample refused: %1</source>
+        <translation>отсчёт отклонён: %1</translation>
+    </message>
+    <message>
+        <source>%1 A, %2 mm/s, %3 mm</source>
+        <translation>%1 А, %2 мм/с, %3 мм</translation>
+    </message>
+    <message>
+        <source>Polls</source>
+        <translation>Опросов</translation>
+    </message>
+    <message>
+        <source>Samples refused</source>
+        <translation>Отклонено отсчётов</translation>
+    </message>
+    <message>
+        <source>simulated gauge ready</source>
+        <translation>симулятор микрометра готов</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 мм</translation>
+    </message>
+    <message>
+        <source>no answer from the simulated gauge for %1 s</source>
+        <translation>симулятор микрометра не отвечает %1 с</translation>
+    </message>
+    <message>
+        <source>Readings accepted</source>
+        <translation>Принято показаний</translation>
+    </message>
+    <message>
+        <source>Malformed frames</source>
+        <translation>Искажённых кадров</translation>
+    </message>
+    <message>
+        <source>Readings refused</source>
+        <translation>Отклонено показаний</translation>
+    </message>
+    <message>
+        <source>the simulated CNC accepts corrections</source>
+        <translation>симулятор ЧПУ принимает коррекции</translation>
+    </message>
+    <message>
+        <source>read-back mismatch at value %1: wrote %2 mm, read %3 mm</source>
+        <translation>контрольное считывание не совпадает для значения %1: записано %2 мм, считано %3 мм</translation>
+    </message>
+    <message>
+        <source>%1 is not connected</source>
+        <translation>%1 не подключён</translation>
+    </message>
+    <message>
+        <source>no answer from %1</source>
+        <translation>%1 не отвечает</translation>
+    </message>
+    <message>
+        <source>part %1: the corrections do not match the control points</source>
+        <translation>деталь %1: коррекции не соответствуют контрольным точкам</translation>
+    </message>
+    <message>
+        <source>part %1: correction %2 mm is beyond the limit of %3 mm; nothing sent</source>
+        <translation>деталь %1: коррекция %2 мм выходит за предел %3 мм; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>part %1: %2 corrections verified</source>
+        <translation>деталь %1: коррекции проверены (%2)</translation>
+    </message>
+    <message>
+        <source>offset %1 mm is beyond the limit of %2 mm; nothing sent</source>
+        <translation>смещение %1 мм выходит за предел %2 мм; ничего не отправлено</translation>
+    </message>
+    <message>
+        <source>X offset %1 mm</source>
+        <translation>смещение по X %1 мм</translation>
+    </message>
+    <message>
+        <source>Writes</source>
+        <translation>Записей</translation>
+    </message>
+    <message>
+        <source>Refused or failed</source>
+        <translation>Отклонено или с ошибкой</translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
+        <translation>%1 / %2 мм</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>поток данных</translation>
+    </message>
+    <message>
+        <source>starting the probe mandrel</source>
+        <translation>запуск оправки-датчика</translation>
+    </message>
+    <message>
+        <source>Simulator</source>
+        <translation>Симулятор</translation>
+    </message>
+    <message>
+        <source>Diameter measured</source>
+        <translation>Измеряемый диаметр</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Stand-alone: every reading is this diameter (plus noise when switched on).</source>
+        <translation>Автономно: каждое показание равно этому диаметру (плюс шум, если он включён).</translation>
+    </message>
+    <message>
+        <source>Resolution, decimals</source>
+        <translation>Разрешение, знаков после запятой</translation>
+    </message>
+    <message>
+        <source>3 = 0.001 mm, the micrometer of paper 000.</source>
+        <translation>3 = 0.001 мм, как у микрометра в статье 000.</translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation>Тайм-аут ответа</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>Sample rate</source>
+        <translation>Частота отсчётов</translation>
+    </message>
+    <message>
+        <source>Hz</source>
+        <translation>Гц</translation>
+    </message>
+    <message>
+        <source>Deflection, plane 1</source>
+        <translation>Прогиб, плоскость 1</translation>
+    </message>
+    <message>
+        <source>Stand-alone: constant bending of the bar.</source>
+        <translation>Автономно: постоянный изгиб оправки.</translation>
+    </message>
+    <message>
+        <source>Deflection, plane 2</source>
+        <translation>Прогиб, плоскость 2</translation>
+    </message>
+    <message>
+        <source>Silence timeout</source>
+        <translation>Тайм-аут молчания</translation>
+    </message>
+    <message>
+        <source>Polling period</source>
+        <translation>Период опроса</translation>
+    </message>
+    <message>
+        <source>Oscillation amplitude</source>
+        <translation>Амплитуда колебаний</translation>
+    </message>
+    <message>
+        <source>Paper 001: 0.005 to 0.05 mm, inside the tolerance.</source>
+        <translation>Статья 001: от 0.005 до 0.05 мм, в пределах допуска.</translation>
+    </message>
+    <message>
+        <source>Oscillation period</source>
+        <translation>Период колебаний</translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation>с</translation>
+    </message>
+    <message>
+        <source>Paper 001: 0.2 to 2 s.</source>
+        <translation>Статья 001: от 0.2 до 2 с.</translation>
+    </message>
+    <message>
+        <source>Friction current</source>
+        <translation>Ток трения</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>А</translation>
+    </message>
+    <message>
+        <source>Cutting current</source>
+        <translation>Ток резания</translation>
+    </message>
+    <message>
+        <source>Correction limit</source>
+        <translation>Предел коррекции</translation>
+    </message>
+    <message>
+        <source>Larger corrections are refused.</source>
+        <translation>Большие коррекции отклоняются.</translation>
+    </message>
+</context>
+<context>
+    <name>tt::devices::DeviceManager</name>
+    <message>
+        <source>ready</source>
+        <translation>готово</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>подключение</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>закрыто</translation>
+    </message>
+    <message>
+        <source>plugin folder %1 does not exist</source>
+        <translation>папка модулей %1 не существует</translation>
+    </message>
+    <message>
+        <source>%1: not a TrueTurn device plugin</source>
+        <translation>%1: не модуль устройств TrueTurn</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: a plugin with id %2 is already loaded</source>
+        <translation>%1: модуль с идентификатором %2 уже загружен</translation>
+    </message>
+    <message>
+        <source>the device plugin %1 is not installed</source>
+        <translation>модуль устройств %1 не установлен</translation>
+    </message>
+    <message>
+        <source>the plugin %1 does not provide a %2</source>
+        <translation>модуль %1 не поддерживает тип «%2»</translation>
+    </message>
+    <message>
+        <source>no device with id %1</source>
+        <translation>нет устройства с идентификатором %1</translation>
+    </message>
+    <message>
+        <source> (%1 more in error)</source>
+        <translation> (ещё с ошибкой: %1)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 ready; %3 %4</source>
+        <translation>готово %1 из %2; %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ready</source>
+        <translation>
+            <numerusform>готово: %n</numerusform>
+            <numerusform>готово: %n</numerusform>
+            <numerusform>готово: %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>device %1: the saved entry is incomplete</source>
+        <translation>устройство %1: сохранённая запись неполна</translation>
     </message>
 </context>
 <context>
@@ -671,6 +1889,25 @@
     <message>
         <source>Counters</source>
         <translation>Счётчики</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::HistoryCheck</name>
+    <message>
+        <source>not available — %1</source>
+        <translation>недоступна — %1</translation>
+    </message>
+    <message>
+        <source>Run history</source>
+        <translation>История серий</translation>
+    </message>
+    <message>
+        <source>The run history cannot be used: %1
+
+Runs are not recorded until this is fixed (Settings shows where the history is kept).</source>
+        <translation>Историю серий невозможно использовать: %1
+
+Серии не записываются, пока это не исправлено (на странице «Настройки» указано, где хранится история).</translation>
     </message>
 </context>
 <context>
@@ -2109,6 +3346,25 @@
     <message>
         <source>Parts done: %1</source>
         <translation>Готово деталей: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::TerminalDevices</name>
+    <message>
+        <source>Simulated gauge micrometer</source>
+        <translation>Симулятор микрометра</translation>
+    </message>
+    <message>
+        <source>Simulated probe mandrel</source>
+        <translation>Симулятор оправки-датчика</translation>
+    </message>
+    <message>
+        <source>Simulated drive-current readout</source>
+        <translation>Симулятор датчика тока привода</translation>
+    </message>
+    <message>
+        <source>Simulated CNC output</source>
+        <translation>Симулятор выхода в ЧПУ</translation>
     </message>
 </context>
 <context>

@@ -51,7 +51,7 @@ QWidget* SettingsForm::makeEditor(const SettingField& field) {
         case SettingField::Type::Choice: {
             auto* combo = new QComboBox(this);
             for (const devices::SettingChoice& c : field.choices)
-                combo->addItem(c.label, c.value);
+                combo->addItem(c.label, c.value);  // labels again in applyTexts()
             connect(combo, &QComboBox::currentIndexChanged, this, [this] {
                 updateVisibility();
                 if (!m_filling) emit edited();
@@ -85,9 +85,6 @@ QWidget* SettingsForm::makeEditor(const SettingField& field) {
         case SettingField::Type::Text:
         case SettingField::Type::Folder: {
             auto* edit = new QLineEdit(this);
-            if (field.type != SettingField::Type::Text && field.type != SettingField::Type::Folder &&
-                field.minimum < field.maximum)
-                edit->setPlaceholderText(tr("%1 to %2").arg(field.minimum).arg(field.maximum));
             connect(edit, &QLineEdit::textEdited, this, [this] {
                 if (!m_filling) emit edited();
             });
@@ -104,18 +101,17 @@ void SettingsForm::setSchema(const devices::SettingsSchema& schema, const QVaria
     for (const SettingField& field : schema) {
         Row row;
         row.field = field;
-        row.label = new QLabel(field.label, this);
+        row.label = new QLabel(this);
         row.editor = makeEditor(field);
         row.editor->setObjectName(QStringLiteral("field_") + field.key);
-        row.editor->setToolTip(field.help);
         row.editor->setMinimumWidth(220);
         auto* editorLine = new QWidget(this);
         auto* line = new QHBoxLayout(editorLine);
         line->setContentsMargins(0, 0, 0, 0);
         line->addWidget(row.editor, 1);
-        auto* unit = new QLabel(field.unit, editorLine);
-        unit->setObjectName(QStringLiteral("FieldUnit"));
-        line->addWidget(unit);
+        row.unit = new QLabel(editorLine);
+        row.unit->setObjectName(QStringLiteral("FieldUnit"));
+        line->addWidget(row.unit);
         row.issue = new QLabel(this);
         row.issue->setObjectName(QStringLiteral("FieldIssue"));
         row.issue->setWordWrap(true);
@@ -128,9 +124,35 @@ void SettingsForm::setSchema(const devices::SettingsSchema& schema, const QVaria
         stack->addWidget(row.issue);
         row.line = column;
         m_layout->addRow(row.label, column);
+        applyTexts(row);
         m_rows.append(row);
     }
     setValues(devices::withDefaults(schema, values));
+}
+
+void SettingsForm::applyTexts(const Row& row) {
+    const SettingField& field = row.field;
+    row.label->setText(field.label);
+    row.unit->setText(field.unit);
+    row.editor->setToolTip(field.help);
+    if (auto* combo = qobject_cast<QComboBox*>(row.editor); combo && field.type == SettingField::Type::Choice) {
+        for (const devices::SettingChoice& c : field.choices)
+            if (const int index = combo->findData(c.value); index >= 0) combo->setItemText(index, c.label);
+    } else if (auto* edit = qobject_cast<QLineEdit*>(row.editor);
+               edit && (field.type == SettingField::Type::Integer || field.type == SettingField::Type::Number) &&
+               field.minimum < field.maximum) {
+        edit->setPlaceholderText(tr("%1 to %2").arg(field.minimum).arg(field.maximum));
+    }
+}
+
+void SettingsForm::setTexts(const devices::SettingsSchema& schema) {
+    for (Row& row : m_rows) {
+        for (const SettingField& field : schema) {
+            if (field.key != row.field.key) continue;
+            row.field = field;
+            applyTexts(row);
+        }
+    }
 }
 
 void SettingsForm::writeEditor(const Row& row, const QVariant& value) {

@@ -22,6 +22,10 @@ public:
 
     /// Rebuilds the editors for `schema` and fills them with `values` (defaults where missing).
     void setSchema(const devices::SettingsSchema& schema, const QVariantMap& values);
+    /// Takes the texts of `schema` (labels, units, help, choice labels, range hints) for the rows
+    /// with the same keys, keeping the editors and what is typed in them: the schema built again
+    /// after a language change.
+    void setTexts(const devices::SettingsSchema& schema);
     /// Fills the editors again (e.g. revert to the saved settings).
     void setValues(const QVariantMap& values);
     /// The values as typed: numbers converted when they parse, text otherwise (so validation can
@@ -42,11 +46,14 @@ private:
     struct Row {
         devices::SettingField field;
         QLabel* label = nullptr;
+        QLabel* unit = nullptr;
         QWidget* editor = nullptr;
         QWidget* line = nullptr;  ///< editor, unit and message: hidden together
         QLabel* issue = nullptr;
     };
     QWidget* makeEditor(const devices::SettingField& field);
+    /// Label, unit, tooltip, choice labels and range hint of `row` from its field.
+    void applyTexts(const Row& row);
     QVariant readEditor(const Row& row) const;
     void writeEditor(const Row& row, const QVariant& value);
     void updateVisibility();

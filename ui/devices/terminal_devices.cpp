@@ -10,17 +10,17 @@ namespace {
 
 const QString kSimulator = QStringLiteral("simulator");
 
-/// Name of the simulator instance of `kind` made on a first start.
+/// Name of the simulator instance of `kind` made on a first start, in the language of that start.
 QString simulatorName(devices::DeviceKind kind) {
     switch (kind) {
         case devices::DeviceKind::Gauge:
-            return QStringLiteral("Simulated gauge micrometer");
+            return TerminalDevices::tr("Simulated gauge micrometer");
         case devices::DeviceKind::Probe:
-            return QStringLiteral("Simulated probe mandrel");
+            return TerminalDevices::tr("Simulated probe mandrel");
         case devices::DeviceKind::DriveCurrent:
-            return QStringLiteral("Simulated drive-current readout");
+            return TerminalDevices::tr("Simulated drive-current readout");
         case devices::DeviceKind::CorrectionOutput:
-            return QStringLiteral("Simulated CNC output");
+            return TerminalDevices::tr("Simulated CNC output");
     }
     return {};
 }

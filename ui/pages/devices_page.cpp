@@ -646,6 +646,16 @@ void DevicesPage::retranslate() {
     fillTypes();
     updateListTones();
     refreshStatus();
+    // The plugins' texts come translated when asked for: the schema again for the form (what is
+    // typed stays), the type line, the form's messages and the status bar's device summary.
+    if (m_selection) {
+        if (const devices::DevicePlugin* plugin = m_manager->plugin(m_selection->pluginId)) {
+            m_form->setTexts(plugin->settingsSchema(m_selection->kind));
+            m_typeText->setText(typeName(m_selection->pluginId, m_selection->kind));
+            validateForm();
+        }
+    }
+    if (m_bridge) m_bridge->update();
 }
 
 }  // namespace tt::ui
