@@ -1,10 +1,13 @@
 #include "ui/main_window.h"
 
+#include <algorithm>
+
 #include <trueturn/version.h>
 #include <QActionGroup>
 #include <QApplication>
 #include <QButtonGroup>
 #include <QEvent>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
@@ -209,8 +212,19 @@ void MainWindow::changeEvent(QEvent* event) {
 
 void MainWindow::retranslate() {
     setWindowTitle(tr("TrueTurn — adaptive lathe control"));
-    for (int i = 0; i < m_pages.size(); ++i)
-        m_navButtons[i]->setText(m_pages[i]->title());
+    int widestButton = 0;
+    for (int i = 0; i < m_pages.size(); ++i) {
+        QToolButton* button = m_navButtons[i];
+        button->setText(m_pages[i]->title());
+        button->ensurePolished();
+        QFont bold = button->font();  // the current page's name is shown in bold
+        bold.setBold(true);
+        const int boldExtra = QFontMetrics(bold).horizontalAdvance(button->text()) -
+                              button->fontMetrics().horizontalAdvance(button->text());
+        widestButton = std::max(widestButton, button->sizeHint().width() + boldExtra);
+    }
+    for (QToolButton* button : m_navButtons)
+        button->setMinimumWidth(widestButton);  // a wide page never squeezes a page name in the rail
     m_pageTitle->setText(m_pages[m_stack->currentIndex()]->title());
     m_fileMenu->setTitle(tr("&File"));
     m_quitAction->setText(tr("&Quit"));

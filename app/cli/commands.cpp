@@ -12,12 +12,8 @@ Command makeBenchCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
-        makeFitProfileCommand(),
-        makeLineariseCommand(),
-        makeBoringCommand(),
-        makeLqgCommand(),
-        makeSimulateCommand(),
-        makeBenchCommand(),
+        makeFitProfileCommand(), makeLineariseCommand(), makeBoringCommand(),
+        makeLqgCommand(),        makeSimulateCommand(),  makeBenchCommand(),
     };
     return all;
 }

@@ -1540,10 +1540,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>k %1 N/mm%2 · k_p %3 N/A · L/d %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source> (measured)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1581,6 +1577,23 @@
     </message>
     <message>
         <source>Diameter error, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k %1 N/mm%2 · k_p %3 N/A
+L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2058,6 +2071,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Current difference against the load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> A</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2761,6 +2782,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Captured points stay here when you go back or cancel.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source> µm</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeChoosePage</name>
@@ -2802,6 +2827,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Y — tangential</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> bit</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2926,6 +2955,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>1. Clamp the boring bar as for cutting; mount the instrument on the lathe bed touching the tool tip in the chosen plane.
 2. With the bar unloaded, set the instrument to zero.
 3. Load the bar in both directions in steps (a screw jack against the tool block) over the whole travel of the probe; at each step read the instrument and capture the point. Aim for 15 to 25 points, both signs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µm</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3777,6 +3810,11 @@ Your edits are still here.</source>
     </message>
     <message>
         <source>%1&lt;br&gt;&lt;br&gt;The table is stored in the run history database; check the database on the Settings page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply changes</source>
+        <comment>button</comment>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1283,9 +1283,9 @@
     <message numerus="yes">
         <source>%n ready</source>
         <translation>
-            <numerusform>готово: %n</numerusform>
-            <numerusform>готово: %n</numerusform>
-            <numerusform>готово: %n</numerusform>
+            <numerusform>%n готово</numerusform>
+            <numerusform>%n готовы</numerusform>
+            <numerusform>%n готово</numerusform>
         </translation>
     </message>
     <message>
@@ -1484,7 +1484,7 @@
     </message>
     <message>
         <source>Simulate a silent read-out</source>
-        <translation>Имитировать отказ датчика (молчание)</translation>
+        <translation>Имитация: датчик молчит</translation>
     </message>
     <message>
         <source>Start</source>
@@ -1543,8 +1543,10 @@
         <translation>ПЛК стенда</translation>
     </message>
     <message>
-        <source>k %1 N/mm%2 · k_p %3 N/A · L/d %4</source>
-        <translation>k %1 Н/мм%2 · k_p %3 Н/А · L/d %4</translation>
+        <source>k %1 N/mm%2 · k_p %3 N/A
+L/d %4</source>
+        <translation>k %1 Н/мм%2 · k_p %3 Н/А
+L/d %4</translation>
     </message>
     <message>
         <source> (measured)</source>
@@ -1576,7 +1578,7 @@
     </message>
     <message>
         <source>Bore diameter error along the bore (simulated station)</source>
-        <translation>Погрешность диаметра по длине отверстия (симулированный стенд)</translation>
+        <translation>Погрешность Ø по длине отверстия (симулятор)</translation>
     </message>
     <message>
         <source>Position in the bore, mm</source>
@@ -1584,7 +1586,19 @@
     </message>
     <message>
         <source>Diameter error, mm</source>
-        <translation>Погрешность диаметра, мм</translation>
+        <translation>Ошибка Ø, мм</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> мм</translation>
+    </message>
+    <message>
+        <source> mm/s</source>
+        <translation> мм/с</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> мс</translation>
     </message>
 </context>
 <context>
@@ -2066,6 +2080,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Current difference against the load</source>
         <translation>Разность токов в зависимости от нагрузки</translation>
     </message>
+    <message>
+        <source> N</source>
+        <translation> Н</translation>
+    </message>
+    <message>
+        <source> A</source>
+        <translation> А</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::KpSavePage</name>
@@ -2490,7 +2512,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Only rejected and unmeasured</source>
-        <translation>Только отклонённые и неизмеренные</translation>
+        <translation>Только непринятые значения</translation>
     </message>
     <message>
         <source>Refresh</source>
@@ -2768,6 +2790,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Captured points stay here when you go back or cancel.</source>
         <translation>Снятые точки сохраняются, если вернуться назад или отменить.</translation>
     </message>
+    <message>
+        <source> µm</source>
+        <translation> мкм</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeChoosePage</name>
@@ -2810,6 +2836,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Y — tangential</source>
         <translation>Y — тангенциальная</translation>
+    </message>
+    <message>
+        <source> bit</source>
+        <translation> бит</translation>
     </message>
 </context>
 <context>
@@ -2937,6 +2967,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 2. При ненагруженной оправке установите прибор на ноль.
 3. Нагружайте оправку ступенями в обоих направлениях (винтовым домкратом, упёртым в резцедержатель) на весь ход датчика; на каждой ступени снимите показание прибора и зафиксируйте точку. Желательно 15–25 точек обоих знаков.</translation>
     </message>
+    <message>
+        <source> µm</source>
+        <translation> мкм</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeSavePage</name>
@@ -3053,11 +3087,11 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>diameter error, mm</source>
-        <translation>погрешность диаметра, мм</translation>
+        <translation>погрешность Ø, мм</translation>
     </message>
     <message>
         <source>Error at the points, last %1 parts</source>
-        <translation>Погрешность в точках, последние %1 дет.</translation>
+        <translation>Погрешность в точках, посл. %1 дет.</translation>
     </message>
     <message>
         <source>part</source>
@@ -3177,7 +3211,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Delay z, parts</source>
-        <translation>Запаздывание z, дет.</translation>
+        <translation>Задержка z, дет.</translation>
     </message>
     <message>
         <source>Speed</source>
@@ -3197,19 +3231,19 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>×1 (6 min a part)</source>
-        <translation>×1 (6 мин на деталь)</translation>
+        <translation>×1 (6 мин/дет.)</translation>
     </message>
     <message>
         <source>×60 (6 s a part)</source>
-        <translation>×60 (6 с на деталь)</translation>
+        <translation>×60 (6 с/дет.)</translation>
     </message>
     <message>
         <source>×360 (1 s a part)</source>
-        <translation>×360 (1 с на деталь)</translation>
+        <translation>×360 (1 с/дет.)</translation>
     </message>
     <message>
         <source>×3600 (fastest)</source>
-        <translation>×3600 (максимально)</translation>
+        <translation>×3600 (макс.)</translation>
     </message>
     <message>
         <source>Machine</source>
@@ -3217,11 +3251,11 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Simulated lathe (built in)</source>
-        <translation>Симулятор станка (встроенный)</translation>
+        <translation>Симулятор станка</translation>
     </message>
     <message>
         <source>Real lathe (Devices page)</source>
-        <translation>Реальный станок (страница «Устройства»)</translation>
+        <translation>Реальный станок («Устройства»)</translation>
     </message>
     <message>
         <source>CNC output</source>
@@ -3588,7 +3622,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Redo: %1</source>
-        <translation>Повторить: %1</translation>
+        <translation>Вернуть: %1</translation>
     </message>
     <message>
         <source>Fix before applying: %1</source>
@@ -3612,7 +3646,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Apply changes</source>
-        <translation>Применить изменения</translation>
+        <translation>Применение изменений</translation>
     </message>
     <message>
         <source>These rows need fixing first:
@@ -3720,7 +3754,7 @@ Your edits are still here.</source>
     </message>
     <message>
         <source>Add tool</source>
-        <translation>Добавить инструмент</translation>
+        <translation>Добавить</translation>
     </message>
     <message>
         <source>Remove</source>
@@ -3732,15 +3766,15 @@ Your edits are still here.</source>
     </message>
     <message>
         <source>Redo</source>
-        <translation>Повторить</translation>
+        <translation>Вернуть</translation>
     </message>
     <message>
         <source>Import CSV…</source>
-        <translation>Импорт CSV…</translation>
+        <translation>Импорт…</translation>
     </message>
     <message>
         <source>Export CSV…</source>
-        <translation>Экспорт CSV…</translation>
+        <translation>Экспорт…</translation>
     </message>
     <message>
         <source>Discard</source>
@@ -3789,6 +3823,11 @@ Your edits are still here.</source>
     <message>
         <source>%1&lt;br&gt;&lt;br&gt;The table is stored in the run history database; check the database on the Settings page.</source>
         <translation>%1&lt;br&gt;&lt;br&gt;Таблица хранится в базе данных истории серий; проверьте базу данных на странице «Настройки».</translation>
+    </message>
+    <message>
+        <source>Apply changes</source>
+        <comment>button</comment>
+        <translation>Применить</translation>
     </message>
 </context>
 </TS>

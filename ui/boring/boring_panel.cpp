@@ -180,22 +180,19 @@ void BoringPanel::buildLayout() {
     m_maxOffset->setRange(0.01, 2.0);
     m_maxOffset->setDecimals(3);
     m_maxOffset->setSingleStep(0.01);
-    m_maxOffset->setSuffix(QStringLiteral(" mm"));
     m_maxOffset->setValue(m_scenarioProblem.isEmpty() ? m_scenario.limits.maxOffsetMm : 0.5);
     m_maxRate->setRange(0.001, 1.0);
     m_maxRate->setDecimals(3);
     m_maxRate->setSingleStep(0.005);
-    m_maxRate->setSuffix(QStringLiteral(" mm/s"));
     m_maxRate->setValue(m_scenarioProblem.isEmpty() ? m_scenario.limits.maxRateMmPerS : 0.05);
     m_plcCycle->setRange(10, 100);
-    m_plcCycle->setSuffix(QStringLiteral(" ms"));
     m_plcCycle->setValue(m_scenarioProblem.isEmpty() ? static_cast<int>(std::lround(m_scenario.plcCycleS * 1000.0))
                                                      : 20);
 
     m_toolInfo->setWordWrap(true);
-    m_toolInfo->setStyleSheet(QStringLiteral("color: #38434f; font-size: 12pt;"));
+    m_toolInfo->setStyleSheet(QStringLiteral("color: #38434f; font-size: 11pt;"));
     m_form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    m_form->setVerticalSpacing(6);
+    m_form->setVerticalSpacing(4);
     m_form->addRow(m_sourceLabel, m_source);
     m_form->addRow(m_planeLabel, m_plane);
     m_form->addRow(m_toolLabel, m_tool);
@@ -740,6 +737,9 @@ void BoringPanel::retranslate() {
     m_maxOffsetLabel->setText(tr("Offset limit ±"));
     m_maxRateLabel->setText(tr("Rate limit"));
     m_plcCycleLabel->setText(tr("PLC cycle"));
+    m_maxOffset->setSuffix(tr(" mm"));
+    m_maxRate->setSuffix(tr(" mm/s"));
+    m_plcCycle->setSuffix(tr(" ms"));
     m_segmentLabel->setText(tr("Cutting"));
     m_speedLabel->setText(tr("Speed"));
     m_silent->setText(tr("Simulate a silent read-out"));
@@ -773,7 +773,7 @@ void BoringPanel::retranslate() {
     if (stationOutput >= 0) m_output->setItemText(stationOutput, tr("Station's PLC"));
     if (const std::optional<core::ToolRecord> tool = currentTool()) {
         const double k = core::effectiveStiffnessNPerMm(*tool);
-        m_toolInfo->setText(tr("k %1 N/mm%2 · k_p %3 N/A · L/d %4")
+        m_toolInfo->setText(tr("k %1 N/mm%2 · k_p %3 N/A\nL/d %4")
                                 .arg(QString::number(k, 'f', 0), tool->measured ? tr(" (measured)") : QString(),
                                      tool->currentToForceGainNPerA > 0.0
                                          ? QString::number(tool->currentToForceGainNPerA, 'f', 1)

@@ -145,10 +145,8 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     m_load->setRange(-20000.0, 20000.0);
     m_load->setDecimals(0);
     m_load->setSingleStep(100.0);
-    m_load->setSuffix(QStringLiteral(" N"));
     m_typed->setRange(-500.0, 500.0);
     m_typed->setDecimals(3);
-    m_typed->setSuffix(QStringLiteral(" A"));
     for (QDoubleSpinBox* s : {m_load, m_typed})
         s->setMinimumWidth(170);
     m_progress->setRange(0, 100);
@@ -328,6 +326,8 @@ void KpLoadsPage::refresh() {
 
 void KpLoadsPage::retranslate() {
     setTitle(tr("Known loads"));
+    m_load->setSuffix(tr(" N"));
+    m_typed->setSuffix(tr(" A"));
     KpDriveSource* d = m_ctx.drive();
     setSubTitle(d && d->canApplyLoad()
                     ? tr("Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.")

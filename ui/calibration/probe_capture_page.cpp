@@ -56,7 +56,6 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     for (QDoubleSpinBox* s : {m_jack, m_reference}) {
         s->setRange(-5000.0, 5000.0);
         s->setDecimals(1);
-        s->setSuffix(QStringLiteral(" µm"));
         s->setMinimumWidth(170);
     }
     m_jack->setSingleStep(50.0);
@@ -255,6 +254,8 @@ void ProbeCapturePage::retranslate() {
     m_jackLabel->setText(tr("Simulator jack"));
     m_setJack->setText(tr("Bend the bar"));
     m_referenceLabel->setText(tr("Reference reading"));
+    for (QDoubleSpinBox* s : {m_jack, m_reference})
+        s->setSuffix(tr(" µm"));
     m_capture->setText(tr("Capture point"));
     m_codeLabel->setText(tr("ADC code (typed)"));
     m_typed->setText(tr("Add typed point"));

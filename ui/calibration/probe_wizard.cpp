@@ -63,7 +63,6 @@ ProbeChoosePage::ProbeChoosePage(ProbeWizardContext& context, QWidget* parent)
     m_plane->setObjectName(QStringLiteral("planeCombo"));
     m_bits->setObjectName(QStringLiteral("adcBitsSpin"));
     m_bits->setRange(core::kMinAdcBits, core::kMaxAdcBits);
-    m_bits->setSuffix(QStringLiteral(" bit"));
     m_plane->addItem(QString(), 0);
     m_plane->addItem(QString(), 1);
     auto* form = new QFormLayout(this);
@@ -119,6 +118,7 @@ void ProbeChoosePage::retranslate() {
     m_probeLabel->setText(tr("Probe mandrel"));
     m_planeLabel->setText(tr("Bending plane"));
     m_bitsLabel->setText(tr("ADC resolution"));
+    m_bits->setSuffix(tr(" bit"));
     m_plane->setItemText(0, tr("X — radial (bore diameter)"));
     m_plane->setItemText(1, tr("Y — tangential"));
 }
@@ -140,7 +140,6 @@ ProbeReferencePage::ProbeReferencePage(ProbeWizardContext& context, QWidget* par
     m_resolution->setRange(0.1, 10.0);
     m_resolution->setDecimals(1);
     m_resolution->setSingleStep(0.5);
-    m_resolution->setSuffix(QStringLiteral(" µm"));
     auto* form = new QFormLayout(this);
     form->setVerticalSpacing(16);
     form->addRow(m_kindLabel, m_kind);
@@ -166,6 +165,7 @@ void ProbeReferencePage::retranslate() {
     m_kind->setItemText(0, tr("Dial indicator"));
     m_kind->setItemText(1, tr("Micrometer"));
     m_resolutionLabel->setText(tr("Division of the instrument"));
+    m_resolution->setSuffix(tr(" µm"));
     m_instructions->setText(
         tr("1. Clamp the boring bar as for cutting; mount the instrument on the lathe bed touching the tool tip "
            "in the chosen plane.\n2. With the bar unloaded, set the instrument to zero.\n3. Load the bar in both "

@@ -1,7 +1,7 @@
 #include "ui/pages/page_factory.h"
 
-#include "ui/pages/devices_page.h"
 #include "ui/pages/calibration_page.h"
+#include "ui/pages/devices_page.h"
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/run_page.h"

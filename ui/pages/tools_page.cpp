@@ -166,12 +166,15 @@ void ToolsPage::buildEditor() {
     for (QPushButton* b : {m_add, m_remove, m_undo, m_redo, m_import, m_export})
         buttons->addWidget(b);
     buttons->addStretch(1);
-    buttons->addWidget(m_discard);
-    buttons->addWidget(m_apply);
+    // Discard and Apply sit beside the message that counts the pending changes they act on.
+    auto* pending = new QHBoxLayout;
+    pending->addWidget(m_status, 1);
+    pending->addWidget(m_discard);
+    pending->addWidget(m_apply);
     auto* layout = new QVBoxLayout(m_editor);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(buttons);
-    layout->addWidget(m_status);
+    layout->addLayout(pending);
     layout->addWidget(m_tabs, 1);
 
     QUndoStack* undo = m_model->undoStack();
@@ -283,6 +286,7 @@ bool ToolsPage::requireOperator(const QString& action) {
 void ToolsPage::showStatus(const QString& text, bool problem) {
     m_lastStatus = text;
     m_lastStatusIsProblem = problem;
+    m_lastStatusIsHint = false;
     m_status->setText(text);
     m_status->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
 }
@@ -312,8 +316,10 @@ void ToolsPage::updateState() {
         showStatus(tr("Fix before applying: %1").arg(problems.join(QStringLiteral("; "))), true);
     else if (pending > 0)
         showStatus(tr("Changed tools: %1 (highlighted). They are not stored until you apply them.").arg(pending));
-    else if (m_lastStatusIsProblem || m_lastStatus.isEmpty())
+    else if (m_lastStatusIsProblem || m_lastStatus.isEmpty() || m_lastStatusIsHint) {
         showStatus(tr("All changes are applied. Double-click a cell to edit it."));
+        m_lastStatusIsHint = true;
+    }
 }
 
 void ToolsPage::addTool() {
@@ -517,7 +523,7 @@ void ToolsPage::retranslate() {
     m_import->setText(tr("Import CSV…"));
     m_export->setText(tr("Export CSV…"));
     m_discard->setText(tr("Discard"));
-    m_apply->setText(tr("Apply changes"));
+    m_apply->setText(tr("Apply changes", "button"));
     m_addMaterial->setText(tr("Add material"));
     m_removeMaterial->setText(tr("Remove material"));
     m_materialsHint->setText(
@@ -542,6 +548,8 @@ void ToolsPage::retranslate() {
                                tr("%1<br><br>The table is stored in the run history database; check the database "
                                   "on the Settings page.")
                                    .arg(m_storeError.toHtmlEscaped()));
+    for (QTableView* view : {m_table, m_auditView, m_materialsView})
+        view->resizeColumnsToContents();  // the headers are longer or shorter in the new language
     updateState();
 }
 

@@ -84,6 +84,7 @@ private:
     QString m_storeError;
     QString m_lastStatus;
     bool m_lastStatusIsProblem = false;
+    bool m_lastStatusIsHint = false;  ///< the idle hint, shown again in a new language
     QString m_importFile;
 
     ToolTableModel* m_model;

@@ -68,6 +68,10 @@ void Chart::setLegendBelow(int columns) {
         layout->addElement(layout->rowCount() - 1, 0, m_plot->legend);
         layout->setRowStretchFactor(layout->rowCount() - 1, 0.001);
     }
+    // A grid column is as wide as the smallest maximum of its elements, and a legend's maximum is
+    // the width of its entries: without this a short (or empty) legend narrows the axes above it.
+    constexpr int kUnlimitedWidth = 100000;
+    m_plot->legend->setMaximumSize(kUnlimitedWidth, QWIDGETSIZE_MAX);
     m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     m_plot->legend->setWrap(std::max(1, columns));
     m_plot->legend->setMargins(QMargins(4, 2, 4, 2));

@@ -330,6 +330,7 @@ void ShaftRunPanel::retranslate() {
         m_gauge->setItemText(byHand, tr("Typed in by hand"));
     m_manualMode->setText(tr("Diameters by hand"));
     m_skip->setText(tr("Part not measured"));
+    m_pause->setText(m_snapshot.state == core::LoopState::Paused ? tr("Continue") : tr("Pause"));
     m_alarmsTitle->setText(tr("Alarms"));
     m_profile->retranslate();
     m_manual->retranslate();
