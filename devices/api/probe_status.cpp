@@ -4,6 +4,17 @@
 
 namespace tt::devices {
 
+namespace {
+
+probe::SessionConfig sessionConfig(const QVariantMap& settings) {
+    probe::SessionConfig c;
+    c.rateHz = settings.value(QStringLiteral("rateHz"), c.rateHz).toInt();
+    c.silenceTimeoutS =
+        settings.value(QStringLiteral("silenceTimeoutMs"), c.silenceTimeoutS * 1000.0).toDouble() / 1000.0;
+    c.replyTimeoutS = settings.value(QStringLiteral("replyTimeoutMs"), c.replyTimeoutS * 1000.0).toDouble() / 1000.0;
+    return c;
+}
+
 TableUploadStatus toUploadStatus(const probe::ProbeSession::UploadState& state) {
     TableUploadStatus s;
     s.progress = state.progress;
@@ -71,6 +82,55 @@ QList<DeviceStatistic> probeStatistics(const probe::ProbeSession& session, std::
                        .arg(info->sizeBytes)
                  : QCoreApplication::translate("ProbeStatus", "none (raw ADC codes only)")});
     return list;
+}
+
+}  // namespace
+
+ProbeSessionPorts::ProbeSessionPorts(const QVariantMap& settings) : m_session(sessionConfig(settings)) {}
+
+std::optional<core::ProbeSample> ProbeSessionPorts::takeSample() {
+    if (m_samples.empty()) return std::nullopt;
+    const core::ProbeSample s = m_samples.front();
+    m_samples.pop_front();
+    return s;
+}
+
+void ProbeSessionPorts::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
+    m_session.uploadTable(std::move(image), version, crc32c);
+}
+
+TableUploadStatus ProbeSessionPorts::uploadStatus() const {
+    return toUploadStatus(m_session.uploadState());
+}
+
+std::optional<MandrelTableInfo> ProbeSessionPorts::tableInfo() const {
+    return toTableInfo(m_session.tableInfo());
+}
+
+std::optional<MandrelInfo> ProbeSessionPorts::mandrelInfo() const {
+    return toMandrelInfo(m_session);
+}
+
+void ProbeSessionPorts::queueSessionSamples() {
+    for (const core::ProbeSample& s : m_session.takeSamples()) {
+        if (m_samples.size() == kMaxQueued) {
+            m_samples.pop_front();
+            ++m_overflow;
+        }
+        m_samples.push_back(s);
+    }
+}
+
+QString ProbeSessionPorts::lastSampleText() const {
+    const auto& last = m_session.lastSample();
+    if (!last) return {};
+    return QCoreApplication::translate("ProbeStatus", "%1 / %2 mm")
+        .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
+        .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4);
+}
+
+QList<DeviceStatistic> ProbeSessionPorts::sessionStatistics() const {
+    return probeStatistics(m_session, m_overflow);
 }
 
 }  // namespace tt::devices

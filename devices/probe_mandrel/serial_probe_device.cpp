@@ -2,27 +2,14 @@
 
 #include <QCoreApplication>
 
-#include "devices/api/probe_status.h"
-
 namespace tt::devices {
 
 namespace {
-
-constexpr std::size_t kMaxQueued = 8192;
 constexpr int kTickMs = 5;
-
-probe::SessionConfig sessionConfig(const QVariantMap& settings) {
-    probe::SessionConfig c;
-    c.rateHz = settings.value(QStringLiteral("rateHz"), 200).toInt();
-    c.silenceTimeoutS = settings.value(QStringLiteral("silenceTimeoutMs"), 500).toDouble() / 1000.0;
-    c.replyTimeoutS = settings.value(QStringLiteral("replyTimeoutMs"), 300).toDouble() / 1000.0;
-    return c;
-}
-
 }  // namespace
 
 SerialProbeDevice::SerialProbeDevice(const QVariantMap& settings, const DeviceContext& context)
-    : DeviceBase(DeviceKind::Probe, context), m_session(sessionConfig(settings)) {
+    : DeviceBase(DeviceKind::Probe, context), ProbeSessionPorts(settings) {
     m_link = std::make_unique<SerialLink>(
         settings, QCoreApplication::translate("ProbeMandrel", "probe mandrel"),
         SerialLink::Callbacks{[this](const QByteArray& bytes) { bytesArrived(bytes); }, [this] { opened(); },
@@ -89,17 +76,8 @@ void SerialProbeDevice::tick() {
     const std::vector<std::uint8_t> out = m_session.poll(now());
     if (!out.empty())
         m_link->write(QByteArray(reinterpret_cast<const char*>(out.data()), static_cast<qsizetype>(out.size())));
-    for (const core::ProbeSample& s : m_session.takeSamples()) {
-        if (m_samples.size() == kMaxQueued) {
-            m_samples.pop_front();
-            ++m_overflow;
-        }
-        m_samples.push_back(s);
-    }
-    if (const auto& last = m_session.lastSample())
-        setLiveValue(QCoreApplication::translate("ProbeMandrel", "%1 / %2 mm")
-                         .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
-                         .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
+    queueSessionSamples();
+    if (const QString live = lastSampleText(); !live.isEmpty()) setLiveValue(live);
     if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
         reportError(QString::fromStdString(m_session.lastError()));
     updateState();
@@ -126,33 +104,6 @@ void SerialProbeDevice::updateState() {
         case probe::ProbeSession::Link::Idle:
             break;
     }
-}
-
-std::optional<core::ProbeSample> SerialProbeDevice::takeSample() {
-    if (m_samples.empty()) return std::nullopt;
-    const core::ProbeSample s = m_samples.front();
-    m_samples.pop_front();
-    return s;
-}
-
-void SerialProbeDevice::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
-    m_session.uploadTable(std::move(image), version, crc32c);
-}
-
-TableUploadStatus SerialProbeDevice::uploadStatus() const {
-    return toUploadStatus(m_session.uploadState());
-}
-
-std::optional<MandrelTableInfo> SerialProbeDevice::tableInfo() const {
-    return toTableInfo(m_session.tableInfo());
-}
-
-std::optional<MandrelInfo> SerialProbeDevice::mandrelInfo() const {
-    return toMandrelInfo(m_session);
-}
-
-QList<DeviceStatistic> SerialProbeDevice::statistics() const {
-    return probeStatistics(m_session, m_overflow);
 }
 
 }  // namespace tt::devices

@@ -3,12 +3,11 @@
 #include <QByteArray>
 #include <QTimer>
 #include <QVariantMap>
-#include <deque>
 #include <memory>
 
 #include "devices/api/device_base.h"
+#include "devices/api/probe_status.h"
 #include "devices/api/serial_link.h"
-#include "devices/parsers/probe_session.h"
 
 namespace tt::devices {
 
@@ -17,7 +16,7 @@ namespace tt::devices {
 /// lost/duplicated/corrupt frames counted and never used, silence detection, table upload with
 /// verification. The port is reopened after unplugging and the handshake repeated.
 /// Settings: the serial fields, rateHz, silenceTimeoutMs, replyTimeoutMs.
-class SerialProbeDevice final : public DeviceBase, public core::DeflectionProbe, public TableUploadTarget {
+class SerialProbeDevice final : public DeviceBase, public ProbeSessionPorts {
 public:
     SerialProbeDevice(const QVariantMap& settings, const DeviceContext& context);
     ~SerialProbeDevice() override;
@@ -26,15 +25,9 @@ public:
     void close() override;
     void testConnection() override;
     core::DeviceHealth health() const override { return DeviceBase::health(); }
-    std::optional<core::ProbeSample> takeSample() override;
     core::DeflectionProbe* deflectionProbe() override { return this; }
     TableUploadTarget* tableUploadTarget() override { return this; }
-    QList<DeviceStatistic> statistics() const override;
-
-    void uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) override;
-    TableUploadStatus uploadStatus() const override;
-    std::optional<MandrelTableInfo> tableInfo() const override;
-    std::optional<MandrelInfo> mandrelInfo() const override;
+    QList<DeviceStatistic> statistics() const override { return sessionStatistics(); }
 
 private:
     void opened();
@@ -43,11 +36,8 @@ private:
     void tick();
     void updateState();
 
-    probe::ProbeSession m_session;
     std::unique_ptr<SerialLink> m_link;
     QTimer m_timer;
-    std::deque<core::ProbeSample> m_samples;
-    std::uint64_t m_overflow = 0;
     QString m_linkProblem;
 };
 

@@ -6,22 +6,14 @@ namespace tt::devices {
 
 namespace {
 
-constexpr std::size_t kMaxQueued = 8192;
 /// Commands answered per tick: the in-memory wire is fast, so an upload moves on by several
 /// chunks per 10 ms tick (a 16-bit table of 1025 chunks takes about 0.7 s).
 constexpr int kRoundTripsPerTick = 16;
 
-probe::SessionConfig sessionConfig(const QVariantMap& settings) {
-    probe::SessionConfig c;
-    c.rateHz = settings.value(QStringLiteral("rateHz"), 200).toInt();
-    c.silenceTimeoutS = settings.value(QStringLiteral("silenceTimeoutMs"), 500).toDouble() / 1000.0;
-    return c;
-}
-
 }  // namespace
 
 SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext& context)
-    : SimulatedDevice(DeviceKind::Probe, context, 10), m_session(sessionConfig(settings)) {
+    : SimulatedDevice(DeviceKind::Probe, context, 10), ProbeSessionPorts(settings) {
     const std::array<double, 2> constant{settings.value(QStringLiteral("deflection1Mm"), 0.02).toDouble(),
                                          settings.value(QStringLiteral("deflection2Mm"), -0.005).toDouble()};
     m_source = [constant](double) { return constant; };
@@ -73,17 +65,8 @@ void SimulatedProbe::exchange(double nowS) {
 void SimulatedProbe::tick() {
     const double t = now();
     exchange(t);
-    for (const core::ProbeSample& s : m_session.takeSamples()) {
-        if (m_samples.size() == kMaxQueued) {
-            m_samples.pop_front();
-            ++m_overflow;
-        }
-        m_samples.push_back(s);
-    }
-    if (const auto& last = m_session.lastSample())
-        setLiveValue(QCoreApplication::translate("Simulator", "%1 / %2 mm")
-                         .arg(last->deflectionNm[0] * 1e-6, 0, 'f', 4)
-                         .arg(last->deflectionNm[1] * 1e-6, 0, 'f', 4));
+    queueSessionSamples();
+    if (const QString live = lastSampleText(); !live.isEmpty()) setLiveValue(live);
     if (!m_session.lastError().empty() && QString::fromStdString(m_session.lastError()) != lastError())
         reportError(QString::fromStdString(m_session.lastError()));
     switch (m_session.link()) {
@@ -101,33 +84,6 @@ void SimulatedProbe::tick() {
         case probe::ProbeSession::Link::Idle:
             break;
     }
-}
-
-std::optional<core::ProbeSample> SimulatedProbe::takeSample() {
-    if (m_samples.empty()) return std::nullopt;
-    const core::ProbeSample s = m_samples.front();
-    m_samples.pop_front();
-    return s;
-}
-
-void SimulatedProbe::uploadTable(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
-    m_session.uploadTable(std::move(image), version, crc32c);
-}
-
-TableUploadStatus SimulatedProbe::uploadStatus() const {
-    return toUploadStatus(m_session.uploadState());
-}
-
-std::optional<MandrelTableInfo> SimulatedProbe::tableInfo() const {
-    return toTableInfo(m_session.tableInfo());
-}
-
-std::optional<MandrelInfo> SimulatedProbe::mandrelInfo() const {
-    return toMandrelInfo(m_session);
-}
-
-QList<DeviceStatistic> SimulatedProbe::statistics() const {
-    return probeStatistics(m_session, m_overflow);
 }
 
 }  // namespace tt::devices

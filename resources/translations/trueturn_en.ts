@@ -789,10 +789,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 / %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>streaming from %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -857,6 +853,10 @@
     </message>
     <message>
         <source>none (raw ADC codes only)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1109,10 +1109,6 @@
     </message>
     <message>
         <source>Refused or failed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 / %2 mm</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1717,6 +1713,25 @@ L/d %4</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::CalibrationWizard</name>
+    <message>
+        <source>&lt; Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next &gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -1921,22 +1936,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <name>tt::ui::KpCalibrationWizard</name>
     <message>
         <source>k_p from known loads</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt; Back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Next &gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Finish</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2649,22 +2648,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <name>tt::ui::ProbeCalibrationWizard</name>
     <message>
         <source>Probe mandrel linearisation</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt; Back</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Next &gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Finish</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cancel</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

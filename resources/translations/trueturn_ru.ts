@@ -791,10 +791,6 @@
         <translation>открытие %1</translation>
     </message>
     <message>
-        <source>%1 / %2 mm</source>
-        <translation>%1 / %2 мм</translation>
-    </message>
-    <message>
         <source>streaming from %1</source>
         <translation>поток данных с %1</translation>
     </message>
@@ -860,6 +856,10 @@
     <message>
         <source>none (raw ADC codes only)</source>
         <translation>нет (только необработанные коды АЦП)</translation>
+    </message>
+    <message>
+        <source>%1 / %2 mm</source>
+        <translation>%1 / %2 мм</translation>
     </message>
 </context>
 <context>
@@ -1112,10 +1112,6 @@
     <message>
         <source>Refused or failed</source>
         <translation>Отклонено или с ошибкой</translation>
-    </message>
-    <message>
-        <source>%1 / %2 mm</source>
-        <translation>%1 / %2 мм</translation>
     </message>
     <message>
         <source>streaming</source>
@@ -1721,6 +1717,25 @@ L/d %4</translation>
     </message>
 </context>
 <context>
+    <name>tt::ui::CalibrationWizard</name>
+    <message>
+        <source>&lt; Back</source>
+        <translation>&lt; Назад</translation>
+    </message>
+    <message>
+        <source>Next &gt;</source>
+        <translation>Далее &gt;</translation>
+    </message>
+    <message>
+        <source>Finish</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -1929,22 +1944,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>k_p from known loads</source>
         <translation>k_p по известным нагрузкам</translation>
-    </message>
-    <message>
-        <source>&lt; Back</source>
-        <translation>&lt; Назад</translation>
-    </message>
-    <message>
-        <source>Next &gt;</source>
-        <translation>Далее &gt;</translation>
-    </message>
-    <message>
-        <source>Finish</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отмена</translation>
     </message>
 </context>
 <context>
@@ -2658,22 +2657,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Probe mandrel linearisation</source>
         <translation>Линеаризация оправки-датчика</translation>
-    </message>
-    <message>
-        <source>&lt; Back</source>
-        <translation>&lt; Назад</translation>
-    </message>
-    <message>
-        <source>Next &gt;</source>
-        <translation>Далее &gt;</translation>
-    </message>
-    <message>
-        <source>Finish</source>
-        <translation>Готово</translation>
-    </message>
-    <message>
-        <source>Cancel</source>
-        <translation>Отмена</translation>
     </message>
 </context>
 <context>

@@ -35,30 +35,18 @@ QString KpWizardContext::operatorName() const {
     return app && app->state ? app->state->operatorName().trimmed() : QString();
 }
 
-namespace {
-
-QLabel* wrapped(QWidget* parent) {
-    auto* l = new QLabel(parent);
-    l->setWordWrap(true);
-    return l;
-}
-
-void colour(QLabel* label, bool problem) {
-    label->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
-}
-
-}  // namespace
+namespace {}  // namespace
 
 // --- 1. Setup -----------------------------------------------------------------------------------
 
 KpSetupPage::KpSetupPage(KpWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_driveLabel(new QLabel(this)),
       m_drive(new QComboBox(this)),
       m_toolsLabel(new QLabel(this)),
       m_tools(new QListWidget(this)),
-      m_instructions(wrapped(this)) {
+      m_instructions(wrappedLabel(this)) {
     m_drive->setObjectName(QStringLiteral("driveCombo"));
     m_tools->setObjectName(QStringLiteral("kpTools"));
     m_tools->setMinimumHeight(160);
@@ -120,7 +108,7 @@ void KpSetupPage::retranslate() {
 // --- 2. Loads -----------------------------------------------------------------------------------
 
 KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_timer(new QTimer(this)),
       m_loadLabel(new QLabel(this)),
@@ -133,7 +121,7 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
       m_progress(new QProgressBar(this)),
       m_table(new QTableWidget(0, 3, this)),
       m_chart(new Chart(this)),
-      m_message(wrapped(this)) {
+      m_message(wrappedLabel(this)) {
     m_load->setObjectName(QStringLiteral("loadSpin"));
     m_measure->setObjectName(QStringLiteral("measureLoad"));
     m_measure->setProperty("role", QStringLiteral("primary"));
@@ -209,7 +197,7 @@ QString KpLoadsPage::message() const {
 
 void KpLoadsPage::showMessage(const QString& text, bool problem) {
     m_message->setText(text);
-    colour(m_message, problem);
+    markProblem(m_message, problem);
 }
 
 bool KpLoadsPage::startMeasurement() {
@@ -345,9 +333,9 @@ void KpLoadsPage::retranslate() {
 // --- 3. Fit -------------------------------------------------------------------------------------
 
 KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
-      m_explanation(wrapped(this)),
+      m_explanation(wrappedLabel(this)),
       m_chart(new Chart(this)),
       m_residuals(new Chart(this)) {
     m_explanation->setObjectName(QStringLiteral("kpExplanation"));
@@ -427,11 +415,11 @@ void KpFitPage::retranslate() {
 // --- 4. Save ------------------------------------------------------------------------------------
 
 KpSavePage::KpSavePage(KpWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
-      m_summary(wrapped(this)),
+      m_summary(wrappedLabel(this)),
       m_save(new QPushButton(this)),
-      m_result(wrapped(this)) {
+      m_result(wrappedLabel(this)) {
     m_save->setObjectName(QStringLiteral("saveKp"));
     m_save->setProperty("role", QStringLiteral("primary"));
     m_result->setObjectName(QStringLiteral("kpSaveResult"));
@@ -462,12 +450,12 @@ bool KpSavePage::save() {
         if (m_ctx.app && m_ctx.app->prompt)
             m_ctx.app->prompt->warn(this, tr("Save k_p"), tr("Enter your name on the Settings page first."));
         m_result->setText(tr("Not saved: no operator name (Settings)."));
-        colour(m_result, true);
+        markProblem(m_result, true);
         return false;
     }
     if (!m_ctx.calibrations || !m_ctx.tools) {
         m_result->setText(tr("The calibration database is not open."));
-        colour(m_result, true);
+        markProblem(m_result, true);
         return false;
     }
     const core::KpFit& f = *m_ctx.session->fit;
@@ -495,7 +483,7 @@ bool KpSavePage::save() {
         m_ctx.calibrations->saveKp(r);
     } catch (const std::exception& e) {
         m_result->setText(tr("Not saved: %1").arg(QString::fromStdString(e.what())));
-        colour(m_result, true);
+        markProblem(m_result, true);
         return false;
     }
     m_ctx.session->saved = true;
@@ -505,7 +493,7 @@ bool KpSavePage::save() {
                           : tr("Saved; k_p %1 N/A written into %2 (recorded in the tool audit).")
                                 .arg(f.kpNPerA, 0, 'f', 2)
                                 .arg(m_ctx.session->toolIds.join(QStringLiteral(", "))));
-    colour(m_result, false);
+    markProblem(m_result, false);
     emit completeChanged();
     return true;
 }
@@ -527,10 +515,8 @@ void KpSavePage::retranslate() {
 KpCalibrationWizard::KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<KpDriveSource*> drives,
                                          storage::CalibrationStore* calibrations, storage::ToolStore* tools,
                                          QWidget* parent)
-    : QWizard(parent), m_ctx{&app, &session, std::move(drives), calibrations, tools} {
-    setObjectName(QStringLiteral("kpWizard"));
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnStartPage, true);
+    : CalibrationWizard(QStringLiteral("kpWizard"), parent),
+      m_ctx{&app, &session, std::move(drives), calibrations, tools} {
     m_setup = new KpSetupPage(m_ctx, this);
     m_loads = new KpLoadsPage(m_ctx, this);
     m_fit = new KpFitPage(m_ctx, this);
@@ -542,21 +528,8 @@ KpCalibrationWizard::KpCalibrationWizard(AppContext& app, KpSession& session, st
     retranslate();
 }
 
-void KpCalibrationWizard::retranslate() {
-    setWindowTitle(tr("k_p from known loads"));
-    setButtonText(QWizard::BackButton, tr("< Back"));
-    setButtonText(QWizard::NextButton, tr("Next >"));
-    setButtonText(QWizard::FinishButton, tr("Finish"));
-    setButtonText(QWizard::CancelButton, tr("Cancel"));
-    m_setup->retranslate();
-    m_loads->retranslate();
-    m_fit->retranslate();
-    m_save->retranslate();
-}
-
-void KpCalibrationWizard::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) retranslate();
-    QWizard::changeEvent(event);
+QString KpCalibrationWizard::titleText() const {
+    return tr("k_p from known loads");
 }
 
 }  // namespace tt::ui

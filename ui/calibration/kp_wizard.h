@@ -1,14 +1,13 @@
 #pragma once
 
 #include <QStringList>
-#include <QWizard>
-#include <QWizardPage>
 #include <optional>
 #include <vector>
 
 #include "core/calibration/kp_calibration.h"
 #include "core/control/dither_force_estimator.h"
 #include "ui/app_context.h"
+#include "ui/calibration/calibration_wizard.h"
 #include "ui/calibration/kp_drive_source.h"
 
 class QComboBox;
@@ -58,13 +57,13 @@ struct KpWizardContext {
 };
 
 /// 1. The drive and the tools that get the new k_p.
-class KpSetupPage : public QWizardPage {
+class KpSetupPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     KpSetupPage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool validatePage() override;
-    void retranslate();
+    void retranslate() override;
     /// Ticks or unticks a tool by id.
     void setToolChecked(const QString& id, bool checked);
 
@@ -79,14 +78,14 @@ private:
 
 /// 2. Known loads: for each load the current difference with dither, measured live over a
 /// window (DitherForceEstimator with k_p = 1 gives ΔI) or typed.
-class KpLoadsPage : public QWizardPage {
+class KpLoadsPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     KpLoadsPage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     void cleanupPage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
 
     void setLoadN(double loadN);
     void setTypedCurrentDifference(double a);
@@ -130,13 +129,13 @@ private:
 };
 
 /// 3. The fit P = k_p ΔI + offset with its residuals.
-class KpFitPage : public QWizardPage {
+class KpFitPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     KpFitPage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
     QString explanation() const;
 
 private:
@@ -147,13 +146,13 @@ private:
 };
 
 /// 4. Save the calibration and write k_p into the chosen tools (audited with the operator's name).
-class KpSavePage : public QWizardPage {
+class KpSavePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     KpSavePage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
     bool save();
 
 private:
@@ -165,14 +164,13 @@ private:
 
 /// The k_p calibration wizard (issue 6, item 5): known loads on the cross slide, the current
 /// difference with dither at each, the fit of k_p, saved and written into the tool table.
-class KpCalibrationWizard : public QWizard {
+class KpCalibrationWizard : public CalibrationWizard {
     Q_OBJECT
 public:
     enum PageId { SetupPage, LoadsPage, FitPage, SavePage };
 
     KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<KpDriveSource*> drives,
                         storage::CalibrationStore* calibrations, storage::ToolStore* tools, QWidget* parent = nullptr);
-    void retranslate();
 
     KpSetupPage* setupPage() const { return m_setup; }
     KpLoadsPage* loadsPage() const { return m_loads; }
@@ -180,7 +178,7 @@ public:
     KpSavePage* savePage() const { return m_save; }
 
 protected:
-    void changeEvent(QEvent* event) override;
+    QString titleText() const override;
 
 private:
     KpWizardContext m_ctx;

@@ -24,7 +24,7 @@ constexpr int kPollMs = 100;
 }  // namespace
 
 ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_timer(new QTimer(this)),
       m_live(new QLabel(this)),
@@ -156,7 +156,7 @@ std::optional<double> ProbeCapturePage::liveCode() const {
 void ProbeCapturePage::showMessage(const QString& text, bool problem) {
     m_messageIsProblem = problem;
     m_message->setText(text);
-    m_message->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
+    markProblem(m_message, problem);
 }
 
 QString ProbeCapturePage::message() const {

@@ -1,7 +1,8 @@
 #pragma once
 
-#include <QWizardPage>
 #include <deque>
+
+#include "ui/calibration/calibration_wizard.h"
 
 class QDoubleSpinBox;
 class QLabel;
@@ -17,14 +18,14 @@ struct ProbeWizardContext;
 /// 3. Capture points: the live ADC code of the chosen plane (averaged), the reference typed from
 /// the dial indicator, a point captured with one press (or typed by hand), the points plotted as
 /// they come. On the simulator a screw jack bends the bar and the indicator reading is filled in.
-class ProbeCapturePage : public QWizardPage {
+class ProbeCapturePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeCapturePage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     void cleanupPage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
 
     /// Reads the probe for `seconds` (the timer calls it with its period; tests call it directly).
     void pollProbe(double seconds);

@@ -14,7 +14,7 @@
 namespace tt::ui {
 
 ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_degreeLabel(new QLabel(this)),
       m_degree(new QComboBox(this)),

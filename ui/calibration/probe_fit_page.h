@@ -1,9 +1,9 @@
 #pragma once
 
-#include <QWizardPage>
 #include <optional>
 
 #include "core/calibration/probe_linearisation.h"
+#include "ui/calibration/calibration_wizard.h"
 
 class QComboBox;
 class QLabel;
@@ -16,13 +16,13 @@ struct ProbeWizardContext;
 /// 4. Fit: the characteristic with degree 2, 3, 4 or chosen by cross-validation, the reason for
 /// the degree in words with each degree's leave-one-out error, the points with the fitted curve,
 /// and the residuals. A non-monotonic fit is refused here, saying where it turns.
-class ProbeFitPage : public QWizardPage {
+class ProbeFitPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeFitPage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
 
     /// 0 = auto, else 2..4; refits.
     void setDegree(int degree);

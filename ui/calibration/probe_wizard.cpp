@@ -37,20 +37,10 @@ QString ProbeWizardContext::operatorName() const {
     return app && app->state ? app->state->operatorName().trimmed() : QString();
 }
 
-namespace {
-
-QLabel* wrapped(QWidget* parent) {
-    auto* l = new QLabel(parent);
-    l->setWordWrap(true);
-    return l;
-}
-
-}  // namespace
-
 // --- 1. Choose ------------------------------------------------------------------------------
 
 ProbeChoosePage::ProbeChoosePage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_probeLabel(new QLabel(this)),
       m_probe(new QComboBox(this)),
@@ -58,7 +48,7 @@ ProbeChoosePage::ProbeChoosePage(ProbeWizardContext& context, QWidget* parent)
       m_plane(new QComboBox(this)),
       m_bitsLabel(new QLabel(this)),
       m_bits(new QSpinBox(this)),
-      m_health(wrapped(this)) {
+      m_health(wrappedLabel(this)) {
     m_probe->setObjectName(QStringLiteral("probeCombo"));
     m_plane->setObjectName(QStringLiteral("planeCombo"));
     m_bits->setObjectName(QStringLiteral("adcBitsSpin"));
@@ -126,13 +116,13 @@ void ProbeChoosePage::retranslate() {
 // --- 2. Reference -----------------------------------------------------------------------------
 
 ProbeReferencePage::ProbeReferencePage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
       m_kindLabel(new QLabel(this)),
       m_kind(new QComboBox(this)),
       m_resolutionLabel(new QLabel(this)),
       m_resolution(new QDoubleSpinBox(this)),
-      m_instructions(wrapped(this)) {
+      m_instructions(wrappedLabel(this)) {
     m_kind->setObjectName(QStringLiteral("referenceCombo"));
     m_resolution->setObjectName(QStringLiteral("resolutionSpin"));
     m_kind->addItem(QString());
@@ -176,7 +166,7 @@ void ProbeReferencePage::retranslate() {
 // --- 5. Accept --------------------------------------------------------------------------------
 
 ProbeAcceptPage::ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent), m_ctx(context), m_summary(wrapped(this)), m_accept(new QCheckBox(this)) {
+    : CalibrationWizardPage(parent), m_ctx(context), m_summary(wrappedLabel(this)), m_accept(new QCheckBox(this)) {
     m_accept->setObjectName(QStringLiteral("acceptCheck"));
     m_accept->setStyleSheet(
         QStringLiteral("QCheckBox { font-weight: bold; } QCheckBox::indicator { width: 28px; height: 28px; }"));
@@ -239,15 +229,15 @@ void ProbeAcceptPage::retranslate() {
 // --- 6. Save and upload -----------------------------------------------------------------------
 
 ProbeSavePage::ProbeSavePage(ProbeWizardContext& context, QWidget* parent)
-    : QWizardPage(parent),
+    : CalibrationWizardPage(parent),
       m_ctx(context),
-      m_intro(wrapped(this)),
+      m_intro(wrappedLabel(this)),
       m_save(new QPushButton(this)),
       m_upload(new QPushButton(this)),
       m_export(new QPushButton(this)),
       m_progress(new QProgressBar(this)),
-      m_saved(wrapped(this)),
-      m_result(wrapped(this)),
+      m_saved(wrappedLabel(this)),
+      m_result(wrappedLabel(this)),
       m_timer(new QTimer(this)) {
     m_save->setObjectName(QStringLiteral("saveTable"));
     m_save->setProperty("role", QStringLiteral("primary"));
@@ -473,10 +463,8 @@ void ProbeSavePage::retranslate() {
 ProbeCalibrationWizard::ProbeCalibrationWizard(AppContext& app, ProbeCalibrationSession& session,
                                                std::vector<CalibrationProbe*> probes, storage::CalibrationStore* store,
                                                QWidget* parent)
-    : QWizard(parent), m_ctx{&app, &session, std::move(probes), store, std::nullopt} {
-    setObjectName(QStringLiteral("probeWizard"));
-    setWizardStyle(QWizard::ClassicStyle);
-    setOption(QWizard::NoBackButtonOnStartPage, true);
+    : CalibrationWizard(QStringLiteral("probeWizard"), parent),
+      m_ctx{&app, &session, std::move(probes), store, std::nullopt} {
     m_choose = new ProbeChoosePage(m_ctx, this);
     m_reference = new ProbeReferencePage(m_ctx, this);
     m_capture = new ProbeCapturePage(m_ctx, this);
@@ -492,23 +480,8 @@ ProbeCalibrationWizard::ProbeCalibrationWizard(AppContext& app, ProbeCalibration
     retranslate();
 }
 
-void ProbeCalibrationWizard::retranslate() {
-    setWindowTitle(tr("Probe mandrel linearisation"));
-    setButtonText(QWizard::BackButton, tr("< Back"));
-    setButtonText(QWizard::NextButton, tr("Next >"));
-    setButtonText(QWizard::FinishButton, tr("Finish"));
-    setButtonText(QWizard::CancelButton, tr("Cancel"));
-    m_choose->retranslate();
-    m_reference->retranslate();
-    m_capture->retranslate();
-    m_fit->retranslate();
-    m_accept->retranslate();
-    m_save->retranslate();
-}
-
-void ProbeCalibrationWizard::changeEvent(QEvent* event) {
-    if (event->type() == QEvent::LanguageChange) retranslate();
-    QWizard::changeEvent(event);
+QString ProbeCalibrationWizard::titleText() const {
+    return tr("Probe mandrel linearisation");
 }
 
 }  // namespace tt::ui

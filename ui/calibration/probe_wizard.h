@@ -1,13 +1,12 @@
 #pragma once
 
-#include <QWizard>
-#include <QWizardPage>
 #include <optional>
 #include <vector>
 
 #include "core/calibration/probe_linearisation.h"
 #include "ui/app_context.h"
 #include "ui/calibration/calibration_probe.h"
+#include "ui/calibration/calibration_wizard.h"
 #include "ui/calibration/probe_calibration_session.h"
 
 class QCheckBox;
@@ -41,13 +40,13 @@ struct ProbeWizardContext {
 };
 
 /// 1. Choose the probe, the bending plane and the ADC resolution.
-class ProbeChoosePage : public QWizardPage {
+class ProbeChoosePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeChoosePage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool validatePage() override;
-    void retranslate();
+    void retranslate() override;
 
 private:
     void store();
@@ -62,13 +61,13 @@ private:
 };
 
 /// 2. Set up the reference: dial indicator or micrometer at the tool tip, its resolution.
-class ProbeReferencePage : public QWizardPage {
+class ProbeReferencePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeReferencePage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool validatePage() override;
-    void retranslate();
+    void retranslate() override;
 
 private:
     ProbeWizardContext& m_ctx;
@@ -80,13 +79,13 @@ private:
 };
 
 /// 5. Accept: the figures of the table, and the operator's acceptance.
-class ProbeAcceptPage : public QWizardPage {
+class ProbeAcceptPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
 
 private:
     ProbeWizardContext& m_ctx;
@@ -95,13 +94,13 @@ private:
 };
 
 /// 6. Save the table as a new version (who, when) and upload it with read-back of its CRC.
-class ProbeSavePage : public QWizardPage {
+class ProbeSavePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeSavePage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     bool isComplete() const override;
-    void retranslate();
+    void retranslate() override;
 
     /// Saves the table (refused without an operator name); returns whether it was saved.
     bool save();
@@ -131,14 +130,13 @@ private:
 /// the reference → capture points live (or type them) with a live plot → fit with the residual
 /// plot and the degree choice explained → accept → save a versioned table and upload it with
 /// read-back of its CRC. Works on the session it is given, so Back and Cancel lose nothing.
-class ProbeCalibrationWizard : public QWizard {
+class ProbeCalibrationWizard : public CalibrationWizard {
     Q_OBJECT
 public:
     enum PageId { ChoosePage, ReferencePage, CapturePage, FitPage, AcceptPage, SavePage };
 
     ProbeCalibrationWizard(AppContext& app, ProbeCalibrationSession& session, std::vector<CalibrationProbe*> probes,
                            storage::CalibrationStore* store, QWidget* parent = nullptr);
-    void retranslate();
 
     ProbeChoosePage* choosePage() const { return m_choose; }
     ProbeReferencePage* referencePage() const { return m_reference; }
@@ -148,7 +146,7 @@ public:
     ProbeSavePage* savePage() const { return m_save; }
 
 protected:
-    void changeEvent(QEvent* event) override;
+    QString titleText() const override;
 
 private:
     ProbeWizardContext m_ctx;

@@ -1,0 +1,39 @@
+#include "ui/calibration/calibration_wizard.h"
+
+#include <QEvent>
+#include <QLabel>
+
+namespace tt::ui {
+
+CalibrationWizard::CalibrationWizard(const QString& objectName, QWidget* parent) : QWizard(parent) {
+    setObjectName(objectName);
+    setWizardStyle(QWizard::ClassicStyle);
+    setOption(QWizard::NoBackButtonOnStartPage, true);
+}
+
+void CalibrationWizard::retranslate() {
+    setWindowTitle(titleText());
+    setButtonText(QWizard::BackButton, tr("< Back"));
+    setButtonText(QWizard::NextButton, tr("Next >"));
+    setButtonText(QWizard::FinishButton, tr("Finish"));
+    setButtonText(QWizard::CancelButton, tr("Cancel"));
+    for (int id : pageIds())
+        if (auto* p = qobject_cast<CalibrationWizardPage*>(page(id))) p->retranslate();
+}
+
+void CalibrationWizard::changeEvent(QEvent* event) {
+    if (event->type() == QEvent::LanguageChange) retranslate();
+    QWizard::changeEvent(event);
+}
+
+QLabel* wrappedLabel(QWidget* parent) {
+    auto* label = new QLabel(parent);
+    label->setWordWrap(true);
+    return label;
+}
+
+void markProblem(QLabel* label, bool problem) {
+    label->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <QWizard>
+#include <QWizardPage>
+
+class QLabel;
+
+namespace tt::ui {
+
+/// A page of a calibration wizard: it sets its texts in retranslate(), which the wizard calls
+/// when it is built and on every language switch.
+class CalibrationWizardPage : public QWizardPage {
+    Q_OBJECT
+public:
+    using QWizardPage::QWizardPage;
+    virtual void retranslate() = 0;
+};
+
+/// What both calibration wizards (probe linearisation, k_p from known loads) share: the
+/// terminal's wizard style, translated buttons, and pages that follow the language switch.
+class CalibrationWizard : public QWizard {
+    Q_OBJECT
+public:
+    /// Sets the title and the buttons and lets every page set its texts.
+    void retranslate();
+
+protected:
+    CalibrationWizard(const QString& objectName, QWidget* parent);
+    /// The window title in the current language.
+    virtual QString titleText() const = 0;
+    void changeEvent(QEvent* event) override;
+};
+
+/// A label that wraps its text (instructions, results).
+QLabel* wrappedLabel(QWidget* parent);
+/// Shows `label` in the problem colour (bold dark red) or in the normal one.
+void markProblem(QLabel* label, bool problem);
+
+}  // namespace tt::ui
