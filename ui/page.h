@@ -37,6 +37,7 @@ public:
 protected:
     void changeEvent(QEvent* event) override;
     AppContext& context() { return m_context; }
+    const AppContext& context() const { return m_context; }
 
 private:
     PageId m_id;

@@ -1914,6 +1914,14 @@ L/d %4</source>
         <source>Counters</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Not tested: a run is going on the Run page and would take the test reading as a diameter. Stop the run first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::HistoryCheck</name>

@@ -1919,6 +1919,14 @@ L/d %4</translation>
         <source>Counters</source>
         <translation>Счётчики</translation>
     </message>
+    <message>
+        <source>Not tested: a run is going on the Run page and would take the test reading as a diameter. Stop the run first.</source>
+        <translation>Не проверено: на странице «Работа» идёт серия, и контрольное показание было бы принято за диаметр. Сначала остановите серию.</translation>
+    </message>
+    <message>
+        <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
+        <translation>Не проверено: на странице «Работа» идёт серия, а эти настройки закрыли бы используемое ею устройство. Сначала остановите серию или проверьте с применёнными настройками.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::HistoryCheck</name>

@@ -507,10 +507,16 @@ void DevicesPage::testConnection() {
         m_testResult->show();
         return;
     }
-    if (m_testDevice) m_testDevice->close();
-    m_testDevice.reset();
     devices::Device* live = selectedDevice();
     const QVariantMap saved = devices::withDefaults(plugin->settingsSchema(m_selection->kind), m_savedValues);
+    if (const QString refusal = testRefusedByTheLoop(live && values == saved); !refusal.isEmpty()) {
+        setTone(m_testResult, QStringLiteral("fault"));
+        m_testResult->setText(refusal);
+        m_testResult->show();
+        return;
+    }
+    if (m_testDevice) m_testDevice->close();
+    m_testDevice.reset();
     if (live && values == saved) {
         m_testTarget = live;  // the device as it runs
     } else {
@@ -535,6 +541,22 @@ void DevicesPage::testConnection() {
     m_testTarget->testConnection();
     m_testClock.start();
     m_testTimer.start();
+}
+
+QString DevicesPage::testRefusedByTheLoop(bool testsTheRunningDevice) const {
+    const AppState* state = context().state;
+    if (!state || (state->loop() != AppState::Loop::Running && state->loop() != AppState::Loop::Paused)) return {};
+    // A gauge's test reading would be taken as the next part's diameter; other settings than
+    // the saved ones close the device the run is using.
+    if (m_selection->kind == DeviceKind::Gauge)
+        return tr(
+            "Not tested: a run is going on the Run page and would take the test reading as a diameter. "
+            "Stop the run first.");
+    if (!testsTheRunningDevice)
+        return tr(
+            "Not tested: a run is going on the Run page and these settings would close the device it uses. "
+            "Stop the run first, or test with the applied settings.");
+    return {};
 }
 
 void DevicesPage::pollTest() {

@@ -66,6 +66,8 @@ private:
     void revert();
     void removeSelected();
     void testConnection();
+    /// Why a connection test must wait while a run is going (empty: it may go ahead).
+    QString testRefusedByTheLoop(bool testsTheRunningDevice) const;
     void pollTest();
     void finishTest(bool ok, const QString& text);
     void refreshStatus();

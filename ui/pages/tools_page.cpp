@@ -269,7 +269,7 @@ void ToolsPage::reloadFromStore() {
 }
 
 QString ToolsPage::operatorName() const {
-    AppContext& c = const_cast<ToolsPage*>(this)->context();
+    const AppContext& c = context();
     return c.state ? c.state->operatorName().trimmed() : QString();
 }
 

@@ -192,5 +192,36 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     EXPECT_EQ(prompt.log.size(), 2);
 }
 
+TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
+    MainWindow window(context);
+    window.show();
+    DevicesPage& p = page(window);
+    chooseType(p, QStringLiteral("simulator"), QStringLiteral("gauge"));
+    child<QPushButton>(p, QStringLiteral("applyDevice"))->click();
+    ASSERT_EQ(manager.deviceIds().size(), 1);
+    devices::Device* gauge = manager.device(manager.deviceIds().front());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, 3000));
+    auto* result = child<QLabel>(p, QStringLiteral("TestResult"));
+    auto* test = child<QPushButton>(p, QStringLiteral("testConnection"));
+
+    // A run going (or paused): the test reading would be taken as a diameter, so nothing is asked.
+    for (AppState::Loop loop : {AppState::Loop::Running, AppState::Loop::Paused}) {
+        state.setLoop(loop, QString());
+        const QString before = gauge->liveValue();
+        test->click();
+        EXPECT_TRUE(result->text().contains(QStringLiteral("Stop the run first"))) << result->text().toStdString();
+        QTest::qWait(300);
+        EXPECT_EQ(gauge->liveValue(), before) << "the gauge was asked for a reading during a run";
+        EXPECT_TRUE(test->isEnabled());
+    }
+
+    // Stopped: the test goes ahead and the gauge answers.
+    state.setLoop(AppState::Loop::Idle, QString());
+    test->click();
+    EXPECT_FALSE(result->text().contains(QStringLiteral("Stop the run first")));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return test->isEnabled(); }, 6000));
+    EXPECT_TRUE(result->text().startsWith(QStringLiteral("Connected"))) << result->text().toStdString();
+}
+
 }  // namespace
 }  // namespace tt::ui
