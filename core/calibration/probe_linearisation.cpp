@@ -1,10 +1,8 @@
 #include "core/calibration/probe_linearisation.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <sstream>
 
@@ -163,33 +161,6 @@ std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores,
     return {best->degree, "degree " + std::to_string(best->degree) + " has the lowest leave-one-out error"};
 }
 
-// Real stationary points of p (roots of p'), in µm, ascending: companion-matrix eigenvalues in
-// the scaled variable.
-std::vector<double> stationaryPointsUm(const ScaledPolynomial& p) {
-    const Eigen::VectorXd& c = p.scaledCoefficients();
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(std::max<Eigen::Index>(c.size() - 1, 1));
-    for (Eigen::Index k = 1; k < c.size(); ++k)
-        d(k - 1) = static_cast<double>(k) * c(k);
-    Eigen::Index n = d.size() - 1;
-    const double size = d.cwiseAbs().maxCoeff();
-    while (n > 0 && std::abs(d(n)) <= 1e-14 * size)
-        --n;
-    std::vector<double> roots;
-    if (n == 0) return roots;
-    Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(n, n);
-    for (Eigen::Index i = 1; i < n; ++i)
-        companion(i, i - 1) = 1.0;
-    for (Eigen::Index i = 0; i < n; ++i)
-        companion(i, n - 1) = -d(i) / d(n);
-    const Eigen::EigenSolver<Eigen::MatrixXd> solver(companion, false);
-    for (Eigen::Index i = 0; i < solver.eigenvalues().size(); ++i) {
-        const std::complex<double> z = solver.eigenvalues()(i);
-        if (std::abs(z.imag()) <= 1e-9 * std::max(1.0, std::abs(z))) roots.push_back(p.centre() + p.scale() * z.real());
-    }
-    std::sort(roots.begin(), roots.end());
-    return roots;
-}
-
 // The nearest stationary points left of the calibrated range and right of it.
 struct Branch {
     std::optional<double> left;
@@ -198,7 +169,7 @@ struct Branch {
 
 Branch branchAround(const CharacteristicFit& fit) {
     Branch b;
-    for (double x : stationaryPointsUm(fit.characteristic)) {
+    for (double x : fit.characteristic.stationaryPoints()) {
         if (x < fit.calibratedMinUm) b.left = x;
         if (x > fit.calibratedMaxUm && !b.right) b.right = x;
     }
@@ -219,7 +190,7 @@ Monotonicity checkMonotonic(const CharacteristicFit& fit) {
                     ", so one code would stand for two deflections; check the points near there or choose "
                     "another degree";
     };
-    for (double x : stationaryPointsUm(p)) {
+    for (double x : p.stationaryPoints()) {
         if (x >= fit.calibratedMinUm && x <= fit.calibratedMaxUm) {
             fail(x,
                  "inside the calibrated range " + fmt(fit.calibratedMinUm) + " .. " + fmt(fit.calibratedMaxUm) + " µm");

@@ -101,24 +101,30 @@ Eigen::VectorXd ScaledPolynomial::powerCoefficients() const {
     return scaledToPowerMap(degree(), m_centre, m_scale) * m_coefficients;
 }
 
+std::vector<double> ScaledPolynomial::stationaryPoints() const {
+    std::vector<double> points;
+    const Eigen::VectorXd dc = derivativeCoefficients(m_coefficients);
+    if (dc.cwiseAbs().maxCoeff() == 0.0) return points;
+    const Eigen::VectorXd ddc = derivativeCoefficients(dc);
+    for (double t : realRoots(dc)) {
+        // Two Newton steps polish the eigenvalue to full precision.
+        for (int i = 0; i < 2; ++i) {
+            const double slope = horner(ddc, t);
+            if (slope == 0.0) break;
+            t -= horner(dc, t) / slope;
+        }
+        points.push_back(m_centre + m_scale * t);
+    }
+    std::sort(points.begin(), points.end());
+    return points;
+}
+
 PolynomialPeak ScaledPolynomial::largestMagnitude(double a, double b) const {
     if (!std::isfinite(a) || !std::isfinite(b) || a > b)
         throw std::invalid_argument("the interval for the peak must be finite with its start <= its end");
     std::vector<double> candidates = {a, b};
-    const Eigen::VectorXd dc = derivativeCoefficients(m_coefficients);
-    if (dc.cwiseAbs().maxCoeff() > 0.0) {
-        const Eigen::VectorXd ddc = derivativeCoefficients(dc);
-        for (double t : realRoots(dc)) {
-            // Two Newton steps polish the eigenvalue to full precision.
-            for (int i = 0; i < 2; ++i) {
-                const double slope = horner(ddc, t);
-                if (slope == 0.0) break;
-                t -= horner(dc, t) / slope;
-            }
-            const double x = m_centre + m_scale * t;
-            if (x > a && x < b) candidates.push_back(x);
-        }
-    }
+    for (double x : stationaryPoints())
+        if (x > a && x < b) candidates.push_back(x);
     PolynomialPeak best{a, value(a)};
     for (double x : candidates) {
         const double v = value(x);

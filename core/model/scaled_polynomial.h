@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace tt::core {
 
@@ -48,6 +49,9 @@ public:
     /// Scale of the scaling (> 0), in x units.
     double scale() const { return m_scale; }
 
+    /// The real x where dp/dx = 0, ascending: the roots of p' as companion-matrix eigenvalues in
+    /// the scaled variable, each polished by two Newton steps. Empty for degree 0 or 1.
+    std::vector<double> stationaryPoints() const;
     /// The point of [a, b] where |p(x)| is largest (interior stationary points from the roots of p',
     /// found as companion-matrix eigenvalues, plus both ends). Throws std::invalid_argument unless a <= b.
     PolynomialPeak largestMagnitude(double a, double b) const;
