@@ -2537,6 +2537,30 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>%1 parts recorded, %2 measured; %3 values rejected or not measured.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>LQG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EWMA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>open loop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>complete</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not finished</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::PlannedPage</name>

@@ -2545,6 +2545,30 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>%1 parts recorded, %2 measured; %3 values rejected or not measured.</source>
         <translation>Записано деталей: %1, измерено: %2; отклонено или не измерено значений: %3.</translation>
     </message>
+    <message>
+        <source>LQG</source>
+        <translation>ЛКГ</translation>
+    </message>
+    <message>
+        <source>EWMA</source>
+        <translation>EWMA</translation>
+    </message>
+    <message>
+        <source>open loop</source>
+        <translation>без регулятора</translation>
+    </message>
+    <message>
+        <source>complete</source>
+        <translation>завершена</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>остановлена</translation>
+    </message>
+    <message>
+        <source>not finished</source>
+        <translation>не завершена</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::PlannedPage</name>
@@ -3218,7 +3242,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Open loop</source>
-        <translation>Разомкнутый контур</translation>
+        <translation>Без регулятора</translation>
     </message>
     <message>
         <source>×1 (6 min a part)</source>
@@ -3246,7 +3270,7 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Real lathe (Devices page)</source>
-        <translation>Реальный станок («Устройства»)</translation>
+        <translation>Реальный станок</translation>
     </message>
     <message>
         <source>CNC output</source>

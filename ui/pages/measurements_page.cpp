@@ -31,6 +31,10 @@ MeasurementsPage::MeasurementsPage(AppContext& context, QWidget* parent)
       m_model(new MeasurementsModel(this)) {
     m_runs->setObjectName(QStringLiteral("runCombo"));
     m_runs->setMinimumWidth(480);
+    // A long run description is elided in the box (whole in the list), never widening the window.
+    m_runs->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_runs->setMinimumContentsLength(36);
+    m_runs->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
     m_onlyProblems->setObjectName(QStringLiteral("onlyProblemsCheck"));
     m_refresh->setObjectName(QStringLiteral("refreshButton"));
     m_summary->setObjectName(QStringLiteral("measurementSummary"));
@@ -107,6 +111,21 @@ bool MeasurementsPage::openHistory() {
     }
 }
 
+QString MeasurementsPage::controllerName(const std::string& controller) {
+    if (controller == "lqg") return tr("LQG");
+    if (controller == "ewma") return tr("EWMA");
+    if (controller == "open") return tr("open loop");
+    return QString::fromStdString(controller);
+}
+
+QString MeasurementsPage::runStatusName(const std::string& status) {
+    if (status == "complete") return tr("complete");
+    if (status == "stopped") return tr("stopped");
+    // A run stays "running" in the history until it ends; one that was cut off keeps it.
+    if (status == "running") return tr("not finished");
+    return QString::fromStdString(status);
+}
+
 void MeasurementsPage::refresh() {
     const qint64 chosen = m_runs->currentData().toLongLong();
     m_runs->clear();
@@ -118,14 +137,14 @@ void MeasurementsPage::refresh() {
     }
     try {
         for (const core::RunSummary& run : m_history->runs())
-            m_runs->addItem(tr("Run %1 · %2 · %3, z = %4 · %5 parts · %6")
-                                .arg(run.runId)
-                                .arg(QString::fromStdString(run.description.preset),
-                                     QString::fromStdString(run.description.controller).toUpper())
-                                .arg(run.description.delayParts)
-                                .arg(run.partCount)
-                                .arg(QString::fromStdString(run.status)),
-                            QVariant::fromValue<qint64>(run.runId));
+            m_runs->addItem(
+                tr("Run %1 · %2 · %3, z = %4 · %5 parts · %6")
+                    .arg(run.runId)
+                    .arg(QString::fromStdString(run.description.preset), controllerName(run.description.controller))
+                    .arg(run.description.delayParts)
+                    .arg(run.partCount)
+                    .arg(runStatusName(run.status)),
+                QVariant::fromValue<qint64>(run.runId));
     } catch (const std::exception& e) {
         m_problem = QString::fromStdString(e.what());
     }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "ui/page.h"
 
@@ -41,6 +42,10 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// The controller of a stored run ("lqg") as the Run page names it.
+    static QString controllerName(const std::string& controller);
+    /// The stored state of a run ("complete") in the operator's words.
+    static QString runStatusName(const std::string& status);
     void loadRun();
     bool openHistory();
 

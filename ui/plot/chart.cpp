@@ -40,7 +40,7 @@ Chart::Chart(QWidget* parent) : QWidget(parent), m_plot(new QCustomPlot(this)) {
         axis->setLabelFont(axisFont);
         axis->setTickLabelFont(axisFont);
     }
-    m_plot->legend->setVisible(true);
+    m_plot->legend->setVisible(false);  // shown once the chart has a named series
     m_plot->legend->setFont(axisFont);
     m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
     setMinimumHeight(220);
@@ -121,6 +121,7 @@ void Chart::removeSeries(const QString& key) {
 
 void Chart::clear() {
     m_plot->clearGraphs();
+    showLegendWhenItHasEntries();
 }
 
 int Chart::pointCount(const QString& key) const {
@@ -145,10 +146,16 @@ void Chart::setYRange(double lower, double upper) {
 }
 
 void Chart::refresh() {
+    showLegendWhenItHasEntries();
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
+void Chart::showLegendWhenItHasEntries() {
+    m_plot->legend->setVisible(m_plot->legend->itemCount() > 0);  // no empty box on an empty chart
+}
+
 bool Chart::savePng(const QString& path, int width, int height) {
+    showLegendWhenItHasEntries();
     m_plot->replot();
     return m_plot->savePng(path, width, height);
 }

@@ -47,6 +47,7 @@ public:
     bool savePng(const QString& path, int width = 0, int height = 0);
 
 private:
+    void showLegendWhenItHasEntries();
     int graphIndex(const QString& key) const;
 
     QCustomPlot* m_plot;

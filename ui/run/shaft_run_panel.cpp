@@ -213,7 +213,7 @@ QWidget* ShaftRunPanel::buildControls() {
     m_speed->setCurrentIndex(kDefaultSpeed);
     m_delay->setRange(1, 8);
     m_delay->setValue(2);
-    m_delay->setMinimumWidth(90);
+    m_delay->setMinimumWidth(76);
     QFont counter = m_partCounter->font();
     counter.setPointSize(16);
     counter.setBold(true);
@@ -247,7 +247,7 @@ QWidget* ShaftRunPanel::buildSetupRow() {
         row->addWidget(label);
         row->addWidget(field);
     }
-    row->addSpacing(16);
+    row->addSpacing(8);
     row->addWidget(m_manualMode);
     row->addStretch(1);
     return bar;

@@ -70,6 +70,10 @@ TEST_F(MeasurementsPageTest, ShowsEveryMeasuredPointWithItsVerdictAndReason) {
     page.show();  // refreshes
     ASSERT_EQ(page.runs()->count(), 1);
     EXPECT_TRUE(page.runs()->itemText(0).contains(QStringLiteral("12 parts")));
+    // The stored "lqg" and "running" in the operator's words: the run was never finished.
+    EXPECT_TRUE(page.runs()->itemText(0).contains(QStringLiteral("LQG, z = 2")))
+        << page.runs()->itemText(0).toStdString();
+    EXPECT_TRUE(page.runs()->itemText(0).endsWith(QStringLiteral("not finished")));
     MeasurementsModel* model = page.model();
     ASSERT_EQ(model->rowCount(), 60);
     EXPECT_EQ(model->problemCount(), 2);
