@@ -9,85 +9,62 @@
 
 namespace tt::devices {
 
-SettingField SettingField::text(QString key, QString label, QString defaultValue, QString help) {
+namespace {
+
+/// The parts every kind of field has.
+SettingField basicField(QString key, QString label, SettingField::Type type, QVariant defaultValue, QString help) {
     SettingField f;
     f.key = std::move(key);
     f.label = std::move(label);
-    f.type = Type::Text;
+    f.type = type;
     f.defaultValue = std::move(defaultValue);
     f.help = std::move(help);
     return f;
 }
 
+}  // namespace
+
+SettingField SettingField::text(QString key, QString label, QString defaultValue, QString help) {
+    return basicField(std::move(key), std::move(label), Type::Text, std::move(defaultValue), std::move(help));
+}
+
 SettingField SettingField::integer(QString key, QString label, qint64 defaultValue, qint64 minimum, qint64 maximum,
                                    QString unit, QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::Integer;
-    f.defaultValue = defaultValue;
+    SettingField f = basicField(std::move(key), std::move(label), Type::Integer, defaultValue, std::move(help));
     f.minimum = static_cast<double>(minimum);
     f.maximum = static_cast<double>(maximum);
     f.unit = std::move(unit);
-    f.help = std::move(help);
     return f;
 }
 
 SettingField SettingField::number(QString key, QString label, double defaultValue, double minimum, double maximum,
                                   QString unit, int decimals, QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::Number;
-    f.defaultValue = defaultValue;
+    SettingField f = basicField(std::move(key), std::move(label), Type::Number, defaultValue, std::move(help));
     f.minimum = minimum;
     f.maximum = maximum;
     f.unit = std::move(unit);
     f.decimals = decimals;
-    f.help = std::move(help);
     return f;
 }
 
 SettingField SettingField::choice(QString key, QString label, QList<SettingChoice> choices, QString defaultValue,
                                   QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::Choice;
+    SettingField f =
+        basicField(std::move(key), std::move(label), Type::Choice, std::move(defaultValue), std::move(help));
     f.choices = std::move(choices);
-    f.defaultValue = std::move(defaultValue);
-    f.help = std::move(help);
     return f;
 }
 
 SettingField SettingField::boolean(QString key, QString label, bool defaultValue, QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::Bool;
-    f.defaultValue = defaultValue;
-    f.help = std::move(help);
-    return f;
+    return basicField(std::move(key), std::move(label), Type::Bool, defaultValue, std::move(help));
 }
 
 SettingField SettingField::serialPort(QString key, QString label, QString defaultValue, QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::SerialPort;
-    f.defaultValue = std::move(defaultValue);
-    f.help = std::move(help);
-    return f;
+    return basicField(std::move(key), std::move(label), Type::SerialPort, std::move(defaultValue), std::move(help));
 }
 
 SettingField SettingField::folder(QString key, QString label, QString defaultValue, QString help) {
-    SettingField f;
-    f.key = std::move(key);
-    f.label = std::move(label);
-    f.type = Type::Folder;
-    f.defaultValue = std::move(defaultValue);
-    f.help = std::move(help);
-    return f;
+    return basicField(std::move(key), std::move(label), Type::Folder, std::move(defaultValue), std::move(help));
 }
 
 SettingField& SettingField::visibleWhen(QString otherKey, QStringList values) {

@@ -1,7 +1,9 @@
 #include "ui/calibration/calibration_wizard.h"
 
 #include <QEvent>
+#include <QHBoxLayout>
 #include <QLabel>
+#include <QVBoxLayout>
 
 namespace tt::ui {
 
@@ -24,6 +26,18 @@ void CalibrationWizard::retranslate() {
 void CalibrationWizard::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
     QWizard::changeEvent(event);
+}
+
+void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWidget* remove, QWidget* chart,
+                       QWidget* message) {
+    left->addWidget(table, 1);
+    left->addWidget(remove);
+    auto* body = new QHBoxLayout;
+    body->addLayout(left, 2);
+    body->addWidget(chart, 3);
+    auto* layout = new QVBoxLayout(page);
+    layout->addLayout(body, 1);
+    layout->addWidget(message);
 }
 
 QLabel* wrappedLabel(QWidget* parent) {

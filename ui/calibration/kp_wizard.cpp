@@ -154,14 +154,7 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     auto* left = new QVBoxLayout;
     left->addLayout(entry);
     left->addWidget(m_progress);
-    left->addWidget(m_table, 1);
-    left->addWidget(m_remove);
-    auto* body = new QHBoxLayout;
-    body->addLayout(left, 2);
-    body->addWidget(m_chart, 3);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(body, 1);
-    layout->addWidget(m_message);
+    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
     m_timer->setInterval(100);
     connect(m_timer, &QTimer::timeout, this, [this] { step(0.1); });
     connect(m_measure, &QPushButton::clicked, this, &KpLoadsPage::startMeasurement);

@@ -2,7 +2,6 @@
 
 #include <QDoubleSpinBox>
 #include <QGridLayout>
-#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
@@ -83,14 +82,7 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     auto* left = new QVBoxLayout;
     left->addWidget(m_live);
     left->addLayout(entry);
-    left->addWidget(m_table, 1);
-    left->addWidget(m_remove);
-    auto* body = new QHBoxLayout;
-    body->addLayout(left, 2);
-    body->addWidget(m_chart, 3);
-    auto* layout = new QVBoxLayout(this);
-    layout->addLayout(body, 1);
-    layout->addWidget(m_message);
+    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
 
     m_timer->setInterval(kPollMs);
     connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(kPollMs / 1000.0); });

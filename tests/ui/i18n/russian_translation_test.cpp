@@ -91,7 +91,7 @@ QString where(const TsMessage& m) {
     return m.context + QStringLiteral(" | \"") + m.source + QLatin1Char('"');
 }
 
-/// How often each placeholder occurs: %1 .. %99 (also %L1) and %n.
+/// How often each placeholder occurs: %1 to %99 (also %L1) and %n.
 QMap<QString, int> placeholders(const QString& text) {
     static const QRegularExpression pattern(QStringLiteral("%L?([0-9]{1,2}|n)"));
     QMap<QString, int> counts;
