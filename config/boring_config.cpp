@@ -5,7 +5,7 @@
 
 #include "config/json_section.h"
 #include "config/preset_library.h"
-#include "core/sim/boring_machine.h"
+#include "core/sim/boring/boring_machine.h"
 
 namespace tt::config {
 

@@ -3,7 +3,7 @@
 #include <QJsonObject>
 #include <QString>
 
-#include "core/sim/boring_experiment.h"
+#include "core/run/boring_run.h"
 
 namespace tt::config {
 

@@ -2,8 +2,8 @@
 
 #include <QJsonObject>
 
-#include "core/sim/lathe_setup.h"
-#include "core/sim/lathe_station.h"
+#include "core/sim/shaft/lathe_setup.h"
+#include "core/sim/shaft/lathe_station.h"
 
 namespace tt::config {
 

@@ -9,9 +9,9 @@
 #include "core/control/run_to_run_setup.h"
 #include "core/loop/loop_config.h"
 #include "core/model/scaled_polynomial.h"
-#include "core/sim/lathe_setup.h"
-#include "core/sim/lathe_shop.h"
-#include "core/sim/lathe_station.h"
+#include "core/sim/shaft/lathe_setup.h"
+#include "core/sim/shaft/lathe_shop.h"
+#include "core/sim/shaft/lathe_station.h"
 
 namespace tt::config {
 

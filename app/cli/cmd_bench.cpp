@@ -4,7 +4,7 @@
 #include "app/cli/command.h"
 #include "app/cli/command_parser.h"
 #include "config/plant_config.h"
-#include "core/sim/run_to_run_timing.h"
+#include "core/run/run_to_run_timing.h"
 
 namespace tt::cli {
 

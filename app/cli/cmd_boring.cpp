@@ -9,7 +9,7 @@
 #include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "config/boring_config.h"
-#include "core/sim/boring_experiment.h"
+#include "core/run/boring_run.h"
 
 namespace tt::cli {
 

@@ -9,7 +9,7 @@
 #include "config/plant_config.h"
 #include "core/control/lqg_design.h"
 #include "core/control/run_to_run_plant.h"
-#include "core/sim/run_to_run_analysis.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
 
 namespace tt::cli {
 

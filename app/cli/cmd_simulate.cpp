@@ -18,7 +18,7 @@
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
-#include "core/sim/lathe_study.h"
+#include "core/run/shaft_study.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 

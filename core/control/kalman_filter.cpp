@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/control/dare.h"
+#include "core/linalg/dare.h"
 
 namespace tt::core {
 

@@ -9,7 +9,7 @@
 
 #include "core/control/kalman_filter.h"
 #include "core/control/lq_regulator.h"
-#include "core/control/stein.h"
+#include "core/linalg/stein.h"
 
 namespace tt::core {
 

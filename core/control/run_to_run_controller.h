@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "core/ports/controller_state.h"
+
 namespace tt::core {
 
 /// The gauged deviations of one finished part at the control points:
@@ -28,11 +30,6 @@ struct MeasurementVerdict {
     }
 };
 
-/// Serialisable controller state, so a run can be resumed after a restart.
-struct ControllerState {
-    std::string kind;            ///< "lqg", "ewma", "open"
-    std::vector<double> values;  ///< the controller's own layout
-};
 
 /// A run-to-run (part-to-part) controller of the diameter profile at N control points
 /// (paper 000, outer loop, one step per part). Parts are machined in increasing part number;

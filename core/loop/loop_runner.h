@@ -3,20 +3,13 @@
 #include <cstdint>
 #include <string>
 
+#include "core/ports/simulation_timeline.h"
+
 namespace tt::core {
 
 class LoopEngine;
 class ManualClock;
 
-/// What simulated devices know about their own future, so a simulation can jump from event to event
-/// instead of waiting: the next simulated time at which something changes (a part ends, a reading
-/// arrives, a fault starts or stops); +infinity when nothing is scheduled.
-class SimulationTimeline {
-public:
-    virtual ~SimulationTimeline() = default;
-    /// Simulated time of the next thing that happens, s; +infinity when nothing is scheduled.
-    virtual double nextEventTimeS() const = 0;
-};
 
 /// How a simulation run ended.
 struct SimulationOutcome {

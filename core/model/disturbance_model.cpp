@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/control/dare.h"
-#include "core/control/stein.h"
+#include "core/linalg/dare.h"
+#include "core/linalg/stein.h"
 
 namespace tt::core {
 

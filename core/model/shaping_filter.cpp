@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/control/dare.h"
-#include "core/control/stein.h"
+#include "core/linalg/dare.h"
+#include "core/linalg/stein.h"
 
 namespace tt::core {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/control/run_to_run_controller.h"
+#include "core/ports/controller_state.h"
 
 namespace tt::core {
 

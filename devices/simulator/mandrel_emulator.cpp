@@ -9,7 +9,7 @@
 #include "core/calibration/probe_linearisation.h"
 #include "core/common/crc16.h"
 #include "core/common/crc32c.h"
-#include "core/sim/inductive_probe.h"
+#include "core/sim/boring/inductive_probe.h"
 
 namespace tt::devices {
 

@@ -8,8 +8,8 @@
 #include "core/calibration/probe_linearisation.h"
 #include "core/control/deflection_compensator.h"
 #include "core/control/dither_force_estimator.h"
-#include "core/sim/boring_experiment.h"
-#include "core/sim/dither_profile.h"
+#include "core/run/boring_run.h"
+#include "core/sim/boring/dither_profile.h"
 
 namespace {
 

@@ -8,8 +8,8 @@
 #include "core/control/run_to_run_plant.h"
 #include "core/control/run_to_run_setup.h"
 #include "core/model/disturbance_model.h"
-#include "core/sim/lathe_run.h"
-#include "core/sim/lathe_simulator.h"
+#include "core/run/shaft_run.h"
+#include "core/sim/shaft/lathe_simulator.h"
 
 namespace tt::core {
 namespace {

@@ -6,14 +6,14 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "core/control/dare.h"
+#include "core/linalg/dare.h"
 #include "core/control/kalman_filter.h"
 #include "core/control/lq_regulator.h"
 #include "core/control/lqg_controller.h"
 #include "core/control/lqg_design.h"
 #include "core/control/run_to_run_setup.h"
-#include "core/sim/run_to_run_monte_carlo.h"
-#include "core/sim/stochastic_plant.h"
+#include "core/sim/statistics/run_to_run_monte_carlo.h"
+#include "core/sim/statistics/stochastic_plant.h"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/model/tool_stiffness.h"
-#include "core/sim/boring_machine.h"
+#include "core/sim/boring/boring_machine.h"
 #include "ui/app_context.h"
 #include "ui/boring/boring_rig.h"
 

@@ -3,8 +3,8 @@
 #include <memory>
 #include <optional>
 
-#include "core/sim/boring_experiment.h"
-#include "core/sim/boring_machine.h"
+#include "core/run/boring_run.h"
+#include "core/sim/boring/boring_machine.h"
 #include "ui/boring/boring_rig.h"
 #include "ui/boring/compensation_loop.h"
 

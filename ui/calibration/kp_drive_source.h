@@ -3,7 +3,7 @@
 #include <QString>
 
 #include "core/ports/drive_current.h"
-#include "core/sim/known_load_rig.h"
+#include "core/sim/rigs/known_load_rig.h"
 
 namespace tt::ui {
 

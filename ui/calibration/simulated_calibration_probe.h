@@ -3,7 +3,7 @@
 #include <array>
 #include <deque>
 
-#include "core/sim/inductive_probe.h"
+#include "core/sim/boring/inductive_probe.h"
 #include "ui/calibration/calibration_probe.h"
 
 namespace tt::ui {

@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "core/control/in_process_compensation.h"
-#include "core/sim/boring_experiment.h"
-#include "core/sim/cross_feed_drive.h"
-#include "core/sim/dither_profile.h"
-#include "core/sim/inductive_probe.h"
-#include "core/sim/probe_calibration_rig.h"
+#include "core/run/boring_run.h"
+#include "core/sim/boring/cross_feed_drive.h"
+#include "core/sim/boring/dither_profile.h"
+#include "core/sim/boring/inductive_probe.h"
+#include "core/sim/rigs/probe_calibration_rig.h"
 #include "heavy_scenario.h"
 
 namespace tt::core {

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "core/sim/dither_profile.h"
+#include "core/sim/boring/dither_profile.h"
 
 namespace tt::core {
 namespace {

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/sim/boring_machine.h"
+#include "core/sim/boring/boring_machine.h"
 
 namespace tt::core::test {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "core/control/dither_force_estimator.h"
-#include "core/sim/known_load_rig.h"
+#include "core/sim/rigs/known_load_rig.h"
 
 namespace tt::core {
 namespace {

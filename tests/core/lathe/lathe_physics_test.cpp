@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/sim/lathe_cutting_force.h"
-#include "core/sim/lathe_shaft_beam.h"
-#include "core/sim/lathe_simulator.h"
+#include "core/sim/shaft/lathe_cutting_force.h"
+#include "core/sim/shaft/lathe_shaft_beam.h"
+#include "core/sim/shaft/lathe_simulator.h"
 
 namespace tt::core {
 namespace {

@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "core/model/disturbance_model.h"
-#include "core/sim/lathe_disturbance.h"
-#include "core/sim/lathe_micrometer.h"
-#include "core/sim/lathe_simulator.h"
+#include "core/sim/shaft/lathe_disturbance.h"
+#include "core/sim/shaft/lathe_micrometer.h"
+#include "core/sim/shaft/lathe_simulator.h"
 
 namespace tt::core {
 namespace {

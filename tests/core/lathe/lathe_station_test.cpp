@@ -6,10 +6,10 @@
 
 #include "core/loop/loop_clock.h"
 #include "core/model/disturbance_model.h"
-#include "core/sim/lathe_shop.h"
-#include "core/sim/lathe_simulator.h"
-#include "core/sim/lathe_station.h"
-#include "core/sim/lathe_statistical_process.h"
+#include "core/sim/shaft/lathe_shop.h"
+#include "core/sim/shaft/lathe_simulator.h"
+#include "core/sim/shaft/lathe_station.h"
+#include "core/sim/shaft/lathe_statistical_process.h"
 
 namespace tt::core {
 namespace {

@@ -11,8 +11,8 @@
 #include "core/loop/loop_clock.h"
 #include "core/loop/loop_runner.h"
 #include "core/loop/manual_gauge.h"
-#include "core/sim/lathe_simulator.h"
-#include "core/sim/lathe_station.h"
+#include "core/sim/shaft/lathe_simulator.h"
+#include "core/sim/shaft/lathe_station.h"
 #include "loop_test_support.h"
 
 namespace tt::core {

@@ -1,4 +1,4 @@
-#include "core/sim/run_to_run_analysis.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 
 #include "core/control/ewma_controller.h"
 #include "core/control/lqg_controller.h"
-#include "core/sim/run_to_run_monte_carlo.h"
+#include "core/sim/statistics/run_to_run_monte_carlo.h"
 #include "lqg_test_support.h"
 
 namespace tt::core {

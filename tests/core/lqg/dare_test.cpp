@@ -1,4 +1,4 @@
-#include "core/control/dare.h"
+#include "core/linalg/dare.h"
 
 #include <gtest/gtest.h>
 

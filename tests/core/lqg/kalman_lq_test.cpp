@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "core/control/dare.h"
+#include "core/linalg/dare.h"
 #include "core/control/kalman_filter.h"
 #include "core/control/lq_regulator.h"
 

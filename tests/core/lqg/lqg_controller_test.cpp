@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/sim/stochastic_plant.h"
+#include "core/sim/statistics/stochastic_plant.h"
 #include "lqg_test_support.h"
 
 namespace tt::core {

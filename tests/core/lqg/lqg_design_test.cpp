@@ -2,10 +2,10 @@
 
 #include <gtest/gtest.h>
 
-#include "core/control/dare.h"
+#include "core/linalg/dare.h"
 #include "core/control/lqg_controller.h"
-#include "core/sim/run_to_run_analysis.h"
-#include "core/sim/run_to_run_monte_carlo.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
+#include "core/sim/statistics/run_to_run_monte_carlo.h"
 #include "lqg_test_support.h"
 
 namespace tt::core {

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "core/sim/run_to_run_analysis.h"
-#include "core/sim/run_to_run_study.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
+#include "core/sim/statistics/run_to_run_study.h"
 #include "lqg_test_support.h"
 
 namespace tt::core {

@@ -1,11 +1,11 @@
-#include "core/sim/stochastic_plant.h"
+#include "core/sim/statistics/stochastic_plant.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "core/sim/normal_stream.h"
+#include "core/sim/statistics/normal_stream.h"
 #include "lqg_test_support.h"
 
 namespace tt::core {

@@ -192,7 +192,7 @@ std::vector<std::uint8_t> image(std::size_t n) {
     return v;
 }
 
-// Protocol 1 (TABLE_BEGIN and TABLE_INFO with the CRC-16); protocol 2: tests/devices/probe16/.
+// Protocol 1 (TABLE_BEGIN and TABLE_INFO with the CRC-16); protocol 2: tests/devices/probe_protocol2/.
 TEST(TableUploader, WalksBeginChunksCommitVerify) {
     const auto img = image(300);
     const std::uint16_t crc = core::crc16Ccitt(img);

@@ -1,0 +1,119 @@
+#include "core/run/shaft_run.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "core/loop/loop_clock.h"
+#include "core/loop/loop_engine.h"
+
+namespace tt::core {
+
+namespace {
+
+/// Collects the true profile of each part as it comes off the machine, and passes events on.
+class PartCollector final : public LoopListener {
+public:
+    PartCollector(LatheShop& shop, LatheRunRecord& record, const std::vector<double>& profileZ, LoopListener* next)
+        : m_shop(shop), m_record(record), m_profileZ(profileZ), m_next(next) {}
+
+    void onLoopEvent(const LoopEvent& event) override {
+        if (event.kind == LoopEvent::Kind::PartFinished && !m_shop.station().machinedParts().empty())
+            take(m_shop.station().machinedParts().back());
+        if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
+            for (const PointMeasurementRecord& p : event.measurement->points)
+                if (!p.accepted && p.measuredMm) ++m_record.rejectedValues;
+        if (m_next) m_next->onLoopEvent(event);
+    }
+
+    void take(const TurnedPart& part) {
+        if (part.partNumber < 1) return;
+        const auto index = static_cast<std::size_t>(part.partNumber - 1);
+        if (m_record.pointDeviationMm.size() <= index) {
+            m_record.pointDeviationMm.resize(index + 1);
+            m_record.profileDeviationMm.resize(index + 1);
+            m_record.seen.resize(index + 1, false);
+        }
+        const double nominal = m_shop.process().nominalDiameterMm();
+        const auto& points = m_shop.pointZMm();
+        Eigen::VectorXd atPoints(static_cast<Eigen::Index>(points.size()));
+        for (std::size_t i = 0; i < points.size(); ++i)
+            atPoints(static_cast<Eigen::Index>(i)) = part.diameterAtMm(points[i]) - nominal;
+        Eigen::VectorXd profile(static_cast<Eigen::Index>(m_profileZ.size()));
+        for (std::size_t i = 0; i < m_profileZ.size(); ++i)
+            profile(static_cast<Eigen::Index>(i)) = part.diameterAtMm(m_profileZ[i]) - nominal;
+        m_record.pointDeviationMm[index] = std::move(atPoints);
+        m_record.profileDeviationMm[index] = std::move(profile);
+        m_record.seen[index] = true;
+    }
+
+private:
+    LatheShop& m_shop;
+    LatheRunRecord& m_record;
+    const std::vector<double>& m_profileZ;
+    LoopListener* m_next;
+};
+
+}  // namespace
+
+LatheRunRecord runLatheLoop(LatheRunSpec spec) {
+    if (!spec.controller) throw std::invalid_argument("the run needs a controller");
+    if (!spec.loop.lastPartNumber) throw std::invalid_argument("a headless run needs its number of parts");
+    if (!(spec.speed >= 0.0) || !std::isfinite(spec.speed))
+        throw std::invalid_argument("the simulation speed must be zero or a positive number");
+    ManualClock clock;
+    LatheShop shop(spec.shop, clock);
+    shop.station().setKeptParts(4);
+    LatheRunRecord record;
+    PartCollector collector(shop, record, spec.profileZMm, spec.listener);
+
+    if (spec.resume) {
+        if (!spec.history) throw std::invalid_argument("a resume needs the history it continues");
+        // Everything stored so far, re-created exactly: the simulator depends only on the part number and
+        // the corrections the part received.
+        double lastTime = 0.0;
+        for (const StoredPart& stored : spec.history->parts(spec.resume->run.runId)) {
+            collector.take(shop.process().machine(partCorrectionFor(spec.loop, stored)));
+            lastTime = std::max(lastTime, stored.finishedS);
+        }
+        clock.advanceTo(lastTime);
+        for (const StoredPart& pending : spec.resume->pendingParts)
+            if (!pending.measurement) shop.station().restoreMachinedPart(partCorrectionFor(spec.loop, pending));
+    }
+
+    LoopEngine engine(
+        spec.loop,
+        LoopPorts{shop.station().machine(), shop.station().output(), shop.station().gauge(), clock, spec.history},
+        std::move(spec.controller));
+    engine.setListener(&collector);
+    if (spec.resume)
+        engine.resumeFrom(*spec.resume);
+    else
+        engine.start(spec.description);
+    record.outcome = runSimulation(engine, clock, shop.station(), 100'000'000, spec.speed);
+    record.runId = engine.runId();
+    return record;
+}
+
+Eigen::VectorXd deviationVariance(const std::vector<Eigen::VectorXd>& perPart, std::int64_t from, std::int64_t to) {
+    const ProfileStatistics s = profileStatistics(perPart, from, to);
+    return s.stdMm.array().square().matrix();
+}
+
+ProfileStatistics profileStatistics(const std::vector<Eigen::VectorXd>& perPart, std::int64_t from, std::int64_t to) {
+    if (from < 1 || to > static_cast<std::int64_t>(perPart.size()) || to - from < 1)
+        throw std::invalid_argument("statistics need at least two parts within the run (parts " + std::to_string(from) +
+                                    " .. " + std::to_string(to) + " of " + std::to_string(perPart.size()) + ")");
+    const Eigen::Index n = perPart[static_cast<std::size_t>(from - 1)].size();
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(n);
+    for (std::int64_t k = from; k <= to; ++k)
+        mean += perPart[static_cast<std::size_t>(k - 1)];
+    const double count = static_cast<double>(to - from + 1);
+    mean /= count;
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(n);
+    for (std::int64_t k = from; k <= to; ++k)
+        sum += (perPart[static_cast<std::size_t>(k - 1)] - mean).array().square().matrix();
+    return {mean, (sum / (count - 1.0)).cwiseSqrt()};
+}
+
+}  // namespace tt::core

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/control/run_to_run_controller.h"
+#include "core/loop/loop_config.h"
+#include "core/loop/loop_events.h"
+#include "core/loop/loop_runner.h"
+#include "core/ports/history_store.h"
+#include "core/sim/shaft/lathe_shop.h"
+
+namespace tt::core {
+
+/// One closed-loop run on the built-in simulated shop, headless (what `trueturn simulate` runs): the
+/// loop engine on the shop's ports with a virtual clock, optionally paced and stored.
+struct LatheRunSpec {
+    LatheShopSpec shop;                              ///< the machine, seeded
+    LoopConfig loop;                                 ///< lastPartNumber = the parts of the run
+    std::unique_ptr<RunToRunController> controller;  ///< (for a resume: a fresh one of the stored kind)
+    HistoryStore* history = nullptr;                 ///< none: nothing is stored
+    RunDescription description;                      ///< recorded when the run starts
+    std::optional<ResumePoint> resume;               ///< continue this stored run instead of starting one
+    double speed = 0.0;                              ///< 0: as fast as possible; else simulated s per wall s
+    LoopListener* listener = nullptr;                ///< also receives the engine's events
+    std::vector<double> profileZMm;                  ///< where to sample each finished part's true profile
+};
+
+/// What the run produced: the true (simulated) diameter deviation of every part at the control points
+/// and at the profile positions, indexed by part number - 1.
+struct LatheRunRecord {
+    SimulationOutcome outcome;
+    std::optional<std::int64_t> runId;
+    std::vector<Eigen::VectorXd> pointDeviationMm;    ///< per part: at the control points
+    std::vector<Eigen::VectorXd> profileDeviationMm;  ///< per part: at LatheRunSpec::profileZMm
+    std::vector<bool> seen;                           ///< per part: finished (or re-created after a resume)
+    std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
+};
+
+/// Runs the loop until its last part is machined and measured, a fault, or nothing can happen.
+/// On resume the stored parts are re-created from their stored corrections (the simulator is
+/// deterministic), the unmeasured ones are put back on the measuring station, and the run continues.
+/// Throws std::invalid_argument on a bad spec.
+LatheRunRecord runLatheLoop(LatheRunSpec spec);
+
+/// Per control point: sample variance of the true deviation over parts [from, to] (1-based), mm².
+Eigen::VectorXd deviationVariance(const std::vector<Eigen::VectorXd>& perPart, std::int64_t from, std::int64_t to);
+
+/// Mean and standard deviation over parts [from, to] (1-based) of each column, mm.
+struct ProfileStatistics {
+    Eigen::VectorXd meanMm;
+    Eigen::VectorXd stdMm;
+};
+/// Mean and standard deviation over parts `from` .. `to` (1-based, inclusive) of per-part profiles.
+ProfileStatistics profileStatistics(const std::vector<Eigen::VectorXd>& perPart, std::int64_t from, std::int64_t to);
+
+}  // namespace tt::core

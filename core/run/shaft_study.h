@@ -1,0 +1,63 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/control/run_to_run_setup.h"
+#include "core/loop/loop_config.h"
+#include "core/loop/loop_runner.h"
+#include "core/ports/history_store.h"
+#include "core/sim/shaft/lathe_shop.h"
+
+namespace tt::core {
+
+/// What `trueturn simulate` asks of the closed loop on the built-in shop.
+struct LatheStudyOptions {
+    ControllerKind controller = ControllerKind::Lqg;
+    std::optional<double> ewmaWeight;   ///< EWMA lambda; none: the setup's (best on the grid when `auto`)
+    std::int64_t parts = 20000;         ///< parts counted in the statistics
+    std::int64_t warmupParts = 100;     ///< machined first and not counted (controller start-up)
+    double speed = 0.0;                 ///< 0: as fast as possible; else simulated s per wall s
+    std::vector<double> profileZMm;     ///< where the profile statistics are taken (may be empty)
+    HistoryStore* history = nullptr;    ///< the closed run is stored here when given
+    RunDescription description;         ///< recorded with the run
+    std::optional<ResumePoint> resume;  ///< continue this stored run (the open reference is re-run)
+};
+
+/// One control point of the study.
+struct LatheStudyPoint {
+    double xMm = 0.0;
+    double varOpenMm2 = 0.0;    ///< true diameter deviation, open loop on the same disturbance
+    double varClosedMm2 = 0.0;  ///< with the controller
+    double kEff = 0.0;          ///< varOpen / varClosed (paper 000, Table 2)
+    double kEffAnalytic = 0.0;  ///< the controller's design model, closed-loop Lyapunov (NaN when unavailable)
+};
+
+/// Result of a study: variances and k_eff at the control points, and the profile of the finished parts.
+struct LatheStudyResult {
+    ControllerKind controller = ControllerKind::Lqg;
+    int delay = 1;
+    std::int64_t parts = 0;
+    std::optional<double> ewmaWeight;
+    std::vector<LatheStudyPoint> points;
+    double kEff = 0.0;          ///< sum open / sum closed
+    double kEffAnalytic = 0.0;  ///< NaN when unavailable
+    std::int64_t rejectedValues = 0;
+    /// Profile of the closed run's parts: mean and standard deviation of the true diameter error at
+    /// profileZMm over parts [profileFromPart, profileToPart] (after the first 2z + 5, the loop's start-up).
+    std::vector<double> profileZMm, profileMeanMm, profileStdMm;
+    std::int64_t profileFromPart = 0, profileToPart = 0;
+    std::optional<std::int64_t> runId;
+    SimulationOutcome outcome;
+};
+
+/// Runs the closed loop (`loop`, with or without feed-forward as wanted) with the chosen controller on
+/// the shop, and the open loop (no feed-forward, no correction) on the same seeded shop for the
+/// reference variances; adds the analytic k_eff of the design model. Throws std::invalid_argument on
+/// bad options and std::runtime_error when the run stops before its last part (the reason).
+LatheStudyResult runLatheStudy(const RunToRunSetup& control, const LatheShopSpec& shop, const LoopConfig& loop,
+                               const LatheStudyOptions& options);
+
+}  // namespace tt::core
