@@ -30,7 +30,6 @@ struct MeasurementVerdict {
     }
 };
 
-
 /// A run-to-run (part-to-part) controller of the diameter profile at N control points
 /// (paper 000, outer loop, one step per part). Parts are machined in increasing part number;
 /// measurements of finished parts arrive later (transport delay z parts) and possibly out of order.

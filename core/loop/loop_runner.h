@@ -10,7 +10,6 @@ namespace tt::core {
 class LoopEngine;
 class ManualClock;
 
-
 /// How a simulation run ended.
 struct SimulationOutcome {
     bool complete = false;    ///< the run reached its last part and every part was measured

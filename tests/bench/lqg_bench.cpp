@@ -6,12 +6,12 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "core/linalg/dare.h"
 #include "core/control/kalman_filter.h"
 #include "core/control/lq_regulator.h"
 #include "core/control/lqg_controller.h"
 #include "core/control/lqg_design.h"
 #include "core/control/run_to_run_setup.h"
+#include "core/linalg/dare.h"
 #include "core/sim/statistics/run_to_run_monte_carlo.h"
 #include "core/sim/statistics/stochastic_plant.h"
 

@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
-#include "core/linalg/dare.h"
 #include "core/control/kalman_filter.h"
 #include "core/control/lq_regulator.h"
+#include "core/linalg/dare.h"
 
 namespace tt::core {
 namespace {

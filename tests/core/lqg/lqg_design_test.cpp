@@ -2,8 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/linalg/dare.h"
 #include "core/control/lqg_controller.h"
+#include "core/linalg/dare.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
 #include "core/sim/statistics/run_to_run_monte_carlo.h"
 #include "lqg_test_support.h"
