@@ -14,6 +14,8 @@ QString pageKey(PageId id) {
             return QStringLiteral("tools");
         case PageId::Calibration:
             return QStringLiteral("calibration");
+        case PageId::Process:
+            return QStringLiteral("process");
         case PageId::Controller:
             return QStringLiteral("controller");
         case PageId::Reports:

@@ -9,11 +9,12 @@
 namespace tt::ui {
 
 /// The pages of the main window, in navigation order.
-enum class PageId { Run, Measurements, Tools, Calibration, Controller, Reports, Devices, Settings };
+enum class PageId { Run, Measurements, Tools, Calibration, Process, Controller, Reports, Devices, Settings };
 
 /// All page ids in navigation order.
-inline constexpr PageId kAllPages[] = {PageId::Run,        PageId::Measurements, PageId::Tools,   PageId::Calibration,
-                                       PageId::Controller, PageId::Reports,      PageId::Devices, PageId::Settings};
+inline constexpr PageId kAllPages[] = {PageId::Run,         PageId::Measurements, PageId::Tools,
+                                       PageId::Calibration, PageId::Process,      PageId::Controller,
+                                       PageId::Reports,     PageId::Devices,      PageId::Settings};
 
 /// Stable, untranslated key of a page ("run", "tools"), used by --page and screenshot names.
 QString pageKey(PageId id);

@@ -2648,6 +2648,18 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Gauge micrometer, probe mandrel, drive-current readout and the correction output to the CNC; the built-in simulator is always available.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Process</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Process design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>

@@ -2656,6 +2656,18 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Gauge micrometer, probe mandrel, drive-current readout and the correction output to the CNC; the built-in simulator is always available.</source>
         <translation>Цифровой микрометр, оправка-датчик, считывание тока привода и вывод коррекции в ЧПУ; встроенный симулятор доступен всегда.</translation>
     </message>
+    <message>
+        <source>Process</source>
+        <translation>Технология</translation>
+    </message>
+    <message>
+        <source>Process design</source>
+        <translation>Технологическая подготовка</translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
+        <translation>Программирование подачи по силовой деформации с управляющей программой ЧПУ, корректирующий импульс приводов подач на углах траектории и гидравлическая стабилизация подачи.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>

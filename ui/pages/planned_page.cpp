@@ -16,6 +16,8 @@ QString pageTitle(PageId id) {
             return PlannedPage::tr("Tools");
         case PageId::Calibration:
             return PlannedPage::tr("Calibration");
+        case PageId::Process:
+            return PlannedPage::tr("Process");
         case PageId::Controller:
             return PlannedPage::tr("Controller");
         case PageId::Reports:
@@ -60,6 +62,11 @@ void PlannedPage::retranslate() {
             m_state->setTexts(tr("Calibration wizards"),
                               tr("Probe-mandrel linearisation (ADC code to deflection table) and the "
                                  "current-to-force gain k<sub>p</sub> from known loads."));
+            break;
+        case PageId::Process:
+            m_state->setTexts(tr("Process design"),
+                              tr("Feed scheduling against force deformation with its CNC program, the corrective "
+                                 "pulse of the feed drives at corners, and hydraulic feed stabilisation."));
             break;
         case PageId::Controller:
             m_state->setTexts(tr("Controller tuning"),
