@@ -4,6 +4,7 @@
 #include "ui/pages/devices_page.h"
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
+#include "ui/pages/process_page.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/settings_page.h"
 #include "ui/pages/tools_page.h"
@@ -22,6 +23,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new ToolsPage(context, parent);
         case PageId::Calibration:
             return new CalibrationPage(context, parent);
+        case PageId::Process:
+            return new ProcessPage(context, parent);
         case PageId::Devices:
             return new DevicesPage(context, parent);
         default:

@@ -63,11 +63,6 @@ void PlannedPage::retranslate() {
                               tr("Probe-mandrel linearisation (ADC code to deflection table) and the "
                                  "current-to-force gain k<sub>p</sub> from known loads."));
             break;
-        case PageId::Process:
-            m_state->setTexts(tr("Process design"),
-                              tr("Feed scheduling against force deformation with its CNC program, the corrective "
-                                 "pulse of the feed drives at corners, and hydraulic feed stabilisation."));
-            break;
         case PageId::Controller:
             m_state->setTexts(tr("Controller tuning"),
                               tr("Transport delay z, weights R1 and R2, correction limits, the disturbance model "
@@ -83,6 +78,7 @@ void PlannedPage::retranslate() {
                               tr("Gauge micrometer, probe mandrel, drive-current readout and the correction output "
                                  "to the CNC; the built-in simulator is always available."));
             break;
+        case PageId::Process:  // ProcessPage
         case PageId::Settings:
             break;
     }

@@ -1,0 +1,13 @@
+#include "ui/process/process_tools.h"
+
+namespace tt::ui {
+
+std::vector<ProcessTool*> makeProcessTools(AppContext& context, QWidget* parent) {
+    (void)context;
+    std::vector<ProcessTool*> tools;
+    // One line per tool: tools.push_back(new FeedScheduleTool(context, parent));
+    (void)parent;
+    return tools;
+}
+
+}  // namespace tt::ui
