@@ -69,35 +69,6 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
 
 }  // namespace
 
-core::LatheShopSpec LoopScenario::shopSpec(std::uint64_t seed) const {
-    core::LatheShopSpec spec;
-    spec.lathe = lathe;
-    spec.plant = control.plant;
-    spec.nominalDiameterMm = nominalDiameterMm;
-    spec.partLengthMm = partLengthMm;
-    spec.timing = timing;
-    spec.seed = seed;
-    return spec;
-}
-
-core::LoopConfig LoopScenario::loopConfig(bool feedForward, std::optional<std::int64_t> lastPartNumber) const {
-    core::LoopConfig c;
-    for (const core::ControlPointSpec& p : control.plant.points)
-        c.pointZMm.push_back(p.xMm);
-    c.partLengthMm = partLengthMm;
-    c.nominalDiameterMm = nominalDiameterMm;
-    c.delayParts = control.plant.delay;
-    if (feedForward) c.systematicModel = systematicModel;
-    c.interpolation = interpolation;
-    c.pathStepMm = pathStepMm;
-    c.plausibleRangeMm = plausibleRangeMm;
-    c.limits = control.limits;
-    c.gaugeTimeoutS = gaugeTimeoutS;
-    c.lastPartNumber = lastPartNumber;
-    core::validateLoopConfig(c);
-    return c;
-}
-
 LoopScenario loadLoopScenario(const QString& nameOrPath, std::optional<int> delay) {
     const QJsonObject preset = PresetLibrary::load(nameOrPath);
     try {

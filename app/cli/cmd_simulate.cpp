@@ -1,8 +1,8 @@
-// `trueturn simulate`: argument parsing and output only. The run is the closed loop itself
-// (core::LoopEngine) on the built-in shop (core::LatheShop: the physical lathe of a preset with a
-// "lathe" section, else the controller's statistical plant), driven by core::runLatheStudy
-// (core/sim/lathe_study.h); the scenario comes from config::loadLoopScenario; the history is
-// storage::SqlHistoryStore.
+// `trueturn simulate`: argument parsing and output only. The run is assembled by the run builder
+// (core/run/shaft_run_builder.h) on the built-in simulated lathe (core::SimulatedLathe: the physical
+// lathe of a preset with a "lathe" section, else the controller's statistical plant) and driven by
+// core::runLatheStudy (core/run/shaft_study.h); the scenario comes from config::loadLoopScenario; the
+// history is storage::SqlHistoryStore.
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -264,8 +264,6 @@ int run(const QStringList& arguments) {
 
     config::LoopScenario scenario = config::loadLoopScenario(choice.preset, choice.delay);
     if (choice.ewmaAuto) scenario.control.ewmaWeightAuto = true;
-    const core::LoopConfig loop = scenario.loopConfig(choice.controller != core::ControllerKind::Open, std::nullopt);
-
     core::LatheStudyOptions options;
     options.controller = choice.controller;
     options.ewmaWeight = choice.ewmaWeight;
@@ -284,15 +282,14 @@ int run(const QStringList& arguments) {
     options.description = {choice.preset.toStdString(),
                            core::controllerKindName(choice.controller),
                            scenario.delay(),
-                           loop.nominalDiameterMm,
-                           loop.partLengthMm,
-                           loop.pointZMm,
+                           scenario.nominalDiameterMm,
+                           scenario.partLengthMm,
+                           scenario.loopConfig(false, std::nullopt).pointZMm,
                            QJsonDocument(choice.toJson(scenario.delay())).toJson(QJsonDocument::Compact).toStdString()};
 
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
     // with the reason; what was stored stays stored and the run can be resumed.
-    const core::LatheStudyResult result =
-        core::runLatheStudy(scenario.control, scenario.shopSpec(choice.seed), loop, options);
+    const core::LatheStudyResult result = core::runLatheStudy(scenario, choice.seed, options);
     if (parser.json())
         printJson(toJson(result, parser.isSet(QStringLiteral("profile")), database));
     else

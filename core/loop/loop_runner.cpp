@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 #include <thread>
 
 #include "core/loop/loop_clock.h"
@@ -10,8 +11,12 @@
 
 namespace tt::core {
 
-SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
-                                std::int64_t maxSteps, double speed) {
+namespace {
+
+/// Steps `engine` and moves time on with `jump` to the next event of the devices or the engine.
+template <typename Jump>
+SimulationOutcome simulate(LoopEngine& engine, const Clock& clock, const SimulationTimeline& devices, Jump jump,
+                           std::int64_t maxSteps, double speed) {
     SimulationOutcome outcome;
     int stalled = 0;
     for (std::int64_t i = 0; i < maxSteps; ++i) {
@@ -37,11 +42,37 @@ SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const Si
         }
         if (speed > 0.0 && next > clock.nowS())
             std::this_thread::sleep_for(std::chrono::duration<double>((next - clock.nowS()) / speed));
-        clock.advanceTo(next);
+        jump(next);
     }
     if (!outcome.complete && outcome.stopReason.empty()) outcome.stopReason = "the step limit was reached";
     outcome.simulatedS = clock.nowS();
     return outcome;
+}
+
+/// A machine seen as the timeline of its devices.
+class MachineTimeline final : public SimulationTimeline {
+public:
+    explicit MachineTimeline(const ShaftMachine& machine) : m_machine(machine) {}
+    double nextEventTimeS() const override { return m_machine.nextEventTimeS(); }
+
+private:
+    const ShaftMachine& m_machine;
+};
+
+}  // namespace
+
+SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
+                                std::int64_t maxSteps, double speed) {
+    return simulate(
+        engine, clock, devices, [&clock](double t) { clock.advanceTo(t); }, maxSteps, speed);
+}
+
+SimulationOutcome runSimulation(LoopEngine& engine, ShaftMachine& machine, std::int64_t maxSteps, double speed) {
+    if (!machine.jumpTo(machine.clock().nowS()))
+        throw std::invalid_argument("this machine runs in real time; it cannot be simulated event by event");
+    const MachineTimeline timeline(machine);
+    return simulate(
+        engine, machine.clock(), timeline, [&machine](double t) { machine.jumpTo(t); }, maxSteps, speed);
 }
 
 }  // namespace tt::core

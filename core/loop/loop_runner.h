@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/ports/shaft_machine.h"
 #include "core/ports/simulation_timeline.h"
 
 namespace tt::core {
@@ -23,5 +24,10 @@ struct SimulationOutcome {
 /// completes, on a fault, when nothing can happen any more (nobody will answer) or after `maxSteps`.
 SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
                                 std::int64_t maxSteps = 100'000'000, double speed = 0.0);
+
+/// The same on a machine that lives in simulated time (ShaftMachine::jumpTo); a machine whose time is
+/// the wall clock cannot be run this way (std::invalid_argument).
+SimulationOutcome runSimulation(LoopEngine& engine, ShaftMachine& machine, std::int64_t maxSteps = 100'000'000,
+                                double speed = 0.0);
 
 }  // namespace tt::core

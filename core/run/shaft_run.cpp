@@ -4,8 +4,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/loop/loop_clock.h"
 #include "core/loop/loop_engine.h"
+#include "core/run/simulated_lathe.h"
 
 namespace tt::core {
 
@@ -14,8 +14,9 @@ namespace {
 /// Collects the true profile of each part as it comes off the machine, and passes events on.
 class PartCollector final : public LoopListener {
 public:
-    PartCollector(LatheShop& shop, LatheRunRecord& record, const std::vector<double>& profileZ, LoopListener* next)
-        : m_shop(shop), m_record(record), m_profileZ(profileZ), m_next(next) {}
+    PartCollector(SimulatedLathe& lathe, LatheRunRecord& record, const std::vector<double>& profileZ,
+                  LoopListener* next)
+        : m_shop(lathe.shop()), m_record(record), m_profileZ(profileZ), m_next(next) {}
 
     void onLoopEvent(const LoopEvent& event) override {
         if (event.kind == LoopEvent::Kind::PartFinished && !m_shop.station().machinedParts().empty())
@@ -57,41 +58,31 @@ private:
 }  // namespace
 
 LatheRunRecord runLatheLoop(LatheRunSpec spec) {
-    if (!spec.controller) throw std::invalid_argument("the run needs a controller");
-    if (!spec.loop.lastPartNumber) throw std::invalid_argument("a headless run needs its number of parts");
+    if (!spec.plan.loop.lastPartNumber) throw std::invalid_argument("a headless run needs its number of parts");
     if (!(spec.speed >= 0.0) || !std::isfinite(spec.speed))
         throw std::invalid_argument("the simulation speed must be zero or a positive number");
-    ManualClock clock;
-    LatheShop shop(spec.shop, clock);
-    shop.station().setKeptParts(4);
+    SimulatedLathe lathe(spec.scenario.shopSpec(spec.seed));
     LatheRunRecord record;
-    PartCollector collector(shop, record, spec.profileZMm, spec.listener);
+    PartCollector collector(lathe, record, spec.profileZMm, spec.listener);
 
+    const std::unique_ptr<LoopEngine> engine = buildShaftRun(spec.scenario, spec.plan, lathe, spec.history);
+    engine->setListener(&collector);
     if (spec.resume) {
         if (!spec.history) throw std::invalid_argument("a resume needs the history it continues");
-        // Everything stored so far, re-created exactly: the simulator depends only on the part number and
-        // the corrections the part received.
+        // Everything stored so far, re-created exactly for the record: the simulator depends only on the
+        // part number and the corrections the part received.
         double lastTime = 0.0;
         for (const StoredPart& stored : spec.history->parts(spec.resume->run.runId)) {
-            collector.take(shop.process().machine(partCorrectionFor(spec.loop, stored)));
+            collector.take(lathe.shop().process().machine(partCorrectionFor(spec.plan.loop, stored)));
             lastTime = std::max(lastTime, stored.finishedS);
         }
-        clock.advanceTo(lastTime);
-        for (const StoredPart& pending : spec.resume->pendingParts)
-            if (!pending.measurement) shop.station().restoreMachinedPart(partCorrectionFor(spec.loop, pending));
+        lathe.jumpTo(lastTime);
+        resumeShaftRun(*engine, lathe, spec.plan.loop, *spec.resume);
+    } else {
+        engine->start(spec.description);
     }
-
-    LoopEngine engine(
-        spec.loop,
-        LoopPorts{shop.station().machine(), shop.station().output(), shop.station().gauge(), clock, spec.history},
-        std::move(spec.controller));
-    engine.setListener(&collector);
-    if (spec.resume)
-        engine.resumeFrom(*spec.resume);
-    else
-        engine.start(spec.description);
-    record.outcome = runSimulation(engine, clock, shop.station(), 100'000'000, spec.speed);
-    record.runId = engine.runId();
+    record.outcome = runSimulation(*engine, lathe, 100'000'000, spec.speed);
+    record.runId = engine->runId();
     return record;
 }
 

@@ -7,27 +7,26 @@
 
 #include <Eigen/Core>
 
-#include "core/control/run_to_run_controller.h"
-#include "core/loop/loop_config.h"
 #include "core/loop/loop_events.h"
 #include "core/loop/loop_runner.h"
 #include "core/ports/history_store.h"
-#include "core/sim/shaft/lathe_shop.h"
+#include "core/run/shaft_run_builder.h"
+#include "core/run/shaft_scenario.h"
 
 namespace tt::core {
 
 /// One closed-loop run on the built-in simulated shop, headless (what `trueturn simulate` runs): the
 /// loop engine on the shop's ports with a virtual clock, optionally paced and stored.
 struct LatheRunSpec {
-    LatheShopSpec shop;                              ///< the machine, seeded
-    LoopConfig loop;                                 ///< lastPartNumber = the parts of the run
-    std::unique_ptr<RunToRunController> controller;  ///< (for a resume: a fresh one of the stored kind)
-    HistoryStore* history = nullptr;                 ///< none: nothing is stored
-    RunDescription description;                      ///< recorded when the run starts
-    std::optional<ResumePoint> resume;               ///< continue this stored run instead of starting one
-    double speed = 0.0;                              ///< 0: as fast as possible; else simulated s per wall s
-    LoopListener* listener = nullptr;                ///< also receives the engine's events
-    std::vector<double> profileZMm;                  ///< where to sample each finished part's true profile
+    ShaftScenario scenario;             ///< the scenario
+    std::uint64_t seed = 1;             ///< every random source of the simulated shop
+    ShaftRunPlan plan;                  ///< loop.lastPartNumber = the parts of the run
+    HistoryStore* history = nullptr;    ///< none: nothing is stored
+    RunDescription description;         ///< recorded when the run starts
+    std::optional<ResumePoint> resume;  ///< continue this stored run instead of starting one
+    double speed = 0.0;                 ///< 0: as fast as possible; else simulated s per wall s
+    LoopListener* listener = nullptr;   ///< also receives the engine's events
+    std::vector<double> profileZMm;     ///< where to sample each finished part's true profile
 };
 
 /// What the run produced: the true (simulated) diameter deviation of every part at the control points
@@ -41,9 +40,10 @@ struct LatheRunRecord {
     std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
 };
 
-/// Runs the loop until its last part is machined and measured, a fault, or nothing can happen.
-/// On resume the stored parts are re-created from their stored corrections (the simulator is
-/// deterministic), the unmeasured ones are put back on the measuring station, and the run continues.
+/// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until
+/// its last part is machined and measured, a fault, or nothing can happen. On resume the stored parts
+/// are re-created from their stored corrections (the simulator is deterministic) for the record, and
+/// the run continues through resumeShaftRun.
 /// Throws std::invalid_argument on a bad spec.
 LatheRunRecord runLatheLoop(LatheRunSpec spec);
 

@@ -14,25 +14,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-LinearControllerModel designModel(const RunToRunSetup& control, const RunToRunPlant& plant, ControllerKind kind,
-                                  double ewmaWeight) {
-    switch (kind) {
-        case ControllerKind::Lqg:
-            return lqgControllerModel(plant, designLqg(plant, control.weights));
-        case ControllerKind::Ewma:
-            return ewmaControllerModel(plant, ewmaWeight);
-        case ControllerKind::Open:
-            break;
-    }
-    return openLoopControllerModel(plant);
-}
-
-LatheRunRecord runOnce(const LatheShopSpec& shop, LoopConfig loop, std::unique_ptr<RunToRunController> controller,
+LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftRunPlan plan,
                        const LatheStudyOptions& options, bool stored) {
     LatheRunSpec spec;
-    spec.shop = shop;
-    spec.loop = std::move(loop);
-    spec.controller = std::move(controller);
+    spec.scenario = scenario;
+    spec.seed = seed;
+    spec.plan = std::move(plan);
     spec.profileZMm = options.profileZMm;
     if (stored) {
         spec.history = options.history;
@@ -48,31 +35,22 @@ LatheRunRecord runOnce(const LatheShopSpec& shop, LoopConfig loop, std::unique_p
 
 }  // namespace
 
-LatheStudyResult runLatheStudy(const RunToRunSetup& control, const LatheShopSpec& shop, const LoopConfig& loop,
-                               const LatheStudyOptions& options) {
+LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
     if (options.parts < 2) throw std::invalid_argument("a study needs at least 2 counted parts");
     if (options.warmupParts < 0) throw std::invalid_argument("the warm-up cannot be negative");
-    const RunToRunPlant plant = buildRunToRunPlant(control.plant);
+    const std::int64_t total = options.warmupParts + options.parts;
+    const ShaftRunPlan closedPlan = planShaftRun(scenario, {options.controller, options.ewmaWeight, total});
+    const LoopConfig& loop = closedPlan.loop;
     LatheStudyResult result;
     result.controller = options.controller;
-    result.delay = plant.delay;
+    result.delay = closedPlan.plant.delay;
     result.parts = options.parts;
+    if (options.controller == ControllerKind::Ewma) result.ewmaWeight = closedPlan.ewmaWeight;
+    const SteadyStateVariances analytic = analyseSteadyState(
+        closedPlan.plant,
+        controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
 
-    double ewmaWeight = control.ewma.weight;
-    if (options.controller == ControllerKind::Ewma) {
-        ewmaWeight = options.ewmaWeight       ? *options.ewmaWeight
-                     : control.ewmaWeightAuto ? bestEwmaWeight(plant, defaultEwmaWeightGrid()).weight
-                                              : control.ewma.weight;
-        result.ewmaWeight = ewmaWeight;
-    }
-    const SteadyStateVariances analytic =
-        analyseSteadyState(plant, designModel(control, plant, options.controller, ewmaWeight));
-
-    const std::int64_t total = options.warmupParts + options.parts;
-    LoopConfig closedLoop = loop;
-    closedLoop.lastPartNumber = total;
-    const LatheRunRecord closed = runOnce(
-        shop, closedLoop, makeRunToRunController(control, plant, options.controller, ewmaWeight), options, true);
+    const LatheRunRecord closed = runOnce(scenario, seed, closedPlan, options, true);
     result.runId = closed.runId;
     result.outcome = closed.outcome;
     result.rejectedValues = closed.rejectedValues;
@@ -81,12 +59,10 @@ LatheStudyResult runLatheStudy(const RunToRunSetup& control, const LatheShopSpec
     const Eigen::VectorXd varClosed = deviationVariance(closed.pointDeviationMm, from, total);
     Eigen::VectorXd varOpen = varClosed;
     if (options.controller != ControllerKind::Open) {
-        LoopConfig openLoop = closedLoop;
-        openLoop.systematicModel.reset();
         LatheStudyOptions plain = options;
         plain.profileZMm.clear();
-        const LatheRunRecord open = runOnce(
-            shop, openLoop, makeRunToRunController(control, plant, ControllerKind::Open, ewmaWeight), plain, false);
+        const LatheRunRecord open =
+            runOnce(scenario, seed, planShaftRun(scenario, {ControllerKind::Open, std::nullopt, total}), plain, false);
         varOpen = deviationVariance(open.pointDeviationMm, from, total);
     }
     for (std::size_t i = 0; i < loop.pointZMm.size(); ++i) {
@@ -100,7 +76,7 @@ LatheStudyResult runLatheStudy(const RunToRunSetup& control, const LatheShopSpec
     if (!options.profileZMm.empty()) {
         // After the loop's start-up: the first 2z + 5 parts (z parts before the first measurement
         // arrives, then the controller settles).
-        result.profileFromPart = std::min<std::int64_t>(2 * plant.delay + 6, total - 1);
+        result.profileFromPart = std::min<std::int64_t>(2 * closedPlan.plant.delay + 6, total - 1);
         result.profileToPart = total;
         const ProfileStatistics s = profileStatistics(closed.profileDeviationMm, result.profileFromPart, total);
         result.profileZMm = options.profileZMm;

@@ -6,10 +6,9 @@
 #include <vector>
 
 #include "core/control/run_to_run_setup.h"
-#include "core/loop/loop_config.h"
 #include "core/loop/loop_runner.h"
 #include "core/ports/history_store.h"
-#include "core/sim/shaft/lathe_shop.h"
+#include "core/run/shaft_scenario.h"
 
 namespace tt::core {
 
@@ -53,11 +52,10 @@ struct LatheStudyResult {
     SimulationOutcome outcome;
 };
 
-/// Runs the closed loop (`loop`, with or without feed-forward as wanted) with the chosen controller on
-/// the shop, and the open loop (no feed-forward, no correction) on the same seeded shop for the
-/// reference variances; adds the analytic k_eff of the design model. Throws std::invalid_argument on
-/// bad options and std::runtime_error when the run stops before its last part (the reason).
-LatheStudyResult runLatheStudy(const RunToRunSetup& control, const LatheShopSpec& shop, const LoopConfig& loop,
-                               const LatheStudyOptions& options);
+/// Runs the closed loop of `scenario` (planned by planShaftRun: with the feed-forward unless open) with the
+/// chosen controller on the simulated shop seeded by `seed`, and the open loop (no feed-forward, no
+/// correction) on the same shop for the reference variances; adds the analytic k_eff of the design model. Throws
+/// std::invalid_argument on bad options and std::runtime_error when the run stops before its last part (the reason).
+LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options);
 
 }  // namespace tt::core

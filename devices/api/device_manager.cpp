@@ -77,6 +77,13 @@ QList<DevicePlugin*> DeviceManager::plugins() const {
     return all;
 }
 
+QList<ShaftMachineOffer> DeviceManager::shaftMachineOffers() const {
+    QList<ShaftMachineOffer> offers;
+    for (const DevicePlugin* p : plugins())
+        offers << p->shaftMachines();
+    return offers;
+}
+
 DevicePlugin* DeviceManager::plugin(const QString& pluginId) const {
     for (DevicePlugin* p : plugins())
         if (p->pluginId() == pluginId) return p;

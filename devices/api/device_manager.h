@@ -54,6 +54,8 @@ public:
     /// Available plugins, the simulator first.
     QList<DevicePlugin*> plugins() const;
     DevicePlugin* plugin(const QString& pluginId) const;
+    /// The complete machines every plugin offers for shaft runs, the simulator's first.
+    QList<ShaftMachineOffer> shaftMachineOffers() const;
 
     /// Creates an instance (closed) and returns its id. Throws std::invalid_argument with every
     /// settings problem, or for an unknown plugin or kind.

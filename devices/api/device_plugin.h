@@ -9,6 +9,7 @@
 
 #include "devices/api/device.h"
 #include "devices/api/settings_schema.h"
+#include "devices/api/shaft_machine_offer.h"
 
 namespace tt::devices {
 
@@ -41,6 +42,9 @@ public:
     /// number of instances may exist at once.
     virtual std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings,
                                            const DeviceContext& context) = 0;
+    /// Complete machines the plugin offers for shaft runs (their own part cycle, CNC and gauge), such
+    /// as the built-in simulator's lathe; most plugins offer none.
+    virtual QList<ShaftMachineOffer> shaftMachines() const { return {}; }
 };
 
 /// Throws std::invalid_argument with every structural problem of `settings` (for create()).
@@ -52,5 +56,5 @@ inline void requireValidSettings(const DevicePlugin& plugin, DeviceKind kind, co
 }  // namespace tt::devices
 
 /// Interface id of device plugins; bump the version when DevicePlugin or Device change.
-#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.0"
+#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.1"
 Q_DECLARE_INTERFACE(tt::devices::DevicePlugin, TrueTurnDevicePlugin_iid)

@@ -2,6 +2,7 @@
 
 #include "devices/simulator/simulated_drive.h"
 #include "devices/simulator/simulated_gauge.h"
+#include "devices/simulator/simulated_lathe_offer.h"
 #include "devices/simulator/simulated_output.h"
 #include "devices/simulator/simulated_probe.h"
 #include "devices/simulator/simulator_settings.h"
@@ -37,6 +38,10 @@ std::unique_ptr<Device> SimulatorPlugin::create(DeviceKind kind, const QVariantM
             return std::make_unique<SimulatedOutput>(values, context);
     }
     throw std::invalid_argument("the simulator does not make this device kind");
+}
+
+QList<ShaftMachineOffer> SimulatorPlugin::shaftMachines() const {
+    return {simulatedLatheOffer()};
 }
 
 }  // namespace tt::devices

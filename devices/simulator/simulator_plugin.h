@@ -16,6 +16,8 @@ public:
     QList<DeviceKind> kinds() const override { return allDeviceKinds(); }
     SettingsSchema settingsSchema(DeviceKind kind) const override;
     std::unique_ptr<Device> create(DeviceKind kind, const QVariantMap& settings, const DeviceContext& context) override;
+    /// The simulated lathe (simulated_lathe_offer.h).
+    QList<ShaftMachineOffer> shaftMachines() const override;
 };
 
 }  // namespace tt::devices

@@ -29,19 +29,14 @@ RunToRunSetup paperSetup() {
 }
 
 void runLoop(benchmark::State& state, bool physical) {
-    const RunToRunSetup setup = paperSetup();
-    const RunToRunPlant plant = buildRunToRunPlant(setup.plant);
+    ShaftScenario scenario;
+    scenario.control = paperSetup();
+    if (physical) scenario.lathe = LatheSetup{};
     const std::int64_t parts = state.range(0);
     for (auto _ : state) {
         LatheRunSpec spec;
-        spec.shop.plant = setup.plant;
-        if (physical) spec.shop.lathe = LatheSetup{};
-        spec.loop.pointZMm = paperControlPointsMm(325.0);
-        spec.loop.partLengthMm = 325.0;
-        spec.loop.nominalDiameterMm = 27.0;
-        spec.loop.delayParts = 2;
-        spec.loop.lastPartNumber = parts;
-        spec.controller = makeRunToRunController(setup, plant, ControllerKind::Lqg, 0.3);
+        spec.scenario = scenario;
+        spec.plan = planShaftRun(scenario, {ControllerKind::Lqg, std::nullopt, parts});
         const LatheRunRecord record = runLatheLoop(std::move(spec));
         benchmark::DoNotOptimize(record.pointDeviationMm.data());
     }

@@ -75,28 +75,26 @@ QString LatheLink::startProblem(const QString& outputId, const QString& gaugeId)
 std::shared_ptr<const LathePorts> LatheLink::connectDevices(const QString& outputId, const QString& gaugeId) {
     disconnectDevices(tr("a new run was started"));
     auto ports = std::make_shared<LathePorts>();
-    ports->clock = std::make_shared<core::ScaledClock>(1.0);
-    ports->gauge = std::make_shared<core::GaugeRelay>(*ports->clock);
-    ports->output = std::make_shared<core::CorrectionRelay>();
-    ports->machine = std::make_shared<core::OperatorCycle>(*ports->clock);
+    std::optional<double> nominalMm;
     if (const devices::DeviceEntry* e = m_manager ? m_manager->entry(outputId) : nullptr) {
         ports->outputName = e->name;
         if (e->settings.contains(QStringLiteral("nominalDiameterMm")))
-            ports->outputNominalDiameterMm = e->settings.value(QStringLiteral("nominalDiameterMm")).toDouble();
+            nominalMm = e->settings.value(QStringLiteral("nominalDiameterMm")).toDouble();
     }
+    ports->machine = std::make_shared<core::RelayedLathe>(nominalMm);
     if (const devices::DeviceEntry* e = m_manager ? m_manager->entry(gaugeId) : nullptr) {
         ports->gaugeName = e->name;
         if (core::DiameterGauge* g = e->device->diameterGauge())
             while (g->takeReading()) {
             }  // taken before this run: not its diameters
     } else {
-        ports->gauge->publishHealth(
+        ports->machine->gaugeRelay().publishHealth(
             {core::DeviceState::Disconnected, "no gauge chosen: the diameters are typed by hand"});
     }
     m_outputId = outputId;
     m_gaugeId = ports->gaugeName.isEmpty() ? QString() : gaugeId;
     // Woken from the loop thread (under the relay's lock) when a write waits; after close() never again.
-    ports->output->setRequestListener(
+    ports->machine->outputRelay().setRequestListener(
         [this] { QMetaObject::invokeMethod(this, &LatheLink::pump, Qt::QueuedConnection); });
     m_ports = ports;
     pump();
@@ -107,8 +105,8 @@ std::shared_ptr<const LathePorts> LatheLink::connectDevices(const QString& outpu
 void LatheLink::disconnectDevices(const QString& reason) {
     m_timer.stop();
     if (!m_ports) return;
-    m_ports->output->close(reason.toStdString());
-    m_ports->gauge->publishHealth({core::DeviceState::Disconnected, reason.toStdString()});
+    m_ports->machine->outputRelay().close(reason.toStdString());
+    m_ports->machine->gaugeRelay().publishHealth({core::DeviceState::Disconnected, reason.toStdString()});
     m_ports.reset();
     m_outputId.clear();
     m_gaugeId.clear();
@@ -116,12 +114,12 @@ void LatheLink::disconnectDevices(const QString& reason) {
 
 std::optional<qint64> LatheLink::partOnMachine() const {
     if (!m_ports) return std::nullopt;
-    return m_ports->machine->partOnMachine();
+    return m_ports->machine->operatorCycle().partOnMachine();
 }
 
 std::optional<qint64> LatheLink::finishPart() {
     if (!m_ports) return std::nullopt;
-    return m_ports->machine->finishPart();
+    return m_ports->machine->operatorCycle().finishPart();
 }
 
 void LatheLink::requestReading() {
@@ -150,22 +148,24 @@ void LatheLink::pumpGauge() {
     devices::Device* d = device(m_gaugeId);
     core::DiameterGauge* gauge = d ? d->diameterGauge() : nullptr;
     if (!gauge) {
-        m_ports->gauge->publishHealth(
+        m_ports->machine->gaugeRelay().publishHealth(
             {core::DeviceState::Disconnected, gone(tr("gauge"), m_ports->gaugeName).toStdString()});
         return;
     }
-    for (int n = m_ports->gauge->takeRequests(); n > 0; --n)
+    core::GaugeRelay& relay = m_ports->machine->gaugeRelay();
+    for (int n = relay.takeRequests(); n > 0; --n)
         gauge->requestReading();
     while (const auto reading = gauge->takeReading())
-        m_ports->gauge->deliver(reading->diameterMm);
-    m_ports->gauge->publishHealth(gauge->health());
+        relay.deliver(reading->diameterMm);
+    relay.publishHealth(gauge->health());
 }
 
 void LatheLink::pumpOutput() {
     devices::Device* d = device(m_outputId);
     core::CorrectionOutput* output = d ? d->correctionOutput() : nullptr;
     const std::string missing = gone(tr("CNC output"), m_ports->outputName).toStdString();
-    while (const auto request = m_ports->output->takeRequest()) {
+    core::CorrectionRelay& relay = m_ports->machine->outputRelay();
+    while (const auto request = relay.takeRequest()) {
         core::OutputResult result{false, missing};
         if (output)
             result = std::visit(
@@ -176,10 +176,9 @@ void LatheLink::pumpOutput() {
                         return output->sendDynamicOffset(write);
                 },
                 request->write);
-        m_ports->output->reply(request->id, result);
+        relay.reply(request->id, result);
     }
-    m_ports->output->publishHealth(output ? output->health()
-                                          : core::DeviceHealth{core::DeviceState::Disconnected, missing});
+    relay.publishHealth(output ? output->health() : core::DeviceHealth{core::DeviceState::Disconnected, missing});
 }
 
 }  // namespace tt::ui

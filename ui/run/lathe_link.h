@@ -6,10 +6,7 @@
 #include <memory>
 #include <optional>
 
-#include "core/loop/correction_relay.h"
-#include "core/loop/gauge_relay.h"
-#include "core/loop/loop_clock.h"
-#include "core/loop/operator_cycle.h"
+#include "core/loop/relayed_lathe.h"
 
 namespace tt::devices {
 class Device;
@@ -18,16 +15,12 @@ class DeviceManager;
 
 namespace tt::ui {
 
-/// The ports of one run on the real lathe, shared by the GUI thread (where the devices live) and the loop
-/// thread (where the engine runs). Every member is thread-safe.
+/// One run on the lathe assembled from the devices: the machine the loop thread uses (thread-safe relays to
+/// the devices that live in the GUI thread) and the devices' names.
 struct LathePorts {
-    std::shared_ptr<core::ScaledClock> clock;       ///< wall time (speed 1): the loop's and the relays' clock
-    std::shared_ptr<core::GaugeRelay> gauge;        ///< readings of the chosen gauge device
-    std::shared_ptr<core::CorrectionRelay> output;  ///< writes to the chosen CNC output device
-    std::shared_ptr<core::OperatorCycle> machine;   ///< parts confirmed with the Part finished button
-    QString outputName;                             ///< the CNC output as named on the Devices page
-    QString gaugeName;                              ///< the gauge as named there; empty: diameters typed by hand
-    std::optional<double> outputNominalDiameterMm;  ///< the diameter the output writes its programs for, if it has one
+    std::shared_ptr<core::RelayedLathe> machine;
+    QString outputName;  ///< the CNC output as named on the Devices page
+    QString gaugeName;   ///< the gauge as named there; empty: diameters typed by hand
 };
 
 /// Connects the devices configured on the Devices page (GUI thread) to the closed loop of the real lathe

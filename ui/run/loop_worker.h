@@ -18,13 +18,11 @@ class SqlHistoryStore;
 
 namespace tt::ui {
 
-struct LathePorts;
-
-/// The closed loop in its own thread: owns the machine's ports (the simulated shop, or the real lathe's
-/// relays to the devices in the GUI thread), the controller, the engine and the history connection (QtSql:
-/// used only from this thread), and steps the engine from a timer so the window never waits for it. Every
-/// call comes through queued slots; everything it learns goes out through signals (queued to the GUI
-/// thread).
+/// The closed loop in its own thread: owns the run's machine (core::ShaftMachine: whatever the page chose,
+/// made in this thread by the MachineMaker), the engine the run builder assembled on it
+/// (core/run/shaft_run_builder.h) and the history connection (QtSql: used only from this thread), and steps
+/// the engine from a timer so the window never waits for it. Every call comes through queued slots;
+/// everything it learns goes out through signals (queued to the GUI thread).
 class LoopWorker : public QObject {
     Q_OBJECT
 public:
@@ -32,10 +30,10 @@ public:
     ~LoopWorker() override;
 
 public slots:
-    /// Sets up and starts a run; failures (bad preset, history that cannot be opened, a CNC output set up
-    /// for another diameter) are reported through startFailed and nothing starts. `lathe`: the real lathe's
-    /// ports (settings.machine == RealLathe), null for the built-in simulated lathe.
-    void start(const tt::ui::RunSettings& settings, std::shared_ptr<const tt::ui::LathePorts> lathe = {});
+    /// Sets up and starts a run on the machine `makeMachine` makes for the scenario; failures (bad preset,
+    /// history that cannot be opened, a CNC output set up for another diameter) are reported through
+    /// startFailed and nothing starts.
+    void start(const tt::ui::RunSettings& settings, tt::ui::MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();
@@ -46,7 +44,7 @@ public slots:
     void submitDiameters(qint64 partNumber, const QVector<double>& diametersMm);
     /// The oldest part waiting for its diameters is recorded as not measured.
     void skipMeasurement();
-    /// The gauge stops answering for `seconds` of simulated time (demonstration and tests).
+    /// The gauge stops answering for `seconds` of the machine's time (a machine with that fault switch).
     void silenceGauge(double seconds);
     /// Stops the timer and drops the run (before the thread ends).
     void shutdown();
@@ -56,7 +54,7 @@ signals:
     void startFailed(const QString& reason);
     void snapshot(const tt::ui::LoopSnapshot& snapshot);
     void loopEvent(const tt::core::LoopEvent& event);
-    /// The true profile of a simulated part as it came off the machine (diameter error, mm; simulated lathe).
+    /// The true profile of a part as it came off the machine (diameter error, mm; machines that know it).
     void partProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
     /// A manual entry was not taken (wrong part, no run), in plain words.
     void notice(const QString& text);
@@ -69,7 +67,8 @@ private:
     void publish();
     void onEvent(const core::LoopEvent& event);
     void openHistory(const QString& path);
-    void build(Run& run, const RunSettings& settings, std::shared_ptr<const LathePorts> lathe);
+    std::unique_ptr<Run> build(const RunSettings& settings, const MachineMaker& makeMachine);
+    RunLayout layoutOf(const Run& run, const RunSettings& settings) const;
 
     QTimer* m_timer = nullptr;
     std::unique_ptr<Run> m_run;

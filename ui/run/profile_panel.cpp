@@ -57,7 +57,7 @@ void ProfilePanel::retranslate() {
 void ProfilePanel::setRun(const RunLayout& layout) {
     m_layout = layout;
     m_recent.clear();
-    m_simulated.clear();
+    m_trueProfiles.clear();
     m_lastMeasured = 0;
     m_lastStarted = 0;
     m_profile->clear();
@@ -122,10 +122,10 @@ void ProfilePanel::onLoopEvent(const core::LoopEvent& event) {
         m_profile->removeSeries(QStringLiteral("interpolated"));
     }
     // The same part as the simulator made it (the truth the gauge saw), when known.
-    const auto simulated = m_simulated.find(m.partNumber);
-    if (simulated != m_simulated.end())
-        m_profile->setSeries(QStringLiteral("true"), tr("simulated"), toStd(simulated->second.first),
-                             toStd(simulated->second.second), kTrue);
+    const auto truth = m_trueProfiles.find(m.partNumber);
+    if (truth != m_trueProfiles.end())
+        m_profile->setSeries(QStringLiteral("true"), tr("true profile"), toStd(truth->second.first),
+                             toStd(truth->second.second), kTrue);
     else
         m_profile->removeSeries(QStringLiteral("true"));
     m_lastMeasured = m.partNumber;
@@ -144,9 +144,9 @@ void ProfilePanel::rescaleProfile() {
 
 void ProfilePanel::onPartProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm) {
     if (m_layout.pointZMm.isEmpty()) return;
-    m_simulated[partNumber] = {zMm, errorMm};
-    while (m_simulated.size() > 16)
-        m_simulated.erase(m_simulated.begin());
+    m_trueProfiles[partNumber] = {zMm, errorMm};
+    while (m_trueProfiles.size() > 16)
+        m_trueProfiles.erase(m_trueProfiles.begin());
 }
 
 void ProfilePanel::drawHistory() {

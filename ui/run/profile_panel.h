@@ -24,7 +24,7 @@ public:
     /// A new run: clears the plots and draws what is fixed (band, model).
     void setRun(const RunLayout& layout);
     void onLoopEvent(const core::LoopEvent& event);
-    /// The simulated part as it really came off the machine.
+    /// The part as it really came off the machine (machines that know it: ShaftMachine::trueProfile).
     void onPartProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
     void retranslate();
 
@@ -44,7 +44,7 @@ private:
     Chart* m_history;
     RunLayout m_layout;
     std::deque<std::pair<qint64, std::vector<double>>> m_recent;  ///< part, deviation per point (NaN: none)
-    std::map<qint64, std::pair<QVector<double>, QVector<double>>> m_simulated;  ///< recent true profiles
+    std::map<qint64, std::pair<QVector<double>, QVector<double>>> m_trueProfiles;  ///< recent true profiles
     qint64 m_lastMeasured = 0;
     qint64 m_lastStarted = 0;
 };

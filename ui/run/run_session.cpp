@@ -2,8 +2,6 @@
 
 #include <QMetaObject>
 
-#include "ui/run/lathe_link.h"
-
 namespace tt::ui {
 
 RunSession::RunSession(QObject* parent) : QObject(parent) {
@@ -28,16 +26,14 @@ RunSession::RunSession(QObject* parent) : QObject(parent) {
 }
 
 RunSession::~RunSession() {
-    if (m_lathe) m_lathe->output->close("the Run page was closed");
     QMetaObject::invokeMethod(m_worker, &LoopWorker::shutdown, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
 }
 
-void RunSession::start(const RunSettings& settings, std::shared_ptr<const LathePorts> lathe) {
-    m_lathe = lathe;
+void RunSession::start(const RunSettings& settings, MachineMaker makeMachine) {
     QMetaObject::invokeMethod(
-        m_worker, [w = m_worker, settings, lathe] { w->start(settings, lathe); }, Qt::QueuedConnection);
+        m_worker, [w = m_worker, settings, makeMachine] { w->start(settings, makeMachine); }, Qt::QueuedConnection);
 }
 
 void RunSession::pause() {

@@ -13,16 +13,16 @@ namespace tt::ui {
 
 /// The GUI thread's handle on the closed loop: starts the loop thread with its worker, forwards the
 /// operator's commands to it (queued, never blocking) and its reports back as signals. Destroying the
-/// session stops the run and waits for the thread (first releasing a write that waits for a CNC output in
-/// this thread, so the two threads never wait for each other).
+/// session stops the run and waits for the thread; whoever joins the machine to devices in this thread
+/// (LatheLink) releases a write that waits for them first, so the two threads never wait for each other.
 class RunSession : public QObject {
     Q_OBJECT
 public:
     explicit RunSession(QObject* parent = nullptr);
     ~RunSession() override;
 
-    /// Starts a run; `lathe`: the real lathe's ports (settings.machine == RealLathe), null otherwise.
-    void start(const RunSettings& settings, std::shared_ptr<const LathePorts> lathe = {});
+    /// Starts a run on the machine `makeMachine` makes (in the loop's thread).
+    void start(const RunSettings& settings, MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();
@@ -49,7 +49,6 @@ private:
     QThread m_thread;
     LoopWorker* m_worker = nullptr;
     LoopSnapshot m_snapshot;
-    std::shared_ptr<const LathePorts> m_lathe;  ///< closed before the loop thread is stopped
 };
 
 }  // namespace tt::ui

@@ -4,29 +4,41 @@
 #include <QString>
 #include <QVector>
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 
 #include "core/loop/loop_state.h"
 #include "core/ports/device_health.h"
+#include "core/ports/shaft_machine.h"
+#include "core/run/shaft_scenario.h"
 
 namespace tt::ui {
 
-/// Where the parts are made: the built-in simulated lathe (its own CNC, gauge and part cycle) or the real
-/// lathe (the CNC output and gauge chosen from the Devices page, parts confirmed by the operator).
-enum class Machine { Simulated, RealLathe };
+/// The key of the lathe the Run page assembles from the devices of the Devices page (the CNC output and
+/// gauge chosen there, each part confirmed by the operator); every other key is a machine a device plugin
+/// offers whole (devices::ShaftMachineOffer, such as the built-in simulator's lathe).
+inline const QString kDevicesMachineKey = QStringLiteral("real");
+
+/// Makes the machine of a run for its scenario; called in the loop's thread.
+using MachineMaker = std::function<std::shared_ptr<core::ShaftMachine>(const core::ShaftScenario& scenario)>;
 
 /// What the operator chose for a run on the Run page.
 struct RunSettings {
-    Machine machine = Machine::Simulated;
+    QString machineKey = QStringLiteral("simulated-lathe");  ///< an offer's key, or kDevicesMachineKey
+    QString machineName;                                     ///< as the page names it
+    bool operatorCycle = false;  ///< the operator confirms each part (the lathe assembled from the devices)
     QString preset = QStringLiteral("paper-2012-group1");  ///< scenario preset (physical lathe)
     QString controller = QStringLiteral("lqg");            ///< "lqg", "ewma", "open"
     int delay = 2;                                         ///< transport delay z, parts
-    double speed = 360.0;                                  ///< simulated seconds per wall second
-    std::uint64_t seed = 1;                                ///< the simulator's random sources
-    bool manualEntry = false;                              ///< diameters typed in instead of the simulated gauge
-    QString databasePath;                                  ///< SQLite history file; empty: nothing stored
-    QString outputDeviceId;                                ///< real lathe: the CNC output (id on the Devices page)
-    QString gaugeDeviceId;  ///< real lathe: the gauge (id on the Devices page); empty: diameters typed by hand
+    double speed = 360.0;      ///< machine seconds per wall second (machines with an adjustable speed)
+    std::uint64_t seed = 1;    ///< the simulator's random sources
+    bool manualEntry = false;  ///< diameters typed in instead of the machine's gauge
+    QString databasePath;      ///< SQLite history file; empty: nothing stored
+    QString outputDeviceId;    ///< assembled lathe: the CNC output (id on the Devices page)
+    QString gaugeDeviceId;     ///< assembled lathe: the gauge (id on the Devices page); empty: diameters typed by hand
+    QString outputName;        ///< their names on the Devices page (stored with the run)
+    QString gaugeName;
 };
 
 /// The loop as the page shows it, sent by the loop thread after every change.
@@ -38,8 +50,7 @@ struct LoopSnapshot {
     std::optional<qint64> awaitingPart;  ///< the part waiting longest for its diameters
     int nextPoint = 0;                   ///< its next control point
     bool manualEntry = false;
-    bool realLathe = false;   ///< the run is on the real lathe (its time is the wall clock)
-    double simulatedS = 0.0;  ///< simulated time of the run, s
+    double machineS = 0.0;  ///< the machine's time (simulated, or the wall clock since the run started), s
     core::DeviceHealth gauge;
     core::DeviceHealth cnc;
     std::optional<qint64> runId;
@@ -57,7 +68,9 @@ struct RunLayout {
     int delay = 1;
     QString controller;
     QString preset;
-    Machine machine = Machine::Simulated;
+    QString machineName;           ///< the machine as the page named it
+    bool operatorCycle = false;    ///< the operator confirms each part
+    bool adjustableSpeed = false;  ///< the machine's time runs at a settable multiple of the wall clock
 };
 
 }  // namespace tt::ui

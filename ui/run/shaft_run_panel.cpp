@@ -33,8 +33,6 @@ const QStringList kControllers = {QStringLiteral("lqg"), QStringLiteral("ewma"),
 const double kSpeeds[] = {1.0, 60.0, 360.0, 3600.0};
 constexpr int kDefaultSpeed = 2;
 constexpr int kMaxAlarms = 200;
-const QString kSimulatedKey = QStringLiteral("simulated");
-const QString kRealKey = QStringLiteral("real");
 
 AppState::Loop toAppLoop(core::LoopState s) {
     switch (s) {
@@ -223,8 +221,7 @@ QWidget* ShaftRunPanel::buildControls() {
     row->addWidget(m_stop);
     row->addSpacing(12);
     m_machine->setObjectName(QStringLiteral("machineCombo"));
-    m_machine->addItem(QString(), kSimulatedKey);
-    m_machine->addItem(QString(), kRealKey);
+    fillMachineChoices();
     for (auto [label, field] : {std::pair<QLabel*, QWidget*>{m_machineLabel, m_machine}, {m_presetLabel, m_preset}}) {
         row->addSpacing(8);
         row->addWidget(label);
@@ -322,8 +319,7 @@ void ShaftRunPanel::retranslate() {
     m_speed->setItemText(2, tr("×360 (1 s a part)"));
     m_speed->setItemText(3, tr("×3600 (fastest)"));
     m_machineLabel->setText(tr("Machine"));
-    m_machine->setItemText(0, tr("Simulated lathe (built in)"));
-    m_machine->setItemText(1, tr("Real lathe (Devices page)"));
+    fillMachineChoices();
     m_outputLabel->setText(tr("CNC output"));
     m_gaugeLabel->setText(tr("Diameters from"));
     if (const int byHand = m_gauge->findData(QString()); byHand >= 0)
@@ -366,7 +362,7 @@ void ShaftRunPanel::fillDeviceChoices() {
 
 void ShaftRunPanel::restoreChoices() {
     const QSettings settings;
-    setChoice(m_machine, settings.value(QStringLiteral("run/machine"), kSimulatedKey).toString());
+    setChoice(m_machine, settings.value(QStringLiteral("run/machine")).toString());
     setChoice(m_output, settings.value(QStringLiteral("run/cncOutput")).toString());
     if (settings.contains(QStringLiteral("run/gauge")))
         setChoice(m_gauge, settings.value(QStringLiteral("run/gauge")).toString());
@@ -382,14 +378,33 @@ void ShaftRunPanel::saveChoices() const {
 }
 
 bool ShaftRunPanel::realLatheChosen() const {
-    return m_machine->currentData().toString() == kRealKey;
+    return m_machine->currentData().toString() == kDevicesMachineKey;
+}
+
+std::optional<devices::ShaftMachineOffer> ShaftRunPanel::chosenOffer() const {
+    for (const devices::ShaftMachineOffer& offer : m_offers)
+        if (offer.key == m_machine->currentData().toString()) return offer;
+    return std::nullopt;
+}
+
+void ShaftRunPanel::fillMachineChoices() {
+    const QString chosen = m_machine->currentData().toString();
+    const QSignalBlocker block(m_machine);
+    m_offers = m_context.devices ? m_context.devices->shaftMachineOffers() : QList<devices::ShaftMachineOffer>();
+    m_machine->clear();
+    for (const devices::ShaftMachineOffer& offer : m_offers)
+        m_machine->addItem(offer.name, offer.key);
+    m_machine->addItem(tr("Real lathe (Devices page)"), kDevicesMachineKey);
+    setChoice(m_machine, chosen);
 }
 
 // ---- commands -----------------------------------------------------------------------------------------
 
 RunSettings ShaftRunPanel::settings() const {
     RunSettings s;
-    s.machine = realLatheChosen() ? Machine::RealLathe : Machine::Simulated;
+    s.machineKey = m_machine->currentData().toString();
+    s.machineName = m_machine->currentText();
+    s.operatorCycle = realLatheChosen();
     s.preset = m_preset->currentData().toString();
     s.controller = m_controller->currentData().toString();
     s.delay = m_delay->value();
@@ -397,7 +412,7 @@ RunSettings ShaftRunPanel::settings() const {
     s.manualEntry = m_manualMode->isChecked();
     s.databasePath = m_context.databasePath;
     s.seed = QRandomGenerator::global()->generate64() >> 12;
-    if (s.machine == Machine::RealLathe) {
+    if (s.operatorCycle) {
         s.outputDeviceId = m_output->currentData().toString();
         s.gaugeDeviceId = m_gauge->currentData().toString();
         if (s.gaugeDeviceId.isEmpty()) s.manualEntry = true;
@@ -406,18 +421,28 @@ RunSettings ShaftRunPanel::settings() const {
 }
 
 void ShaftRunPanel::onStart() {
-    const RunSettings s = settings();
-    std::shared_ptr<const LathePorts> lathe;
-    if (s.machine == Machine::RealLathe) {
+    RunSettings s = settings();
+    MachineMaker makeMachine;
+    if (s.operatorCycle) {
         const QString problem = m_link->startProblem(s.outputDeviceId, s.gaugeDeviceId);
         if (!problem.isEmpty()) {
             refuseStart(problem);
             return;
         }
-        lathe = m_link->connectDevices(s.outputDeviceId, s.gaugeDeviceId);
+        const std::shared_ptr<const LathePorts> lathe = m_link->connectDevices(s.outputDeviceId, s.gaugeDeviceId);
+        s.outputName = lathe->outputName;
+        s.gaugeName = lathe->gaugeName;
+        makeMachine = [machine = lathe->machine](const core::ShaftScenario&) { return machine; };
+    } else if (const std::optional<devices::ShaftMachineOffer> offer = chosenOffer()) {
+        makeMachine = [make = offer->make, seed = s.seed, speed = s.speed](const core::ShaftScenario& scenario) {
+            return std::shared_ptr<core::ShaftMachine>(make(scenario, seed, speed));
+        };
+    } else {
+        refuseStart(tr("The machine chosen is no longer offered; choose another."));
+        return;
     }
     saveChoices();
-    m_session->start(s, lathe);
+    m_session->start(s, std::move(makeMachine));
     m_start->setEnabled(false);
 }
 
@@ -449,11 +474,10 @@ void ShaftRunPanel::onStarted(const RunLayout& layout) {
     m_haveRun = true;
     m_profile->setRun(layout);
     m_manual->setPoints(layout.pointZMm, layout.nominalDiameterMm, layout.plausibleRangeMm);
-    const QString machine = layout.machine == Machine::RealLathe ? tr("real lathe") : tr("simulated lathe");
     addAlarm(tr("Run started: %1, %2, z = %3, %4")
                  .arg(layout.preset, layout.controller.toUpper())
                  .arg(layout.delay)
-                 .arg(machine),
+                 .arg(layout.machineName),
              false);
     updateControls();
 }
@@ -467,7 +491,7 @@ void ShaftRunPanel::onStartFailed(const QString& reason) {
 void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
     const bool ended = snapshot.state == core::LoopState::Idle && m_snapshot.state != core::LoopState::Idle;
     m_snapshot = snapshot;
-    if (ended && snapshot.realLathe) m_link->disconnectDevices(tr("the run is over"));
+    if (ended && m_layout.operatorCycle) m_link->disconnectDevices(tr("the run is over"));
     m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
     if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), QString(snapshot.detail));
     updateControls();
@@ -502,18 +526,20 @@ void ShaftRunPanel::updateControls() {
         w->setEnabled(idle);
     m_pause->setText(s == core::LoopState::Paused ? tr("Continue") : tr("Pause"));
     // While a run goes, the page shows its machine; otherwise the one chosen.
-    const bool real = idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
+    const bool real = idle ? realLatheChosen() : m_layout.operatorCycle;
     // The real lathe: its devices are chosen while idle; during a run the part cycle takes their place.
     m_devicePicker->setVisible(real && idle);
     m_lathePanel->setVisible(real && !idle);
-    m_speedLabel->setVisible(!real);
-    m_speed->setVisible(!real);
+    const std::optional<devices::ShaftMachineOffer> offer = chosenOffer();
+    const bool adjustable = idle ? offer && offer->adjustableSpeed : m_layout.adjustableSpeed;
+    m_speedLabel->setVisible(adjustable);
+    m_speed->setVisible(adjustable);
     updateLathePanel();
 }
 
 void ShaftRunPanel::updateLathePanel() {
     LathePanel::View v;
-    const bool realRun = m_haveRun && m_layout.machine == Machine::RealLathe && m_link->isConnected();
+    const bool realRun = m_haveRun && m_layout.operatorCycle && m_link->isConnected();
     v.runGoing =
         realRun && (m_snapshot.state == core::LoopState::Running || m_snapshot.state == core::LoopState::Paused);
     if (realRun) {
@@ -547,9 +573,10 @@ QString ShaftRunPanel::stateText() const {
 
 QString ShaftRunPanel::deviceText() const {
     const bool idle = m_snapshot.state == core::LoopState::Idle;
-    const bool real = idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
+    const bool real = idle ? realLatheChosen() : m_layout.operatorCycle;
     if (!real) {
-        if (!m_haveRun || idle) return tr("Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)");
+        if (!m_haveRun || idle)
+            return tr("Machine: %1 (its own CNC, gauge and part cycle)").arg(m_machine->currentText());
         return tr("Gauge: %1 · CNC: %2").arg(healthText(m_snapshot.gauge), healthWord(m_snapshot.cnc.state));
     }
     // The real lathe: which devices, and their state in a word (with the reason when not ready).
@@ -583,12 +610,10 @@ void ShaftRunPanel::updateTexts() {
                            : m_snapshot.state == core::LoopState::Paused  ? QStringLiteral("color: #b26a00;")
                            : m_snapshot.state == core::LoopState::Running ? QStringLiteral("color: #2e7d32;")
                                                                           : QString());
-    const bool real =
-        m_snapshot.state == core::LoopState::Idle ? realLatheChosen() : m_layout.machine == Machine::RealLathe;
-    QString idleText = real ? tr("Press Start: each part's corrections go to the CNC; you machine the part and press "
-                                 "Part finished.")
-                            : tr("Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured "
-                                 "at the control points and the next part is corrected.");
+    const std::optional<devices::ShaftMachineOffer> offer = chosenOffer();
+    const QString idleText =
+        offer ? tr("Press Start: %1").arg(offer->description)
+              : tr("Press Start: each part's corrections go to the CNC; you machine the part and press Part finished.");
     m_detail->setText(m_haveRun ? QString(m_snapshot.detail) : idleText);
     m_devices->setText(deviceText());
     m_partCounter->setText(m_haveRun ? tr("Parts done: %1").arg(m_snapshot.partsFinished) : QString());

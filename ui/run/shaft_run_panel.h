@@ -3,8 +3,10 @@
 #include <QVector>
 #include <QWidget>
 #include <memory>
+#include <optional>
 
 #include "core/loop/loop_events.h"
+#include "devices/api/shaft_machine_offer.h"
 #include "ui/app_context.h"
 #include "ui/run/run_settings.h"
 
@@ -24,17 +26,17 @@ class ProfilePanel;
 class RunSession;
 
 /// Run-to-run control of the shaft profile (paper 000), the Run page's first tab: the closed loop with the
-/// run history, on the built-in simulated lathe or on the real lathe. Start / Pause / Stop, the set-up, the
-/// controller, the delay z and the speed (simulated lathe); the machine: the simulated lathe, or the real
-/// lathe with the CNC output and the gauge chosen from the Devices page (AppContext::devices) and the part
-/// cycle confirmed with the big Part finished button; the live profile of the last part with the tolerance
-/// band, the systematic model and the correction path; a history strip of the error at each control point;
-/// the loop and the devices it uses in plain words; the alarms; manual entry of diameters. The loop runs in
-/// its own thread (RunSession), so the window never waits; the devices stay in this thread (LatheLink).
+/// run history. Start / Pause / Stop, the set-up, the controller, the delay z and the speed (machines whose
+/// time can run faster); the machine: one a device plugin offers whole (devices::ShaftMachineOffer, e.g.
+/// the built-in simulator's lathe), or the lathe assembled from the CNC output and the gauge chosen from the
+/// Devices page (AppContext::devices) with the part cycle confirmed with the big Part finished button; the live profile
+/// of the last part with the tolerance band, the systematic model and the correction path; a history strip of the error
+/// at each control point; the loop and the devices it uses in plain words; the alarms; manual entry of diameters. The
+/// loop runs in its own thread (RunSession), so the window never waits; the devices stay in this thread (LatheLink).
 class ShaftRunPanel : public QWidget {
     Q_OBJECT
 public:
-    /// `context.devices` may be null: then only the simulated lathe can run.
+    /// `context.devices` may be null: then no machine is offered and a run is refused with the reason.
     explicit ShaftRunPanel(AppContext& context, QWidget* parent = nullptr);
     ~ShaftRunPanel() override;
     /// Sets every visible text (also on a language change).
@@ -71,6 +73,9 @@ private:
     void restoreChoices();
     void saveChoices() const;
     bool realLatheChosen() const;
+    /// The machine offer chosen, or none (the lathe assembled from the devices).
+    std::optional<devices::ShaftMachineOffer> chosenOffer() const;
+    void fillMachineChoices();
     void updateControls();
     void updateTexts();
     void updateLathePanel();
@@ -84,6 +89,7 @@ private:
     LoopSnapshot m_snapshot;
     bool m_haveRun = false;
     RunLayout m_layout;
+    QList<devices::ShaftMachineOffer> m_offers;  ///< complete machines the plugins offer
 
     QPushButton* m_start;
     QPushButton* m_pause;

@@ -132,4 +132,22 @@ EwmaWeightChoice bestEwmaWeight(const RunToRunPlant& plant, const std::vector<do
     return best;
 }
 
+double chooseEwmaWeight(const RunToRunSetup& setup, const RunToRunPlant& plant, std::optional<double> given) {
+    if (given) return *given;
+    return setup.ewmaWeightAuto ? bestEwmaWeight(plant, defaultEwmaWeightGrid()).weight : setup.ewma.weight;
+}
+
+LinearControllerModel controllerModel(const RunToRunSetup& setup, const RunToRunPlant& plant, ControllerKind kind,
+                                      double ewmaWeight) {
+    switch (kind) {
+        case ControllerKind::Lqg:
+            return lqgControllerModel(plant, designLqg(plant, setup.weights));
+        case ControllerKind::Ewma:
+            return ewmaControllerModel(plant, ewmaWeight);
+        case ControllerKind::Open:
+            break;
+    }
+    return openLoopControllerModel(plant);
+}
+
 }  // namespace tt::core

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "core/control/lqg_design.h"
 #include "core/control/run_to_run_plant.h"
+#include "core/control/run_to_run_setup.h"
 
 namespace tt::core {
 
@@ -53,5 +55,14 @@ std::vector<double> defaultEwmaWeightGrid();
 /// Best EWMA weight on `grid` by the analytic steady state (`--ewma-weight auto`). Throws
 /// std::invalid_argument when the open loop is not stationary (no analytic variance exists).
 EwmaWeightChoice bestEwmaWeight(const RunToRunPlant& plant, const std::vector<double>& grid);
+
+/// The EWMA weight a run uses: `given`, else the best on the default grid when the setup says auto, else
+/// the setup's own. Throws as bestEwmaWeight.
+double chooseEwmaWeight(const RunToRunSetup& setup, const RunToRunPlant& plant, std::optional<double> given);
+
+/// The linear model of the controller of `kind` (LQG designed with the setup's weights; EWMA with
+/// `ewmaWeight`; open loop) for the analytic steady state.
+LinearControllerModel controllerModel(const RunToRunSetup& setup, const RunToRunPlant& plant, ControllerKind kind,
+                                      double ewmaWeight);
 
 }  // namespace tt::core

@@ -13,24 +13,12 @@ StudyResult runRunToRunStudy(const RunToRunSetup& setup, const StudyOptions& opt
     result.delay = plant.delay;
     result.parts = options.monteCarlo.parts;
 
-    LinearControllerModel model;
-    double ewmaWeight = setup.ewma.weight;
-    switch (options.controller) {
-        case ControllerKind::Lqg:
-            model = lqgControllerModel(plant, designLqg(plant, setup.weights));
-            break;
-        case ControllerKind::Ewma:
-            ewmaWeight = options.ewmaWeight     ? *options.ewmaWeight
-                         : setup.ewmaWeightAuto ? bestEwmaWeight(plant, defaultEwmaWeightGrid()).weight
-                                                : setup.ewma.weight;
-            result.ewmaWeight = ewmaWeight;
-            model = ewmaControllerModel(plant, ewmaWeight);
-            break;
-        case ControllerKind::Open:
-            model = openLoopControllerModel(plant);
-            break;
-    }
-    const SteadyStateVariances analytic = analyseSteadyState(plant, model);
+    const double ewmaWeight = options.controller == ControllerKind::Ewma
+                                  ? chooseEwmaWeight(setup, plant, options.ewmaWeight)
+                                  : setup.ewma.weight;
+    if (options.controller == ControllerKind::Ewma) result.ewmaWeight = ewmaWeight;
+    const SteadyStateVariances analytic =
+        analyseSteadyState(plant, controllerModel(setup, plant, options.controller, ewmaWeight));
     std::unique_ptr<RunToRunController> controller =
         makeRunToRunController(setup, plant, options.controller, ewmaWeight);
     const MonteCarloResult mc = runMonteCarlo(plant, *controller, options.monteCarlo);

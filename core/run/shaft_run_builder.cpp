@@ -1,0 +1,57 @@
+#include "core/run/shaft_run_builder.h"
+
+#include <cmath>
+
+#include "core/common/text_format.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
+
+namespace tt::core {
+
+namespace {
+/// A G-code output's diameter and the scenario's may differ by rounding only.
+constexpr double kDiameterMatchMm = 0.0005;
+}  // namespace
+
+OutputDiameterMismatch::OutputDiameterMismatch(double output, double scenario)
+    : std::invalid_argument("the CNC output writes programs for a diameter of " + formatFixed(output, 3) +
+                            " mm, the scenario turns " + formatFixed(scenario, 3) + " mm"),
+      outputMm(output),
+      scenarioMm(scenario) {}
+
+ShaftRunPlan planShaftRun(const ShaftScenario& scenario, const ShaftRunChoice& choice) {
+    if (choice.ewmaWeight && !(*choice.ewmaWeight > 0.0 && *choice.ewmaWeight <= 1.0))
+        throw std::invalid_argument("the EWMA weight must be in (0, 1]");
+    if (choice.lastPartNumber && *choice.lastPartNumber < 1)
+        throw std::invalid_argument("a run needs at least one part");
+    ShaftRunPlan plan;
+    plan.plant = buildRunToRunPlant(scenario.control.plant);
+    plan.controller = choice.controller;
+    plan.ewmaWeight = choice.controller == ControllerKind::Ewma
+                          ? chooseEwmaWeight(scenario.control, plan.plant, choice.ewmaWeight)
+                          : scenario.control.ewma.weight;
+    plan.loop = scenario.loopConfig(choice.controller != ControllerKind::Open, choice.lastPartNumber);
+    return plan;
+}
+
+std::unique_ptr<RunToRunController> makeShaftController(const ShaftScenario& scenario, const ShaftRunPlan& plan) {
+    return makeRunToRunController(scenario.control, plan.plant, plan.controller, plan.ewmaWeight);
+}
+
+std::unique_ptr<LoopEngine> buildShaftRun(const ShaftScenario& scenario, const ShaftRunPlan& plan,
+                                          ShaftMachine& machine, HistoryStore* history, DiameterGauge* gauge) {
+    if (const std::optional<double> outputMm = machine.outputNominalDiameterMm();
+        outputMm && std::fabs(*outputMm - plan.loop.nominalDiameterMm) > kDiameterMatchMm)
+        throw OutputDiameterMismatch(*outputMm, plan.loop.nominalDiameterMm);
+    return std::make_unique<LoopEngine>(
+        plan.loop,
+        LoopPorts{machine.cycle(), machine.output(), gauge ? *gauge : machine.gauge(), machine.clock(), history},
+        makeShaftController(scenario, plan));
+}
+
+void resumeShaftRun(LoopEngine& engine, ShaftMachine& machine, const LoopConfig& loop, const ResumePoint& point) {
+    for (const StoredPart& pending : point.pendingParts)
+        if (!pending.measurement) machine.restorePart(partCorrectionFor(loop, pending));
+    engine.resumeFrom(point);
+}
+
+}  // namespace tt::core

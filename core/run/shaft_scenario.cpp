@@ -1,0 +1,34 @@
+#include "core/run/shaft_scenario.h"
+
+namespace tt::core {
+
+LatheShopSpec ShaftScenario::shopSpec(std::uint64_t seed) const {
+    LatheShopSpec spec;
+    spec.lathe = lathe;
+    spec.plant = control.plant;
+    spec.nominalDiameterMm = nominalDiameterMm;
+    spec.partLengthMm = partLengthMm;
+    spec.timing = timing;
+    spec.seed = seed;
+    return spec;
+}
+
+LoopConfig ShaftScenario::loopConfig(bool feedForward, std::optional<std::int64_t> lastPartNumber) const {
+    LoopConfig c;
+    for (const ControlPointSpec& p : control.plant.points)
+        c.pointZMm.push_back(p.xMm);
+    c.partLengthMm = partLengthMm;
+    c.nominalDiameterMm = nominalDiameterMm;
+    c.delayParts = control.plant.delay;
+    if (feedForward) c.systematicModel = systematicModel;
+    c.interpolation = interpolation;
+    c.pathStepMm = pathStepMm;
+    c.plausibleRangeMm = plausibleRangeMm;
+    c.limits = control.limits;
+    c.gaugeTimeoutS = gaugeTimeoutS;
+    c.lastPartNumber = lastPartNumber;
+    validateLoopConfig(c);
+    return c;
+}
+
+}  // namespace tt::core
