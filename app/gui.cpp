@@ -3,8 +3,10 @@
 #include <trueturn/version.h>
 #include <QApplication>
 #include <QDir>
+#include <QLoggingCategory>
 #include <QTimer>
 #include <cstdio>
+#include <memory>
 
 #include "app/gui_options.h"
 #include "core/storage/database_location.h"
@@ -13,6 +15,7 @@
 #include "ui/devices/terminal_devices.h"
 #include "ui/history_check.h"
 #include "ui/language.h"
+#include "ui/log_file.h"
 #include "ui/main_window.h"
 #include "ui/prompt.h"
 #include "ui/style.h"
@@ -73,6 +76,19 @@ int runGui(int argc, char** argv) {
     ui::AppContext context{&prompt, &state, &language,
                            options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath,
                            &devices.manager()};
+    // The application's log in the user's data folder (its path is in the About box).
+    std::unique_ptr<ui::LogFile> log;
+    try {
+        log = std::make_unique<ui::LogFile>(ui::LogFile::defaultPath());
+        log->install();
+        // The product's own categories log at info level in the GUI (the command line stays quiet).
+        QLoggingCategory::setFilterRules(QStringLiteral("trueturn.*.info=true"));
+        state.setLogFilePath(log->path());
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "trueturn: no log file: %s\n", e.what());
+    }
+    // The one data access object of the history database, shared by every page of the GUI thread.
+    context.stores = std::make_shared<storage::DataStores>(context.databasePath);
     ui::MainWindow window(context);
     for (ui::PageId id : ui::kAllPages)
         if (ui::pageKey(id) == options.page) window.showPage(id);

@@ -22,6 +22,9 @@ public:
     Tone deviceTone() const { return m_deviceTone; }
     QString deviceSummary() const { return m_deviceSummary; }
     QString databaseDescription() const { return m_databaseDescription; }
+    /// Where the application's log is written (ui/log_file.h); empty when it is not written.
+    QString logFilePath() const { return m_logFilePath; }
+    void setLogFilePath(const QString& path) { m_logFilePath = path; }
     QString operatorName() const { return m_operatorName; }
 
     void setLoop(Loop loop, const QString& detail);
@@ -44,6 +47,7 @@ private:
     Tone m_deviceTone = Tone::Idle;
     QString m_deviceSummary;
     QString m_databaseDescription;
+    QString m_logFilePath;
     QString m_operatorName;
 };
 

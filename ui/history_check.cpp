@@ -3,18 +3,17 @@
 #include <QCoreApplication>
 #include <exception>
 
-#include "core/storage/schemas.h"
+#include <stdexcept>
 #include "ui/app_context.h"
 #include "ui/app_state.h"
 #include "ui/prompt.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 
 bool checkHistoryAtStart(AppContext& context, QWidget* parent, Prompt* prompt) {
     try {
-        const auto database = openContextDatabase(context.databasePath);
-        storage::migrateAll(*database);
+        storage::Database* database = context.data().database();
+        if (!database) throw std::runtime_error(context.data().problem().toStdString());
         if (context.state) context.state->setDatabaseDescription(database->config().describe());
         return true;
     } catch (const std::exception& e) {

@@ -1,5 +1,7 @@
 #include "ui/main_window.h"
 
+#include "ui/log_categories.h"
+
 #include <algorithm>
 
 #include <trueturn/version.h>
@@ -181,6 +183,7 @@ void MainWindow::showPage(PageId id) {
         m_stack->setCurrentIndex(i);
         m_navButtons[i]->setChecked(true);
         m_pageTitle->setText(m_pages[i]->title());
+        qCInfo(lcUi).noquote() << "page" << pageKey(id);
         return;
     }
 }
@@ -201,8 +204,11 @@ void MainWindow::showAbout() {
         this, tr("About TrueTurn"),
         tr("<h2>TrueTurn %1</h2><p>Adaptive accuracy control for lathes: run-to-run control of the shaft "
            "profile, in-process compensation of boring-bar deflection, feed scheduling and drive "
-           "corrections.</p><p>Qt %2</p>")
-            .arg(QString::fromLatin1(tt::kVersion), QString::fromLatin1(qVersion())));
+           "corrections.</p><p>Qt %2</p><p>Log file: %3</p>")
+            .arg(QString::fromLatin1(tt::kVersion), QString::fromLatin1(qVersion()),
+                 m_context.state && !m_context.state->logFilePath().isEmpty()
+                     ? m_context.state->logFilePath().toHtmlEscaped()
+                     : tr("not written")));
 }
 
 void MainWindow::changeEvent(QEvent* event) {

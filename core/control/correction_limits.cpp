@@ -26,9 +26,9 @@ LimitedCorrection applyCorrectionLimits(const Eigen::VectorXd& candidateMm, cons
     return out;
 }
 
-std::optional<std::string> nonFiniteReason(double valueMm) {
-    if (std::isnan(valueMm)) return std::string("not measured");
-    if (std::isinf(valueMm)) return std::string("not a finite number");
+std::optional<Notice> nonFiniteReason(double valueMm) {
+    if (std::isnan(valueMm)) return Notice{NoticeKind::NotMeasured};
+    if (std::isinf(valueMm)) return Notice{NoticeKind::NotFinite};
     return std::nullopt;
 }
 

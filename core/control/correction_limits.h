@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include "core/common/notice.h"
+
 namespace tt::core {
 
 /// Limits on the radial cutter corrections a run-to-run controller may command, per control point
@@ -28,8 +30,8 @@ struct LimitedCorrection {
 LimitedCorrection applyCorrectionLimits(const Eigen::VectorXd& candidateMm, const Eigen::VectorXd& previousMm,
                                         const CorrectionLimits& limits);
 
-/// Why a measured value cannot be used at all: "not measured" for NaN, "not a finite number" for
-/// +-Inf; empty for a finite value.
-std::optional<std::string> nonFiniteReason(double valueMm);
+/// Why a measured value cannot be used at all: NotMeasured for NaN, NotFinite for +-Inf; nothing for a
+/// finite value.
+std::optional<Notice> nonFiniteReason(double valueMm);
 
 }  // namespace tt::core

@@ -12,10 +12,6 @@ namespace {
 
 constexpr double kEwmaStateFormat = 1.0;
 
-std::string mm(double v) {
-    return formatSignificant(v, 4) + " mm";
-}
-
 }  // namespace
 
 void EwmaOptions::validate() const {
@@ -58,7 +54,7 @@ MeasurementVerdict EwmaController::addMeasurement(const PartMeasurement& measure
     const MachinedParts machined{m_started, m_firstPart, m_lastPart, m_options.historyParts};
     if (const auto why = partRejection(machined, part, m_historyPart[s] == part))
         return rejectEveryPoint(pointCount(), *why);
-    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
+    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<Notice>(m)};
     for (std::size_t i = 0; i < m; ++i) {
         const Eigen::Index ii = static_cast<Eigen::Index>(i);
         const double v = measurement.deviationMm(ii);
@@ -68,8 +64,9 @@ MeasurementVerdict EwmaController::addMeasurement(const PartMeasurement& measure
         }
         if (std::abs(v) >= m_options.alarmMm) {
             m_bands[i] = ToleranceBand::Alarm;
-            verdict.reasons[i] = "alarm: |deviation| " + mm(std::abs(v)) + " >= alarm band " + mm(m_options.alarmMm) +
-                                 "; not used for correction, check the part";
+            verdict.reasons[i] = Notice{NoticeKind::AlarmBand, part};
+            verdict.reasons[i].value = std::abs(v);
+            verdict.reasons[i].limit = m_options.alarmMm;
             continue;
         }
         m_bands[i] = std::abs(v) >= m_options.warningMm ? ToleranceBand::Warning : ToleranceBand::Ok;
@@ -170,11 +167,11 @@ OpenLoopController::OpenLoopController(int pointCount) : m_points(pointCount) {
 MeasurementVerdict OpenLoopController::addMeasurement(const PartMeasurement& measurement) {
     requireMeasurementSize(measurement, m_points, "open loop");
     const std::size_t m = static_cast<std::size_t>(m_points);
-    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
+    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<Notice>(m)};
     const bool machined = m_started && measurement.partNumber <= m_lastPart;
     for (std::size_t i = 0; i < m; ++i) {
         if (!machined) {
-            verdict.reasons[i] = "part " + std::to_string(measurement.partNumber) + " has not been machined yet";
+            verdict.reasons[i] = Notice{NoticeKind::NotMachinedYet, measurement.partNumber};
         } else if (const auto why = nonFiniteReason(measurement.deviationMm(static_cast<Eigen::Index>(i)))) {
             verdict.reasons[i] = *why;
         } else {

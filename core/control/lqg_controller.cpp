@@ -238,7 +238,7 @@ MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurem
         lead >= 0 || (part >= m_nextStep - m_options.historyParts && m_historyStep[historySlot(part)] == part);
     const MachinedParts machined{m_started, m_firstPart, m_lastPart, m_options.historyParts};
     if (const auto why = partRejection(machined, part, stillKept)) return rejectEveryPoint(m_points, *why);
-    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<std::string>(m)};
+    MeasurementVerdict verdict{std::vector<bool>(m, false), std::vector<Notice>(m)};
 
     // Prediction of this part's measurement and where it is stored.
     Eigen::VectorXd predicted;
@@ -275,8 +275,9 @@ MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurem
         }
         const double off = std::abs(v - predicted(ii)) / std::sqrt(variance(ii));
         if (off > m_options.gateSigma) {
-            verdict.reasons[i] = "outlier: " + formatSignificant(off, 3) + " sigma from the prediction (gate " +
-                                 formatSignificant(m_options.gateSigma, 3) + " sigma)";
+            verdict.reasons[i] = Notice{NoticeKind::Outlier, part};
+            verdict.reasons[i].value = off;
+            verdict.reasons[i].limit = m_options.gateSigma;
             continue;
         }
         values[i] = v;

@@ -25,24 +25,29 @@ void requireNextPart(bool started, std::int64_t lastPart, std::int64_t part, con
                                     std::to_string(lastPart + 1) + ", got " + std::to_string(part) + ")");
 }
 
-std::optional<std::string> partRejection(const MachinedParts& parts, std::int64_t part, bool stillKept) {
-    if (!parts.started || part > parts.lastPart) return "part " + std::to_string(part) + " has not been machined yet";
-    if (part < parts.firstPart) return "part " + std::to_string(part) + " was not machined under this controller";
-    if (!stillKept)
-        return "part " + std::to_string(part) + " is too late: the controller keeps the last " +
-               std::to_string(parts.keptParts) + " parts";
-    return std::nullopt;
+std::optional<Notice> partRejection(const MachinedParts& parts, std::int64_t part, bool stillKept) {
+    Notice n{NoticeKind::None, part};
+    if (!parts.started || part > parts.lastPart)
+        n.kind = NoticeKind::NotMachinedYet;
+    else if (part < parts.firstPart)
+        n.kind = NoticeKind::NotUnderController;
+    else if (!stillKept) {
+        n.kind = NoticeKind::TooLate;
+        n.limit = static_cast<double>(parts.keptParts);
+    }
+    if (!n) return std::nullopt;
+    return n;
 }
 
-std::optional<std::string> valueRejection(double valueMm, bool alreadyMeasured, std::int64_t part) {
+std::optional<Notice> valueRejection(double valueMm, bool alreadyMeasured, std::int64_t part) {
     if (auto why = nonFiniteReason(valueMm)) return why;
-    if (alreadyMeasured) return "point already measured for part " + std::to_string(part);
+    if (alreadyMeasured) return Notice{NoticeKind::AlreadyMeasured, part};
     return std::nullopt;
 }
 
-MeasurementVerdict rejectEveryPoint(int points, const std::string& why) {
+MeasurementVerdict rejectEveryPoint(int points, const Notice& why) {
     const auto m = static_cast<std::size_t>(points);
-    return MeasurementVerdict{std::vector<bool>(m, false), std::vector<std::string>(m, why)};
+    return MeasurementVerdict{std::vector<bool>(m, false), std::vector<Notice>(m, why)};
 }
 
 std::size_t ringSlot(std::int64_t index, std::int64_t size) {

@@ -37,14 +37,14 @@ struct MachinedParts {
 /// Why no value of a measurement of `part` can be used: the part has not been machined yet, was
 /// machined before the controller started, or is too late (`stillKept` false: it has left the kept
 /// history). Nothing when the measurement can be placed.
-std::optional<std::string> partRejection(const MachinedParts& parts, std::int64_t part, bool stillKept);
+std::optional<Notice> partRejection(const MachinedParts& parts, std::int64_t part, bool stillKept);
 
 /// Why one measured value cannot be used: NaN or Inf (nonFiniteReason), or its point was already
 /// measured for `part`. Nothing when it can be used.
-std::optional<std::string> valueRejection(double valueMm, bool alreadyMeasured, std::int64_t part);
+std::optional<Notice> valueRejection(double valueMm, bool alreadyMeasured, std::int64_t part);
 
 /// A verdict that refuses all `points` values for one reason.
-MeasurementVerdict rejectEveryPoint(int points, const std::string& why);
+MeasurementVerdict rejectEveryPoint(int points, const Notice& why);
 
 /// Slot of `index` in a ring buffer of `size` entries (negative indices wrap as well).
 std::size_t ringSlot(std::int64_t index, std::int64_t size);

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "core/common/notice.h"
 #include "core/ports/controller_state.h"
 
 namespace tt::core {
@@ -19,8 +20,8 @@ struct PartMeasurement {
 
 /// Verdict on one offered measurement, per control point.
 struct MeasurementVerdict {
-    std::vector<bool> accepted;        ///< per point: used by the controller
-    std::vector<std::string> reasons;  ///< per point: why it was rejected (empty when accepted)
+    std::vector<bool> accepted;   ///< per point: used by the controller
+    std::vector<Notice> reasons;  ///< per point: why it was rejected (kind None when accepted)
 
     /// Every point of the measurement was used.
     bool allAccepted() const {

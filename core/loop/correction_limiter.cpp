@@ -3,8 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/common/text_format.h"
-
 namespace tt::core {
 
 CorrectionLimiter::CorrectionLimiter(CorrectionLimits limits, std::vector<double> pointZMm)
@@ -23,19 +21,25 @@ LimiterOutcome CorrectionLimiter::apply(const Eigen::VectorXd& computedMm) {
     out.appliedMm.resize(m_pointZ.size());
     for (std::size_t i = 0; i < m_pointZ.size(); ++i) {
         const double asked = computedMm(static_cast<Eigen::Index>(i));
-        const std::string where = "point " + std::to_string(i + 1) + " (x = " + formatFixed(m_pointZ[i], 3) + " mm)";
+        Notice note;
+        note.point = static_cast<int>(i) + 1;
+        note.zMm = m_pointZ[i];
+        note.value = asked;
         if (!std::isfinite(asked)) {
             out.appliedMm[i] = m_last[i];
-            out.notes.push_back("the controller gave no usable correction at " + where + "; holding " +
-                                formatFixed(m_last[i], 3) + " mm");
+            note.kind = NoticeKind::CorrectionHeld;
+            note.reference = m_last[i];
+            out.notes.push_back(note);
             continue;
         }
         const Eigen::VectorXd one = Eigen::VectorXd::Constant(1, asked);
         const Eigen::VectorXd last = Eigen::VectorXd::Constant(1, m_last[i]);
         const double v = applyCorrectionLimits(one, last, m_limits).correctionMm(0);
-        if (v != asked)
-            out.notes.push_back("correction at " + where + " limited from " + formatFixed(asked, 3) + " to " +
-                                formatFixed(v, 3) + " mm");
+        if (v != asked) {
+            note.kind = NoticeKind::CorrectionLimited;
+            note.reference = v;
+            out.notes.push_back(note);
+        }
         out.appliedMm[i] = v;
     }
     m_last = out.appliedMm;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/notice.h"
+
 #include <string>
 #include <vector>
 
@@ -11,8 +13,8 @@ namespace tt::core {
 
 /// What the limiter did to one part's corrections.
 struct LimiterOutcome {
-    std::vector<double> appliedMm;   ///< what may go to the CNC, radial mm
-    std::vector<std::string> notes;  ///< one line per point that was changed, in the user's terms
+    std::vector<double> appliedMm;  ///< what may go to the CNC, radial mm
+    std::vector<Notice> notes;      ///< one per point that was changed (CorrectionHeld, CorrectionLimited)
 };
 
 /// Keeps the corrections sent to the CNC inside the loop's limits: a value that is not a number holds

@@ -14,20 +14,25 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-std::string partText(std::int64_t n) {
-    return "part " + std::to_string(n);
-}
-
-LoopEvent makeEvent(LoopEvent::Kind kind, std::int64_t part, std::string message) {
+LoopEvent makeEvent(LoopEvent::Kind kind, std::int64_t part, Notice notice) {
     LoopEvent e;
     e.kind = kind;
     e.partNumber = part;
-    e.message = std::move(message);
+    e.message = describe(notice);
+    e.notice = std::move(notice);
     return e;
 }
 
-std::string minutesText(double seconds) {
-    return formatFixed(seconds / 60.0, 1) + " min";
+/// A notice of `kind` about part `part` (and `other`).
+Notice notice(NoticeKind kind, std::int64_t part = 0, std::int64_t other = 0) {
+    return Notice(kind, part, other);
+}
+
+/// A notice of `kind` about part `part` with the words of a device or the storage.
+Notice because(NoticeKind kind, std::int64_t part, std::string cause) {
+    Notice n{kind, part};
+    n.cause = std::move(cause);
+    return n;
 }
 
 }  // namespace
@@ -75,7 +80,7 @@ void LoopEngine::start(const RunDescription& run) {
     m_runId.reset();
     if (m_ports.history) m_runId = m_ports.history->beginRun(run);
     resetRun(m_config.firstPartNumber);
-    setState(LoopState::Running, "starting " + partText(m_nextPart));
+    setState(LoopState::Running, notice(NoticeKind::Starting, m_nextPart));
 }
 
 void LoopEngine::resetRun(std::int64_t nextPart) {
@@ -108,41 +113,39 @@ void LoopEngine::resumeFrom(const ResumePoint& point) {
         }
     }
     if (!m_awaiting.empty()) openSession();
-    setState(LoopState::Running, "continuing run " + std::to_string(*m_runId) + " with " + partText(m_nextPart));
+    setState(LoopState::Running, notice(NoticeKind::ContinuingRun, m_nextPart, *m_runId));
 }
 
 void LoopEngine::pause() {
     if (m_state != LoopState::Running && m_state != LoopState::Paused) return;
     m_pauseCause = PauseCause::Operator;
-    setState(LoopState::Paused, "paused by the operator; the CNC keeps the last correction");
+    setState(LoopState::Paused, notice(NoticeKind::PausedByOperator));
 }
 
 void LoopEngine::continueRun() {
     if (m_state != LoopState::Paused) return;
     m_pauseCause = PauseCause::None;
     m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
-    setState(LoopState::Running, m_inProgress ? "machining " + partText(m_inProgress->partNumber) : "continuing");
+    setState(LoopState::Running,
+             m_inProgress ? notice(NoticeKind::Machining, m_inProgress->partNumber) : notice(NoticeKind::Continuing));
 }
 
 void LoopEngine::stop() {
     if (m_state == LoopState::Idle) return;
     if (m_inProgress)
-        alarm("part-abandoned",
-              partText(m_inProgress->partNumber) + " was on the machine when the run was stopped; it is not recorded",
-              m_inProgress->partNumber);
+        alarm("part-abandoned", notice(NoticeKind::PartAbandoned, m_inProgress->partNumber), m_inProgress->partNumber);
     if (m_ports.history && m_runId) {
         try {
             m_ports.history->finishRun(*m_runId, "stopped");
         } catch (const std::exception& e) {
-            LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, 0,
-                                        std::string("the end of the run could not be stored: ") + e.what());
+            LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, 0, because(NoticeKind::HistoryEndFailed, 0, e.what()));
             event.alarmKind = "history";
             notify(std::move(event));
         }
     }
     m_inProgress.reset();
     m_pauseCause = PauseCause::None;
-    setState(LoopState::Idle, "stopped");
+    setState(LoopState::Idle, notice(NoticeKind::Stopped));
 }
 
 void LoopEngine::skipMeasurement() {
@@ -152,8 +155,7 @@ void LoopEngine::skipMeasurement() {
     record.partNumber = part;
     record.timeS = m_ports.clock.nowS();
     for (std::size_t i = 0; i < m_config.pointZMm.size(); ++i)
-        record.points.push_back({static_cast<int>(i), m_config.pointZMm[i], std::nullopt, m_config.nominalDiameterMm,
-                                 false, "not measured: skipped by the operator"});
+        record.points.push_back(rejectedPoint(i, std::nullopt, Notice{NoticeKind::SkippedByOperator, part}));
     completeMeasurement(std::move(record));
 }
 
@@ -171,7 +173,7 @@ void LoopEngine::step() {
         if (m_measured.count(due) || m_ports.gauge.health().ready()) {
             m_pauseCause = PauseCause::None;
             m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
-            setState(LoopState::Running, "the gauge answers again; continuing");
+            setState(LoopState::Running, notice(NoticeKind::GaugeBack));
         }
     }
     if (m_state == LoopState::Running && !m_inProgress) startNextPart();
@@ -191,7 +193,8 @@ void LoopEngine::watchDevices() {
         auto it = m_deviceStates.find(name);
         if (it != m_deviceStates.end() && it->second == health.state) continue;
         m_deviceStates[name] = health.state;
-        LoopEvent event = makeEvent(LoopEvent::Kind::DeviceChanged, 0, health.message);
+        LoopEvent event = makeEvent(LoopEvent::Kind::DeviceChanged, 0, Notice{});
+        event.message = health.message;
         event.device = name;
         event.health = health;
         notify(std::move(event));
@@ -201,8 +204,7 @@ void LoopEngine::watchDevices() {
 void LoopEngine::collectFinishedParts() {
     while (auto finished = m_ports.machine.takeFinishedPart()) {
         if (!m_inProgress || finished->partNumber != m_inProgress->partNumber) {
-            alarm("machine", "the machine reported " + partText(finished->partNumber) +
-                                 " finished, which the loop did not start; ignored");
+            alarm("machine", notice(NoticeKind::UnexpectedPartFinished, finished->partNumber));
             continue;
         }
         PartCompletionRecord record;
@@ -216,8 +218,7 @@ void LoopEngine::collectFinishedParts() {
             try {
                 m_ports.history->recordPart(*m_runId, record);
             } catch (const std::exception& e) {
-                fault("the history could not be written, " + partText(record.partNumber) + " is not stored (" +
-                      e.what() + "); the CNC keeps the last correction");
+                fault(because(NoticeKind::HistoryPartFailed, record.partNumber, e.what()));
                 return;
             }
         }
@@ -225,8 +226,8 @@ void LoopEngine::collectFinishedParts() {
         ++m_partsFinished;
         m_awaiting.push_back(record.partNumber);
         if (!m_session) openSession();
-        LoopEvent event =
-            makeEvent(LoopEvent::Kind::PartFinished, record.partNumber, partText(record.partNumber) + " finished");
+        LoopEvent event = makeEvent(LoopEvent::Kind::PartFinished, record.partNumber,
+                                    notice(NoticeKind::PartFinished, record.partNumber));
         event.corrections = record.corrections;
         notify(std::move(event));
     }
@@ -239,14 +240,17 @@ void LoopEngine::openSession() {
 void LoopEngine::collectReadings() {
     while (auto reading = m_ports.gauge.takeReading()) {
         if (m_awaiting.empty()) {
-            alarm("reading-unexpected", "a reading of " + formatFixed(reading->diameterMm, 3) +
-                                            " mm arrived but no part is waiting to be measured; it was ignored");
+            Notice unexpected = notice(NoticeKind::ReadingUnexpected);
+            unexpected.value = reading->diameterMm;
+            alarm("reading-unexpected", unexpected);
             continue;
         }
         if (!m_session) openSession();
         const SessionAccept accepted = m_session->accept(*reading);
         if (!accepted.accepted) {
-            alarm("reading-refused", accepted.message, m_awaiting.front());
+            Notice refusal = accepted.refusal;
+            refusal.part = m_awaiting.front();
+            alarm("reading-refused", refusal, m_awaiting.front());
             continue;
         }
         if (!m_session->complete()) continue;
@@ -264,18 +268,17 @@ PartMeasurementRecord LoopEngine::judge(std::int64_t partNumber, const std::vect
     record.partNumber = partNumber;
     record.timeS = timeS;
     for (std::size_t i = 0; i < m_config.pointZMm.size(); ++i) {
-        PointMeasurementRecord p{
-            static_cast<int>(i), m_config.pointZMm[i], diameters[i], m_config.nominalDiameterMm, false, {}};
-        if (!p.measuredMm) {
-            p.reason = "not measured";
-        } else {
-            // The measurement session's own plausibility rule and wording, for one point.
-            MeasurementSession check({p.zMm}, m_config.nominalDiameterMm, m_config.plausibleRangeMm);
-            const SessionAccept verdict = check.accept({*p.measuredMm, timeS});
-            p.accepted = verdict.accepted;
-            if (!verdict.accepted) p.reason = "rejected: " + verdict.message;
+        if (!diameters[i]) {
+            record.points.push_back(rejectedPoint(i, std::nullopt, Notice{NoticeKind::NotMeasured, partNumber}));
+            continue;
         }
-        record.points.push_back(std::move(p));
+        // The measurement session's own plausibility rule, for one point.
+        MeasurementSession check({m_config.pointZMm[i]}, m_config.nominalDiameterMm, m_config.plausibleRangeMm);
+        SessionAccept verdict = check.accept({*diameters[i], timeS});
+        verdict.refusal.part = partNumber;
+        verdict.refusal.point = static_cast<int>(i) + 1;
+        record.points.push_back(verdict.accepted ? acceptedPoint(i, *diameters[i])
+                                                 : rejectedPoint(i, diameters[i], verdict.refusal));
     }
     return record;
 }
@@ -289,20 +292,16 @@ void LoopEngine::completeMeasurement(PartMeasurementRecord record) {
         try {
             m_ports.history->recordMeasurement(*m_runId, record);
         } catch (const std::exception& e) {
-            fault("the diameters of " + partText(record.partNumber) + " could not be stored (" + e.what() +
-                  "); the CNC keeps the last correction");
+            fault(because(NoticeKind::HistoryMeasurementFailed, record.partNumber, e.what()));
             return;
         }
     }
     for (const PointMeasurementRecord& p : record.points)
-        if (!p.accepted && p.measuredMm)
-            alarm("measurement-rejected",
-                  partText(record.partNumber) + ", point " + std::to_string(p.pointIndex + 1) + ": " + p.reason,
-                  record.partNumber);
+        if (!p.accepted && p.measuredMm) alarm("measurement-rejected", p.rejection, record.partNumber);
     const bool willBeUsed =
         !m_config.lastPartNumber || record.partNumber + m_config.delayParts <= *m_config.lastPartNumber;
-    LoopEvent event =
-        makeEvent(LoopEvent::Kind::PartMeasured, record.partNumber, partText(record.partNumber) + " measured");
+    LoopEvent event = makeEvent(LoopEvent::Kind::PartMeasured, record.partNumber,
+                                notice(NoticeKind::PartMeasured, record.partNumber));
     event.measurement = record;
     notify(std::move(event));
     if (willBeUsed && record.partNumber + m_config.delayParts >= m_nextPart)
@@ -323,27 +322,28 @@ void LoopEngine::offerMeasurement(PartMeasurementRecord& record) {
         verdict = m_controller->addMeasurement(measurement);
     } catch (const std::exception& e) {
         verdict.accepted.assign(record.points.size(), false);
-        verdict.reasons.assign(record.points.size(), std::string("the controller could not use it: ") + e.what());
+        verdict.reasons.assign(record.points.size(),
+                               because(NoticeKind::ControllerFailed, record.partNumber, e.what()));
     }
     for (std::size_t i = 0; i < record.points.size(); ++i) {
         PointMeasurementRecord& p = record.points[i];
         if (!p.accepted) continue;
         const bool ok = i < verdict.accepted.size() && verdict.accepted[i];
         if (ok) continue;
-        p.accepted = false;
-        p.reason = "rejected by the controller: " + (i < verdict.reasons.size() && !verdict.reasons[i].empty()
-                                                         ? verdict.reasons[i]
-                                                         : std::string("no reason given"));
-        alarm("measurement-rejected",
-              partText(record.partNumber) + ", point " + std::to_string(p.pointIndex + 1) + ": " + p.reason,
-              record.partNumber);
+        Notice why = i < verdict.reasons.size() && verdict.reasons[i] ? verdict.reasons[i]
+                                                                      : Notice{NoticeKind::ControllerRejected};
+        why.part = record.partNumber;
+        why.point = p.pointIndex + 1;
+        why.zMm = p.zMm;
+        p = rejectedPoint(i, p.measuredMm, why);
+        alarm("measurement-rejected", p.rejection, record.partNumber);
     }
 }
 
 void LoopEngine::startNextPart() {
     if (m_config.lastPartNumber && m_nextPart > *m_config.lastPartNumber) {
         if (!m_awaiting.empty())
-            setState(LoopState::Running, "measuring the last parts (" + partText(m_awaiting.front()) + " next)");
+            setState(LoopState::Running, notice(NoticeKind::MeasuringLastParts, m_awaiting.front()));
         return;
     }
     const std::int64_t n = m_nextPart;
@@ -357,20 +357,18 @@ void LoopEngine::startNextPart() {
             const DeviceHealth gauge = m_ports.gauge.health();
             if (!gauge.ready()) {
                 m_pauseCause = PauseCause::Gauge;
-                const std::string text = "the gauge is not ready (" + gauge.message + "); " + partText(n) +
-                                         " needs the diameters of " + partText(due) +
-                                         ". Paused, the CNC keeps the last correction";
-                setState(LoopState::Paused, text);
-                alarm("gauge-silent", text, due);
+                Notice silent = because(NoticeKind::GaugeNotReady, n, gauge.message);
+                silent.otherPart = due;
+                setState(LoopState::Paused, silent);
+                alarm("gauge-silent", silent, due);
             } else if (now - m_waitingSinceS >= m_config.gaugeTimeoutS) {
                 m_pauseCause = PauseCause::Gauge;
-                const std::string text = "no diameters of " + partText(due) + " for " +
-                                         minutesText(now - m_waitingSinceS) +
-                                         ". Paused, the CNC keeps the last correction";
-                setState(LoopState::Paused, text);
-                alarm("gauge-silent", text, due);
+                Notice late = notice(NoticeKind::NoDiameters, n, due);
+                late.value = (now - m_waitingSinceS) / 60.0;
+                setState(LoopState::Paused, late);
+                alarm("gauge-silent", late, due);
             } else {
-                setState(LoopState::Running, "waiting for the diameters of " + partText(due));
+                setState(LoopState::Running, notice(NoticeKind::WaitingForDiameters, n, due));
             }
             return;
         }
@@ -390,23 +388,23 @@ void LoopEngine::startNextPart() {
         correction = partCorrectionFor(m_config, n, limited.appliedMm);
     } catch (const std::exception& e) {
         m_limiter.setLastApplied(previous);
-        fault("the corrections for " + partText(n) + " could not be computed (" + e.what() +
-              "); the CNC keeps the last correction");
+        fault(because(NoticeKind::CorrectionsFailed, n, e.what()));
         return;
     }
-    for (const std::string& note : limited.notes)
-        alarm("correction-limited", partText(n) + ": " + note, n);
+    for (Notice note : limited.notes) {
+        note.part = n;
+        alarm("correction-limited", note, n);
+    }
 
     OutputResult sent = m_ports.output.sendPartCorrection(correction);
     if (!sent.ok) {
         m_limiter.setLastApplied(previous);
-        fault("the CNC refused the corrections for " + partText(n) + ": " + sent.message +
-              "; it keeps the last correction");
+        fault(because(NoticeKind::CncRefused, n, sent.message));
         return;
     }
     OutputResult started = m_ports.machine.startPart(n);
     if (!started.ok) {
-        fault("the machine did not start " + partText(n) + ": " + started.message);
+        fault(because(NoticeKind::MachineRefused, n, started.message));
         return;
     }
     InProgress progress;
@@ -419,8 +417,8 @@ void LoopEngine::startNextPart() {
     progress.controllerState = m_controller->saveState();
     m_inProgress = std::move(progress);
     ++m_nextPart;
-    setState(LoopState::Running, "machining " + partText(n));
-    LoopEvent event = makeEvent(LoopEvent::Kind::PartStarted, n, "machining " + partText(n));
+    setState(LoopState::Running, notice(NoticeKind::Machining, n));
+    LoopEvent event = makeEvent(LoopEvent::Kind::PartStarted, n, notice(NoticeKind::Machining, n));
     event.corrections = m_inProgress->corrections;
     event.path = std::move(correction.path);
     notify(std::move(event));
@@ -435,10 +433,10 @@ void LoopEngine::maybeComplete() {
         try {
             m_ports.history->finishRun(*m_runId, "complete");
         } catch (const std::exception& e) {
-            alarm("history", std::string("the end of the run could not be stored: ") + e.what());
+            alarm("history", because(NoticeKind::HistoryEndFailed, 0, e.what()));
         }
     }
-    setState(LoopState::Idle, "run complete: " + partText(*m_config.lastPartNumber) + " was the last");
+    setState(LoopState::Idle, notice(NoticeKind::RunComplete, *m_config.lastPartNumber));
 }
 
 std::optional<std::int64_t> LoopEngine::partAwaitingMeasurement() const {
@@ -453,15 +451,39 @@ std::optional<std::size_t> LoopEngine::nextMeasuredPoint() const {
 
 // ---- reporting ------------------------------------------------------------------------------------------
 
-void LoopEngine::setState(LoopState state, const std::string& detail) {
+PointMeasurementRecord LoopEngine::acceptedPoint(std::size_t i, double measuredMm) const {
+    return {static_cast<int>(i), m_config.pointZMm[i], measuredMm, m_config.nominalDiameterMm, true, {}, {}};
+}
+
+PointMeasurementRecord LoopEngine::rejectedPoint(std::size_t i, std::optional<double> measuredMm,
+                                                 const Notice& why) const {
+    Notice rejection = why;
+    rejection.point = static_cast<int>(i) + 1;
+    rejection.zMm = m_config.pointZMm[i];
+    // The stored reason keeps its words: "not measured", "rejected: ...", "rejected by the controller: ...".
+    const std::string text = describe(rejection);
+    const std::string reason = why.kind == NoticeKind::NotMeasured || why.kind == NoticeKind::SkippedByOperator ? text
+                               : isControllerRejection(why.kind) ? "rejected by the controller: " + text
+                                                                 : "rejected: " + text;
+    return {
+        static_cast<int>(i), m_config.pointZMm[i], measuredMm, m_config.nominalDiameterMm, false, reason, rejection};
+}
+
+void LoopEngine::setState(LoopState state, const Notice& status) {
+    const std::string detail = describe(status);
     if (state == m_state && detail == m_detail) return;
     m_state = state;
     m_detail = detail;
-    notify(makeEvent(LoopEvent::Kind::StateChanged, 0, detail));
+    m_status = status;
+    notify(makeEvent(LoopEvent::Kind::StateChanged, 0, status));
 }
 
-void LoopEngine::alarm(const std::string& kind, const std::string& message, std::optional<std::int64_t> part) {
+void LoopEngine::alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part) {
     const double now = m_ports.clock.nowS();
+    // A rejected measurement is stored and shown with its part and point.
+    const std::string message = isRejection(what.kind) ? "part " + std::to_string(what.part) + ", point " +
+                                                             std::to_string(what.point) + ": " + describe(what)
+                                                       : describe(what);
     if (m_ports.history && m_runId) {
         try {
             m_ports.history->recordAlarm(*m_runId, {part, now, kind, message});
@@ -469,14 +491,15 @@ void LoopEngine::alarm(const std::string& kind, const std::string& message, std:
             // The alarm is still shown; a history that cannot be written faults the loop at the next part.
         }
     }
-    LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, part.value_or(0), message);
+    LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, part.value_or(0), what);
+    event.message = message;
     event.alarmKind = kind;
     notify(std::move(event));
 }
 
-void LoopEngine::fault(const std::string& message) {
-    setState(LoopState::Fault, message);
-    alarm("fault", message);
+void LoopEngine::fault(const Notice& what) {
+    setState(LoopState::Fault, what);
+    alarm("fault", what);
     if (m_ports.history && m_runId) {
         try {
             m_ports.history->finishRun(*m_runId, "fault");

@@ -86,6 +86,8 @@ public:
     LoopState state() const { return m_state; }
     /// What the loop is doing, in plain words ("machining part 12", "waiting for the diameters of part 9").
     const std::string& detail() const { return m_detail; }
+    /// Why the loop is in its state, as a kind with data (the UI words it).
+    const Notice& status() const { return m_status; }
     /// The run reached its last part and every part was measured.
     bool complete() const { return m_complete; }
     /// The run's id in the history, when the loop has a history store.
@@ -124,9 +126,11 @@ private:
     PartMeasurementRecord judge(std::int64_t partNumber, const std::vector<std::optional<double>>& diameters,
                                 double timeS) const;
     void offerMeasurement(PartMeasurementRecord& record);
-    void setState(LoopState state, const std::string& detail);
-    void alarm(const std::string& kind, const std::string& message, std::optional<std::int64_t> part = std::nullopt);
-    void fault(const std::string& message);
+    void setState(LoopState state, const Notice& status);
+    void alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part = std::nullopt);
+    void fault(const Notice& what);
+    PointMeasurementRecord acceptedPoint(std::size_t i, double measuredMm) const;
+    PointMeasurementRecord rejectedPoint(std::size_t i, std::optional<double> measuredMm, const Notice& why) const;
     void notify(LoopEvent event);
     void watchDevices();
     void openSession();
@@ -140,6 +144,7 @@ private:
 
     LoopState m_state = LoopState::Idle;
     std::string m_detail;
+    Notice m_status;
     PauseCause m_pauseCause = PauseCause::None;
     bool m_complete = false;
     std::optional<std::int64_t> m_runId;

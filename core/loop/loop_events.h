@@ -27,7 +27,8 @@ struct LoopEvent {
     LoopState state = LoopState::Idle;
     std::int64_t partNumber = 0;
     double timeS = 0.0;
-    std::string message;
+    std::string message;  ///< the stable English words (CLI, history); `notice` holds the kind and data
+    Notice notice;
     std::string alarmKind;
     std::string device;
     DeviceHealth health;

@@ -3,8 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/common/text_format.h"
-
 namespace tt::core {
 
 MeasurementSession::MeasurementSession(std::vector<double> pointXMm, double nominalDiameterMm, double plausibleWindowMm)
@@ -29,13 +27,21 @@ std::optional<std::size_t> MeasurementSession::currentPoint() const {
 
 SessionAccept MeasurementSession::accept(const GaugeReading& reading) {
     const auto point = currentPoint();
-    if (!point) return {false, 0, "every control point already has a reading; re-take a point to replace it"};
-    if (!std::isfinite(reading.diameterMm)) return {false, *point, "the reading is not a number"};
-    if (std::fabs(reading.diameterMm - m_nominalMm) > m_windowMm)
-        return {false, *point,
-                "reading " + formatFixed(reading.diameterMm, 3) + " mm is more than " + formatFixed(m_windowMm, 3) +
-                    " mm from the nominal " + formatFixed(m_nominalMm, 3) +
-                    " mm; check the point (x = " + formatFixed(m_pointXMm[*point], 3) + " mm) and measure again"};
+    if (!point) return {false, 0, Notice{NoticeKind::AllPointsRead}};
+    Notice refusal;
+    refusal.point = static_cast<int>(*point) + 1;
+    refusal.zMm = m_pointXMm[*point];
+    if (!std::isfinite(reading.diameterMm)) {
+        refusal.kind = NoticeKind::NotANumber;
+        return {false, *point, refusal};
+    }
+    if (std::fabs(reading.diameterMm - m_nominalMm) > m_windowMm) {
+        refusal.kind = NoticeKind::Implausible;
+        refusal.value = reading.diameterMm;
+        refusal.reference = m_nominalMm;
+        refusal.limit = m_windowMm;
+        return {false, *point, refusal};
+    }
     m_readings[*point] = reading;
     m_retaking.reset();
     return {true, *point, {}};

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/notice.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -13,7 +15,7 @@ namespace tt::core {
 struct SessionAccept {
     bool accepted = false;
     std::size_t pointIndex = 0;  ///< the control point the reading went to (when accepted)
-    std::string message;         ///< why it was refused, in the user's terms; empty when accepted
+    Notice refusal;              ///< why it was refused (kind None when accepted)
 };
 
 /// Collects the diameters of one finished part at its control points (paper 000: five points

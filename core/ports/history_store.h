@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/common/notice.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -27,7 +29,8 @@ struct PointMeasurementRecord {
     std::optional<double> measuredMm;  ///< none: the point was not measured
     double nominalMm = 0.0;
     bool accepted = false;  ///< used by the controller
-    std::string reason;     ///< why not, in the user's terms; empty when accepted
+    std::string reason;     ///< why not, in stable English (stored); empty when accepted
+    Notice rejection = {};  ///< why not, as a kind with data (kind None when accepted)
 };
 
 /// All control points of one measured part.

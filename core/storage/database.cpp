@@ -1,5 +1,7 @@
 #include "core/storage/database.h"
 
+#include "core/storage/storage_log.h"
+
 #include <QDateTime>
 #include <QFileInfo>
 #include <QSqlError>
@@ -50,6 +52,7 @@ Database::Database(const DatabaseConfig& config)
     else
         openPostgres();
     ensureVersionTable();
+    qCInfo(lcStorage).noquote() << "opened" << config.describe();
 }
 
 Database::~Database() {
@@ -201,6 +204,8 @@ void Database::migrate(const SchemaModule& module) {
     for (const Migration& m : module.migrations) {
         if (m.version <= current) continue;
         transaction([&] {
+            qCInfo(lcStorage).noquote() << "migrating" << module.name << "to version" << m.version << "-"
+                                        << m.description;
             m.apply(*this);
             exec(QStringLiteral("INSERT INTO schema_versions (module, version, description, applied_at) "
                                 "VALUES (?, ?, ?, ?)"),

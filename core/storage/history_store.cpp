@@ -1,5 +1,8 @@
 #include "core/storage/history_store.h"
 
+#include <array>
+#include <cmath>
+
 #include <QSqlQuery>
 #include <QVariant>
 #include <cerrno>
@@ -23,6 +26,25 @@ QVariant id(std::int64_t v) {
 
 void exec(Database& db, const char* sql, const QVariantList& bindings = {}) {
     db.exec(QString::fromLatin1(sql), bindings);
+}
+
+QVariant finiteOrNull(double v) {
+    return std::isfinite(v) ? QVariant(v) : QVariant(QMetaType::fromType<double>());
+}
+
+/// The rejection of a stored point, its kind and numbers; none for an accepted point and for rows
+/// stored before the kind was kept (only their words are).
+core::Notice storedRejection(const core::PointMeasurementRecord& p, std::int64_t partNumber, const QVariant& kind,
+                             const std::array<QVariant, 3>& numbers) {
+    if (p.accepted || kind.isNull()) return {};
+    core::Notice n(core::noticeKindFromName(kind.toString().toStdString()), partNumber);
+    if (!n) return {};
+    n.point = p.pointIndex + 1;
+    n.zMm = p.zMm;
+    double* fields[] = {&n.value, &n.reference, &n.limit};
+    for (std::size_t i = 0; i < numbers.size(); ++i)
+        if (!numbers[i].isNull()) *fields[i] = numbers[i].toDouble();
+    return n;
 }
 
 }  // namespace
@@ -60,6 +82,13 @@ SchemaModule historySchema() {
                   " recorded_at TEXT NOT NULL)");
              exec(db, "CREATE INDEX parts_by_run ON parts (run_id, part_number)");
              exec(db, "CREATE INDEX alarms_by_run ON alarms (run_id, id)");
+         }});
+    module.migrations.push_back(
+        {2, QStringLiteral("why a measured value was not used, as a kind with its numbers"), [](Database& db) {
+             exec(db, "ALTER TABLE measurements ADD COLUMN reason_kind TEXT");
+             exec(db, "ALTER TABLE measurements ADD COLUMN reason_value {real}");
+             exec(db, "ALTER TABLE measurements ADD COLUMN reason_reference {real}");
+             exec(db, "ALTER TABLE measurements ADD COLUMN reason_limit {real}");
          }});
     return module;
 }
@@ -125,10 +154,15 @@ qint64 SqlHistoryStore::partId(std::int64_t runId, std::int64_t partNumber) {
 void SqlHistoryStore::writeMeasurement(qint64 part, const core::PartMeasurementRecord& m) {
     m_db.exec(QStringLiteral("DELETE FROM measurements WHERE part_id = ?"), {part});
     for (const core::PointMeasurementRecord& p : m.points)
-        m_db.exec(QStringLiteral("INSERT INTO measurements (part_id, point_index, z_mm, measured_mm, nominal_mm,"
-                                 " accepted, reason, measured_s) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
-                  {part, p.pointIndex, p.zMm, nullable<double>(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0,
-                   text(p.reason), m.timeS});
+        m_db.exec(
+            QStringLiteral("INSERT INTO measurements (part_id, point_index, z_mm, measured_mm, nominal_mm,"
+                           " accepted, reason, measured_s, reason_kind, reason_value, reason_reference,"
+                           " reason_limit) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+            {part, p.pointIndex, p.zMm, nullable<double>(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0, text(p.reason),
+             m.timeS,
+             p.rejection ? QVariant(QString::fromStdString(core::noticeKindName(p.rejection.kind)))
+                         : QVariant(QMetaType::fromType<QString>()),
+             finiteOrNull(p.rejection.value), finiteOrNull(p.rejection.reference), finiteOrNull(p.rejection.limit)});
 }
 
 void SqlHistoryStore::recordPart(std::int64_t runId, const core::PartCompletionRecord& part) {
@@ -238,7 +272,8 @@ std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std
     {
         QSqlQuery q = m_db.exec(
             QStringLiteral("SELECT m.part_id, m.point_index, m.z_mm, m.measured_mm, m.nominal_mm, m.accepted, m.reason,"
-                           " m.measured_s FROM measurements m JOIN parts p ON p.id = m.part_id"
+                           " m.measured_s, m.reason_kind, m.reason_value, m.reason_reference, m.reason_limit"
+                           " FROM measurements m JOIN parts p ON p.id = m.part_id"
                            " WHERE p.run_id = ? AND p.part_number >= ? ORDER BY p.part_number, m.point_index"),
             {id(runId), id(fromPartNumber)});
         while (q.next()) {
@@ -254,6 +289,7 @@ std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std
             p.nominalMm = q.value(4).toDouble();
             p.accepted = q.value(5).toInt() != 0;
             p.reason = q.value(6).toString().toStdString();
+            p.rejection = storedRejection(p, part.partNumber, q.value(8), {q.value(9), q.value(10), q.value(11)});
             part.measurement->points.push_back(std::move(p));
         }
     }

@@ -1,5 +1,7 @@
 #include "devices/api/serial_link.h"
 
+#include "devices/api/device_log.h"
+
 #include <QCoreApplication>
 #include <QSerialPort>
 
@@ -22,6 +24,7 @@ SerialLink::SerialLink(QVariantMap settings, QString what, Callbacks callbacks)
     QObject::connect(&m_retry, &QTimer::timeout, [this] { attempt(); });
     QObject::connect(m_port.get(), &QSerialPort::readyRead, [this] {
         const QByteArray bytes = m_port->readAll();
+        qCDebug(lcDeviceTraffic).noquote() << m_portName << "<-" << bytes.toHex(' ');
         if (!bytes.isEmpty() && m_callbacks.onBytes) m_callbacks.onBytes(bytes);
     });
     QObject::connect(m_port.get(), &QSerialPort::errorOccurred, [this](QSerialPort::SerialPortError error) {
@@ -66,6 +69,7 @@ bool SerialLink::isOpen() const {
 
 bool SerialLink::write(const QByteArray& bytes) {
     if (!m_port->isOpen()) return false;
+    qCDebug(lcDeviceTraffic).noquote() << m_portName << "->" << bytes.toHex(' ');
     return m_port->write(bytes) == bytes.size();
 }
 
@@ -77,6 +81,7 @@ void SerialLink::attempt() {
         m_disconnected.clear();
         m_backoffMs = kFirstBackoffMs;
         m_failedAttempts = 0;
+        qCInfo(lcDevices).noquote() << "opened" << m_portName << "for the" << m_what;
         if (m_callbacks.onOpened) m_callbacks.onOpened();
         return;
     }
@@ -95,6 +100,7 @@ void SerialLink::attempt() {
 void SerialLink::lost(const QString& reason) {
     if (m_port->isOpen()) m_port->close();
     m_disconnected = reason;
+    qCWarning(lcDevices).noquote() << reason;
     if (m_callbacks.onLost) m_callbacks.onLost(reason, true);
     scheduleRetry();
 }

@@ -14,7 +14,6 @@
 #include "ui/empty_state.h"
 #include "ui/pages/planned_page.h"
 #include "ui/run/measurements_model.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 
@@ -97,18 +96,9 @@ void MeasurementsPage::showEvent(QShowEvent* event) {
 }
 
 bool MeasurementsPage::openHistory() {
-    if (m_history) return true;
-    try {
-        m_database = openContextDatabase(context().databasePath);
-        m_history = std::make_unique<storage::SqlHistoryStore>(*m_database);
-        m_problem.clear();
-        return true;
-    } catch (const std::exception& e) {
-        m_history.reset();
-        m_database.reset();
-        m_problem = QString::fromStdString(e.what());
-        return false;
-    }
+    m_history = context().data().history();
+    m_problem = m_history ? QString() : context().data().problem();
+    return m_history != nullptr;
 }
 
 QString MeasurementsPage::controllerName(const std::string& controller) {

@@ -49,8 +49,7 @@ private:
     void loadRun();
     bool openHistory();
 
-    std::unique_ptr<storage::Database> m_database;
-    std::unique_ptr<storage::SqlHistoryStore> m_history;
+    storage::SqlHistoryStore* m_history = nullptr;  ///< from the application's data access object
     QString m_problem;
     QLabel* m_runLabel;
     QComboBox* m_runs;

@@ -22,7 +22,6 @@
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
 #include "ui/tools/choice_delegate.h"
-#include "ui/tools/database_connection.h"
 #include "ui/tools/materials_model.h"
 #include "ui/tools/tool_audit_model.h"
 #include "ui/tools/tool_import_model.h"
@@ -244,17 +243,14 @@ void ToolsPage::buildImportPreview() {
 }
 
 void ToolsPage::openStore() {
-    try {
-        m_db = openContextDatabase(context().databasePath);
-        m_store = std::make_unique<storage::ToolStore>(*m_db);
-        reloadFromStore();
-        m_stack->setCurrentWidget(m_editor);
-    } catch (const std::exception& e) {
-        m_store.reset();
-        m_db.reset();
-        m_storeError = QString::fromStdString(e.what());
+    m_store = context().data().tools();
+    if (!m_store) {
+        m_storeError = context().data().problem();
         m_stack->setCurrentWidget(m_storageProblem);
+        return;
     }
+    reloadFromStore();
+    m_stack->setCurrentWidget(m_editor);
 }
 
 void ToolsPage::reloadFromStore() {

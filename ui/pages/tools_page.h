@@ -79,8 +79,7 @@ private:
     bool requireOperator(const QString& action);
     void showStatus(const QString& text, bool problem = false);
 
-    std::unique_ptr<storage::Database> m_db;
-    std::unique_ptr<storage::ToolStore> m_store;
+    storage::ToolStore* m_store = nullptr;  ///< from the application's data access object
     QString m_storeError;
     QString m_lastStatus;
     bool m_lastStatusIsProblem = false;

@@ -9,9 +9,10 @@
 #include "core/loop/loop_engine.h"
 #include "core/loop/manual_gauge.h"
 #include "core/run/shaft_run_builder.h"
+#include "core/storage/data_stores.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
-#include "ui/tools/database_connection.h"
+#include "ui/log_categories.h"
 
 namespace tt::ui {
 
@@ -61,7 +62,7 @@ void LoopWorker::openHistory(const QString& path) {
     if (m_history && path == m_openDatabasePath) return;
     m_history.reset();
     m_database.reset();
-    m_database = openContextDatabase(path);
+    m_database = std::make_unique<storage::Database>(storage::DataStores(path).config());
     m_history = std::make_unique<storage::SqlHistoryStore>(*m_database);
     m_openDatabasePath = path;
 }
@@ -148,6 +149,8 @@ void LoopWorker::start(const RunSettings& settings, MachineMaker makeMachine) {
         std::unique_ptr<Run> run = build(settings, makeMachine);
         const RunLayout layout = layoutOf(*run, settings);
         m_run = std::move(run);
+        qCInfo(lcLoop).noquote() << "run started:" << settings.preset << settings.controller << "z =" << layout.delay
+                                 << "on" << settings.machineName;
         emit started(layout);
         m_run->engine->start(describe(settings, m_run->plan));
     } catch (const core::OutputDiameterMismatch& e) {
@@ -250,7 +253,7 @@ void LoopWorker::publish() {
     const core::LoopEngine& engine = *m_run->engine;
     LoopSnapshot s;
     s.state = engine.state();
-    s.detail = QString::fromStdString(engine.detail());
+    s.status = engine.status();
     s.nextPart = engine.nextPartNumber();
     s.partsFinished = engine.partsFinished();
     if (const auto part = engine.partAwaitingMeasurement()) s.awaitingPart = *part;
@@ -260,17 +263,22 @@ void LoopWorker::publish() {
     s.gauge = m_run->gauge->health();
     s.cnc = m_run->machine->output().health();
     if (const auto id = engine.runId()) s.runId = *id;
-    const bool changed = s.state != m_last.state || s.detail != m_last.detail || s.nextPart != m_last.nextPart ||
+    const bool changed = s.state != m_last.state || engine.detail() != m_lastDetail || s.nextPart != m_last.nextPart ||
                          s.partsFinished != m_last.partsFinished || s.awaitingPart != m_last.awaitingPart ||
                          s.nextPoint != m_last.nextPoint || s.manualEntry != m_last.manualEntry ||
                          s.gauge.state != m_last.gauge.state || s.cnc.state != m_last.cnc.state ||
                          s.gauge.message != m_last.gauge.message || s.cnc.message != m_last.cnc.message ||
                          std::floor(s.machineS / 60.0) != std::floor(m_last.machineS / 60.0);
     m_last = s;
+    m_lastDetail = engine.detail();
     if (changed) emit snapshot(s);
 }
 
 void LoopWorker::onEvent(const core::LoopEvent& event) {
+    if (event.kind == core::LoopEvent::Kind::Alarm)
+        qCWarning(lcLoop).noquote() << QString::fromStdString(event.alarmKind) << QString::fromStdString(event.message);
+    if (event.kind == core::LoopEvent::Kind::StateChanged)
+        qCInfo(lcLoop).noquote() << core::toString(event.state).data() << "-" << QString::fromStdString(event.message);
     emit loopEvent(event);
     if (!m_run) return;
     if (event.kind == core::LoopEvent::Kind::PartFinished)

@@ -73,6 +73,7 @@ private:
     QTimer* m_timer = nullptr;
     std::unique_ptr<Run> m_run;
     LoopSnapshot m_last;
+    std::string m_lastDetail;  ///< the engine's status as last published
     QString m_openDatabasePath;
     std::unique_ptr<storage::Database> m_database;
     std::unique_ptr<storage::SqlHistoryStore> m_history;

@@ -8,6 +8,7 @@
 #include <QVBoxLayout>
 
 #include "core/loop/measurement_session.h"
+#include "ui/run/notice_text.h"
 
 namespace tt::ui {
 
@@ -138,7 +139,7 @@ std::optional<double> ManualEntryPanel::check(int index) {
         // The measuring session's own rule and wording: nominal ± the plausible range.
         core::MeasurementSession rule({m_points[index]}, m_nominal, m_range);
         const core::SessionAccept verdict = rule.accept({*value, 0.0});
-        if (!verdict.accepted) reason = tr("Rejected: %1").arg(QString::fromStdString(verdict.message));
+        if (!verdict.accepted) reason = tr("Rejected: %1").arg(noticeText(verdict.refusal));
     }
     setInvalid(field, !reason.isEmpty());
     if (reason.isEmpty() && m_messageField == index) showMessage(-1, QString());

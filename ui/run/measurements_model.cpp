@@ -1,5 +1,7 @@
 #include "ui/run/measurements_model.h"
 
+#include "ui/run/notice_text.h"
+
 #include <QBrush>
 #include <QColor>
 #include <QLocale>
@@ -41,7 +43,7 @@ QVariant MeasurementsModel::data(const QModelIndex& index, int role) const {
     const QLocale locale;
     if (role == Qt::ForegroundRole && !r.point.accepted) return QBrush(QColor(198, 40, 40));
     if (role == Qt::ToolTipRole && index.column() == Reason && !r.point.reason.empty())
-        return QString::fromStdString(r.point.reason);
+        return r.point.rejection ? noticeText(r.point.rejection) : QString::fromStdString(r.point.reason);
     if (role == Qt::TextAlignmentRole)
         return index.column() == Reason || index.column() == Verdict ? QVariant(Qt::AlignLeft | Qt::AlignVCenter)
                                                                      : QVariant(Qt::AlignRight | Qt::AlignVCenter);
@@ -62,7 +64,7 @@ QVariant MeasurementsModel::data(const QModelIndex& index, int role) const {
         case Verdict:
             return r.point.accepted ? tr("accepted") : r.point.measuredMm ? tr("rejected") : tr("not measured");
         case Reason:
-            return QString::fromStdString(r.point.reason);
+            return r.point.rejection ? noticeText(r.point.rejection) : QString::fromStdString(r.point.reason);
         case Applied:
             return r.applied ? locale.toString(*r.applied, 'f', 4) : tr("—");
         default:

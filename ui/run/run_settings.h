@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/common/notice.h"
 #include "core/loop/loop_state.h"
 #include "core/ports/device_health.h"
 #include "core/ports/shaft_machine.h"
@@ -44,7 +45,7 @@ struct RunSettings {
 /// The loop as the page shows it, sent by the loop thread after every change.
 struct LoopSnapshot {
     core::LoopState state = core::LoopState::Idle;
-    QString detail;                      ///< the engine's own words
+    core::Notice status;                 ///< why the loop is in its state (worded by ui/run/notice_text.h)
     qint64 nextPart = 1;                 ///< the part that will be started next
     qint64 partsFinished = 0;            ///< in this session
     std::optional<qint64> awaitingPart;  ///< the part waiting longest for its diameters

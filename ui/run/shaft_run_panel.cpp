@@ -20,6 +20,7 @@
 #include "ui/run/lathe_link.h"
 #include "ui/run/lathe_panel.h"
 #include "ui/run/manual_entry_panel.h"
+#include "ui/run/notice_text.h"
 #include "ui/run/profile_panel.h"
 #include "ui/run/run_session.h"
 
@@ -493,7 +494,7 @@ void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
     m_snapshot = snapshot;
     if (ended && m_layout.operatorCycle) m_link->disconnectDevices(tr("the run is over"));
     m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
-    if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), QString(snapshot.detail));
+    if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), noticeText(snapshot.status));
     updateControls();
     updateTexts();
 }
@@ -501,7 +502,7 @@ void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
 void ShaftRunPanel::onLoopEvent(const core::LoopEvent& event) {
     m_profile->onLoopEvent(event);
     if (event.kind == core::LoopEvent::Kind::Alarm)
-        addAlarm(QString::fromStdString(event.message), event.alarmKind != "correction-limited");
+        addAlarm(alarmText(event.notice), event.alarmKind != "correction-limited");
     if (event.kind == core::LoopEvent::Kind::PartStarted) updateLathePanel();
 }
 
@@ -614,7 +615,7 @@ void ShaftRunPanel::updateTexts() {
     const QString idleText =
         offer ? tr("Press Start: %1").arg(offer->description)
               : tr("Press Start: each part's corrections go to the CNC; you machine the part and press Part finished.");
-    m_detail->setText(m_haveRun ? QString(m_snapshot.detail) : idleText);
+    m_detail->setText(m_haveRun ? noticeText(m_snapshot.status) : idleText);
     m_devices->setText(deviceText());
     m_partCounter->setText(m_haveRun ? tr("Parts done: %1").arg(m_snapshot.partsFinished) : QString());
     updateLathePanel();

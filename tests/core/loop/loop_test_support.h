@@ -32,7 +32,10 @@ public:
             const double e = m.deviationMm(i);
             const bool ok = std::isfinite(e) && std::abs(e) < gateMm;
             v.accepted.push_back(ok);
-            v.reasons.push_back(ok ? "" : std::isfinite(e) ? "outside the gate" : "not measured");
+            Notice why =
+                ok ? Notice() : Notice(std::isfinite(e) ? NoticeKind::ControllerRejected : NoticeKind::NotMeasured);
+            if (why.kind == NoticeKind::ControllerRejected) why.cause = "outside the gate";
+            v.reasons.push_back(why);
             if (ok) m_u(i) -= m_gain * e / m_plantGain;
         }
         return v;
@@ -79,7 +82,7 @@ public:
     int pointCount() const override { return static_cast<int>(m_u.size()); }
     MeasurementVerdict addMeasurement(const PartMeasurement& m) override {
         return {std::vector<bool>(static_cast<std::size_t>(m.deviationMm.size()), true),
-                std::vector<std::string>(static_cast<std::size_t>(m.deviationMm.size()))};
+                std::vector<Notice>(static_cast<std::size_t>(m.deviationMm.size()))};
     }
     Eigen::VectorXd nextCorrection(std::int64_t) override { return m_u; }
     ControllerState saveState() const override { return {"fixed", {}}; }

@@ -65,7 +65,7 @@ TEST(EwmaController, WarningAndAlarmBands) {
     EXPECT_EQ(c.bands()[0], ToleranceBand::Warning);
     const MeasurementVerdict v = c.addMeasurement(at(3, -0.12));
     EXPECT_FALSE(v.accepted[0]);
-    EXPECT_NE(v.reasons[0].find("alarm"), std::string::npos) << v.reasons[0];
+    EXPECT_NE(describe(v.reasons[0]).find("alarm"), std::string::npos) << describe(v.reasons[0]);
     EXPECT_EQ(c.bands()[0], ToleranceBand::Alarm);
     EXPECT_DOUBLE_EQ(c.offsetMm()(0), 0.06) << "the alarmed value is not used";
 }
@@ -88,12 +88,12 @@ TEST(EwmaController, LimitsCauseNoWindUp) {
 
 TEST(EwmaController, RejectsBadInputAndOptions) {
     EwmaController c = oneAxis(0.5);
-    EXPECT_NE(c.addMeasurement(at(1, 0.0)).reasons[0].find("not been machined"), std::string::npos);
+    EXPECT_NE(describe(c.addMeasurement(at(1, 0.0)).reasons[0]).find("not been machined"), std::string::npos);
     c.nextCorrection(1);
-    EXPECT_EQ(c.addMeasurement(at(1, std::nan(""))).reasons[0], "not measured");
-    EXPECT_EQ(c.addMeasurement(at(1, INFINITY)).reasons[0], "not a finite number");
+    EXPECT_EQ(describe(c.addMeasurement(at(1, std::nan(""))).reasons[0]), "not measured");
+    EXPECT_EQ(describe(c.addMeasurement(at(1, INFINITY)).reasons[0]), "not a finite number");
     EXPECT_TRUE(c.addMeasurement(at(1, 0.01)).allAccepted());
-    EXPECT_NE(c.addMeasurement(at(1, 0.01)).reasons[0].find("already measured"), std::string::npos);
+    EXPECT_NE(describe(c.addMeasurement(at(1, 0.01)).reasons[0]).find("already measured"), std::string::npos);
     EXPECT_THROW(c.nextCorrection(3), std::invalid_argument);
     EXPECT_THROW(oneAxis(0.0), std::invalid_argument);
     EXPECT_THROW(oneAxis(1.5), std::invalid_argument);
@@ -132,8 +132,9 @@ TEST(OpenLoopController, NeverCorrects) {
     OpenLoopController c(2);
     EXPECT_TRUE(c.nextCorrection(7).isZero(0.0));
     EXPECT_TRUE(c.addMeasurement({7, Eigen::Vector2d(0.3, 0.1)}).allAccepted());
-    EXPECT_EQ(c.addMeasurement({8, Eigen::Vector2d(0.3, 0.1)}).reasons[0], "part 8 has not been machined yet");
-    EXPECT_EQ(c.addMeasurement({7, Eigen::Vector2d(std::nan(""), 0.1)}).reasons[0], "not measured");
+    EXPECT_EQ(describe(c.addMeasurement({8, Eigen::Vector2d(0.3, 0.1)}).reasons[0]),
+              "part 8 has not been machined yet");
+    EXPECT_EQ(describe(c.addMeasurement({7, Eigen::Vector2d(std::nan(""), 0.1)}).reasons[0]), "not measured");
     EXPECT_THROW(c.nextCorrection(9), std::invalid_argument);
     OpenLoopController d(2);
     d.restoreState(c.saveState());

@@ -14,20 +14,22 @@ namespace {
 TEST(RunToRunChecks, PlacesAMeasurementOnlyOnAMachinedKeptPart) {
     const MachinedParts parts{true, 10, 20, 8};
     EXPECT_FALSE(partRejection(parts, 15, true));
-    EXPECT_EQ(partRejection(parts, 21, true), "part 21 has not been machined yet");
-    EXPECT_EQ(partRejection(MachinedParts{}, 1, true), "part 1 has not been machined yet");
-    EXPECT_EQ(partRejection(parts, 9, true), "part 9 was not machined under this controller");
-    EXPECT_EQ(partRejection(parts, 11, false), "part 11 is too late: the controller keeps the last 8 parts");
+    EXPECT_EQ(describe(*partRejection(parts, 21, true)), "part 21 has not been machined yet");
+    EXPECT_EQ(describe(*partRejection(MachinedParts{}, 1, true)), "part 1 has not been machined yet");
+    EXPECT_EQ(describe(*partRejection(parts, 9, true)), "part 9 was not machined under this controller");
+    EXPECT_EQ(describe(*partRejection(parts, 11, false)), "part 11 is too late: the controller keeps the last 8 parts");
 }
 
 TEST(RunToRunChecks, RefusesNonFiniteAndRepeatedValues) {
     EXPECT_FALSE(valueRejection(0.01, false, 3));
-    EXPECT_EQ(valueRejection(std::numeric_limits<double>::quiet_NaN(), false, 3), "not measured");
-    EXPECT_EQ(valueRejection(std::numeric_limits<double>::infinity(), true, 3), "not a finite number");
-    EXPECT_EQ(valueRejection(0.01, true, 3), "point already measured for part 3");
-    const MeasurementVerdict v = rejectEveryPoint(3, "why");
+    EXPECT_EQ(describe(*valueRejection(std::numeric_limits<double>::quiet_NaN(), false, 3)), "not measured");
+    EXPECT_EQ(describe(*valueRejection(std::numeric_limits<double>::infinity(), true, 3)), "not a finite number");
+    EXPECT_EQ(describe(*valueRejection(0.01, true, 3)), "point already measured for part 3");
+    const MeasurementVerdict v = rejectEveryPoint(3, Notice(NoticeKind::NotMachinedYet, 4));
     EXPECT_EQ(v.accepted, std::vector<bool>(3, false));
-    EXPECT_EQ(v.reasons, std::vector<std::string>(3, "why"));
+    ASSERT_EQ(v.reasons.size(), 3u);
+    for (const Notice& why : v.reasons)
+        EXPECT_EQ(describe(why), "part 4 has not been machined yet");
 }
 
 TEST(RunToRunChecks, SizesPartOrderAndHistory) {

@@ -24,7 +24,7 @@ TEST(MeasurementSession, AssignsReadingsToPointsInOrderAndShowsTheirPosition) {
         ASSERT_EQ(session.currentPoint(), i);
         EXPECT_DOUBLE_EQ(session.pointXMm(*session.currentPoint()), kPoints[i]);
         const SessionAccept r = session.accept(at(27.0 + 0.01 * static_cast<double>(i)));
-        EXPECT_TRUE(r.accepted) << r.message;
+        EXPECT_TRUE(r.accepted) << describe(r.refusal);
         EXPECT_EQ(r.pointIndex, i);
     }
     EXPECT_TRUE(session.complete());
@@ -59,7 +59,7 @@ TEST(MeasurementSession, RefusesImplausibleReadingsAndKeepsThePointOpen) {
     // An inch reading taken for mm (27 mm = 1.063 in) must never be assigned to a point.
     const SessionAccept inch = session.accept(at(1.063));
     EXPECT_FALSE(inch.accepted);
-    EXPECT_NE(inch.message.find("x = 5.000 mm"), std::string::npos) << inch.message;
+    EXPECT_NE(describe(inch.refusal).find("x = 5.000 mm"), std::string::npos) << describe(inch.refusal);
     EXPECT_FALSE(session.accept(at(std::numeric_limits<double>::quiet_NaN())).accepted);
     EXPECT_EQ(session.currentPoint(), 0u);
     EXPECT_TRUE(session.accept(at(27.4)).accepted);

@@ -39,7 +39,7 @@ public:
             const double e = m.deviationMm(i);
             const bool ok = std::isfinite(e);
             v.accepted.push_back(ok);
-            v.reasons.push_back(ok ? "" : "not measured");
+            v.reasons.push_back(ok ? core::Notice() : core::Notice(core::NoticeKind::NotMeasured));
             if (ok) m_u(i) -= 0.5 * e / 2.0;
         }
         return v;

@@ -52,7 +52,7 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     TT_REQUIRE_BACKEND(scratch);
     Database db(scratch.config());
     SqlHistoryStore store(db);
-    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 1);
+    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 2) << "version 2 keeps the kind of a rejection";
     const std::int64_t run = store.beginRun(paperRun(2));
     store.recordPart(run, finished(1));
     store.recordMeasurement(run, measured(1, 0.012));
@@ -61,6 +61,10 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     m2.points[3].measuredMm = 29.0;
     m2.points[3].accepted = false;
     m2.points[3].reason = "rejected: reading 29.000 mm is more than 0.500 mm from the nominal 27.000 mm";
+    m2.points[3].rejection = core::Notice(core::NoticeKind::Implausible, 2);
+    m2.points[3].rejection.value = 29.0;
+    m2.points[3].rejection.reference = 27.0;
+    m2.points[3].rejection.limit = 0.5;
     m2.points[4].measuredMm.reset();
     m2.points[4].accepted = false;
     m2.points[4].reason = "not measured";
@@ -84,6 +88,13 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     EXPECT_EQ(*p[0].measuredMm, 27.0);
     EXPECT_FALSE(p[3].accepted);
     EXPECT_EQ(p[3].reason, m2.points[3].reason);
+    // The kind and numbers come back, so the page words the reason in the operator's language.
+    EXPECT_EQ(p[3].rejection.kind, core::NoticeKind::Implausible);
+    EXPECT_EQ(p[3].rejection.point, 4);
+    EXPECT_EQ(p[3].rejection.value, 29.0);
+    EXPECT_EQ(p[3].rejection.limit, 0.5);
+    EXPECT_EQ(p[3].rejection.reference, 27.0);
+    EXPECT_FALSE(p[4].rejection) << "stored without a kind: only its words";
     EXPECT_FALSE(p[4].measuredMm.has_value());
     EXPECT_EQ(p[4].reason, "not measured");
     EXPECT_EQ(parts[1].measurement->timeS, 800.0);

@@ -202,7 +202,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
         });
     };
     for (qint64 part = 1; part <= 3; ++part) {
-        ASSERT_TRUE(onMachine(part)) << session.snapshot().detail.toStdString();
+        ASSERT_TRUE(onMachine(part)) << core::describe(session.snapshot().status);
         ASSERT_TRUE(QFile::exists(gcodeFile(part))) << "the corrections are on the CNC before the part is machined";
         EXPECT_EQ(gcodeFiles(), part);
         turned.push_back(machine(part));
@@ -226,7 +226,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
     }
 
     // Part 4 is on the machine when the gauge's cable comes out; it is finished but cannot be measured.
-    ASSERT_TRUE(onMachine(4)) << session.snapshot().detail.toStdString();
+    ASSERT_TRUE(onMachine(4)) << core::describe(session.snapshot().status);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_real_lathe_part_on_machine")));
     turned.push_back(machine(4));
     const std::vector<double> held = pointCorrections(gcodeFile(4));
@@ -235,9 +235,9 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
         << "the gauge's health crosses to the loop";
     finished->click();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Paused; }))
-        << session.snapshot().detail.toStdString();
-    EXPECT_TRUE(session.snapshot().detail.contains(QStringLiteral("the gauge is not ready")))
-        << session.snapshot().detail.toStdString();
+        << core::describe(session.snapshot().status);
+    EXPECT_EQ(session.snapshot().status.kind, core::NoticeKind::GaugeNotReady)
+        << core::describe(session.snapshot().status);
     EXPECT_EQ(state.loop(), AppState::Loop::Paused);
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Fault) << "the badge shows the unplugged gauge";
     QTest::qWait(300);  // fifteen ticks of the loop: still nothing new
@@ -256,9 +256,9 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
         << manager.device(gaugeId)->health().message;
     pty.releaseSlave();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Running; }))
-        << session.snapshot().detail.toStdString();
+        << core::describe(session.snapshot().status);
     measure(turned.back());
-    ASSERT_TRUE(onMachine(5)) << session.snapshot().detail.toStdString();
+    ASSERT_TRUE(onMachine(5)) << core::describe(session.snapshot().status);
     turned.push_back(machine(5));
     finished->click();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().awaitingPart == 5; }));
@@ -344,7 +344,7 @@ TEST_F(RealLatheTest, StartIsRefusedWithTheReasonWhenAChosenDeviceIsNotReady) {
     EXPECT_TRUE(page.findChild<QCheckBox*>(QStringLiteral("manualEntryCheck"))->isChecked());
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(waitFor([&] { return page.shaft().lathe().partOnMachine() == 1; }))
-        << page.session().snapshot().detail.toStdString();
+        << core::describe(page.session().snapshot().status);
     EXPECT_EQ(prompt.log.size(), 2);
     EXPECT_TRUE(QFile::exists(gcodeFile(1)));
     EXPECT_TRUE(page.findChild<QLabel*>(QStringLiteral("deviceText"))

@@ -72,7 +72,7 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 10; }, 60000))
-        << page->session().snapshot().detail.toStdString();
+        << core::describe(page->session().snapshot().status);
     EXPECT_EQ(state.loop(), AppState::Loop::Running);
     EXPECT_TRUE(waitFor([&] { return page->profilePanel()->historyParts() >= 8; }, 10000));
 
@@ -119,7 +119,7 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
 
     // The loop takes the diameters, stores them and goes on with the next part.
     ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished > finishedBefore + 1; }, 30000))
-        << page->session().snapshot().detail.toStdString();
+        << core::describe(page->session().snapshot().status);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_page_manual_done")));
 
     storage::Database db(storage::DatabaseConfig::sqlite(context.databasePath));

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <QString>
+
+#include "core/common/notice.h"
+
+namespace tt::ui {
+
+/// A notice of the engine (the loop's state, an alarm, why a measured value is not used) in the
+/// operator's language (translation context "Notice"); the words of a device in `cause` come as the
+/// device gave them.
+QString noticeText(const core::Notice& notice);
+
+/// An alarm as the Run page lists it: a rejected measurement with its part and point first.
+QString alarmText(const core::Notice& notice);
+
+}  // namespace tt::ui
