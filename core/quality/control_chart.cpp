@@ -1,5 +1,6 @@
 #include "core/quality/control_chart.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace tt::core {
@@ -20,6 +21,24 @@ ChartBaseline resolveBaseline(const ChartBaseline& baseline, std::size_t pointCo
         throw std::invalid_argument(chartName + ": the baseline needs at least " + std::to_string(minimumPoints) +
                                     " points (got " + std::to_string(resolved.pointCount) + ")");
     return resolved;
+}
+
+void checkHeldLimits(const ChartLimits& limits) {
+    const bool individuals = limits.kind == ChartKind::IndividualsMovingRange;
+    if (individuals ? limits.subgroupSize != 1 : (limits.subgroupSize < 2 || limits.subgroupSize > 25))
+        throw std::invalid_argument("held chart limits with subgroup size " + std::to_string(limits.subgroupSize) +
+                                    (individuals ? " (individuals charts have 1)" : " (X-bar charts need 2 to 25)"));
+    for (const ControlLimits& l : {limits.location, limits.spread}) {
+        if (!std::isfinite(l.lowerMm) || !std::isfinite(l.centreMm) || !std::isfinite(l.upperMm))
+            throw std::invalid_argument("held chart limits must be finite numbers");
+        if (!(l.lowerMm <= l.centreMm && l.centreMm <= l.upperMm))
+            throw std::invalid_argument("held chart limits must have lower <= centre <= upper (got " +
+                                        std::to_string(l.lowerMm) + ", " + std::to_string(l.centreMm) + ", " +
+                                        std::to_string(l.upperMm) + " mm)");
+    }
+    if (!(limits.sigmaWithinMm > 0.0 && std::isfinite(limits.sigmaWithinMm)) ||
+        !(limits.locationSigmaMm > 0.0 && std::isfinite(limits.locationSigmaMm)))
+        throw std::invalid_argument("held chart limits need sigmas above 0 mm");
 }
 
 std::vector<std::size_t> pointsBeyondLimits(std::span<const double> valuesMm, const ControlLimits& limits,

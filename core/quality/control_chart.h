@@ -60,6 +60,11 @@ struct ControlChart {
 ChartBaseline resolveBaseline(const ChartBaseline& baseline, std::size_t pointCount, std::size_t minimumPoints,
                               const std::string& chartName);
 
+/// Checks limits held from an earlier study (e.g. read back from storage): every figure finite, lower <=
+/// centre <= upper on both charts, both sigmas above 0, subgroup size 1 for I-MR and 2..25 for X-bar.
+/// Throws std::invalid_argument naming the problem.
+void checkHeldLimits(const ChartLimits& limits);
+
 /// Indices of the values strictly below limits.lowerMm or above limits.upperMm; `indexOffset` is added to
 /// each index (1 for moving ranges).
 std::vector<std::size_t> pointsBeyondLimits(std::span<const double> valuesMm, const ControlLimits& limits,

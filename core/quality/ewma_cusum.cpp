@@ -100,13 +100,16 @@ EwmaChart ewmaChart(std::span<const double> valuesMm, const EwmaSettings& settin
     const double lambda = settings.lambda;
     const double asymptoticVariance = lambda / (2.0 - lambda);
     const double decaySquared = (1.0 - lambda) * (1.0 - lambda);
+    const double asymptoticHalfWidth = settings.widthL * reference.sigmaMm * std::sqrt(asymptoticVariance);
     double z = reference.targetMm;
-    double decayPower = 1.0;  // (1 - lambda)^(2i)
+    double decayPower = 1.0;  // (1 - lambda)^(2i); below 1e-17 the factor 1 - (1 - lambda)^(2i) is 1 in double
     for (std::size_t i = 0; i < n; ++i) {
         z = lambda * valuesMm[i] + (1.0 - lambda) * z;
-        decayPower *= decaySquared;
-        const double halfWidth =
-            settings.widthL * reference.sigmaMm * std::sqrt(asymptoticVariance * (1.0 - decayPower));
+        double halfWidth = asymptoticHalfWidth;
+        if (decayPower > 1e-17) {
+            decayPower *= decaySquared;
+            halfWidth = asymptoticHalfWidth * std::sqrt(1.0 - decayPower);
+        }
         chart.ewmaMm[i] = z;
         chart.lowerMm[i] = reference.targetMm - halfWidth;
         chart.upperMm[i] = reference.targetMm + halfWidth;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/quality/constants.h"
@@ -59,6 +60,7 @@ ChartLimits individualsLimits(std::span<const double> baselineValuesMm) {
 ControlChart individualsChart(std::span<const double> valuesMm, const ChartLimits& held) {
     if (held.kind != ChartKind::IndividualsMovingRange)
         throw std::invalid_argument("X-bar limits cannot be held on an individuals chart");
+    checkHeldLimits(held);
     checkValues(valuesMm, 1, kChartName);
     return assemble(valuesMm, held);
 }

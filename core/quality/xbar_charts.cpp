@@ -112,6 +112,7 @@ ChartLimits xbarLimits(std::span<const double> baselineValuesMm, int subgroupSiz
 ControlChart xbarChart(std::span<const double> valuesMm, const ChartLimits& held) {
     if (held.kind == ChartKind::IndividualsMovingRange)
         throw std::invalid_argument("individuals limits cannot be held on an X-bar chart");
+    checkHeldLimits(held);
     const SubgroupSpread spread = held.kind == ChartKind::XbarRange ? SubgroupSpread::Range : SubgroupSpread::StdDev;
     return assemble(subgroupStatistics(valuesMm, held.subgroupSize, spread), held);
 }

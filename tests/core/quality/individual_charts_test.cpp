@@ -2,6 +2,7 @@
 
 #include <span>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "core/quality/individual_charts.h"
@@ -55,6 +56,12 @@ TEST(IndividualsChart, BadInputIsRefused) {
     EXPECT_THROW(individualsChart(kLoanCosts, ChartBaseline{19, 5}), std::invalid_argument);
     const ChartLimits xbar{ChartKind::XbarRange, 5, {}, {}, 1.0, 1.0, 0, 2};
     EXPECT_THROW(individualsChart(kLoanCosts, xbar), std::invalid_argument);
+    ChartLimits reversed = individualsLimits(kLoanCosts);
+    std::swap(reversed.location.lowerMm, reversed.location.upperMm);
+    EXPECT_THROW(individualsChart(kLoanCosts, reversed), std::invalid_argument);
+    ChartLimits noSigma = individualsLimits(kLoanCosts);
+    noSigma.locationSigmaMm = 0.0;
+    EXPECT_THROW(individualsChart(kLoanCosts, noSigma), std::invalid_argument);
 }
 
 }  // namespace
