@@ -97,8 +97,8 @@ struct CapabilityStudy {
 /// sigma_w), Pp and Ppk the same with sigma_o, Cpm = (U - L)/(6 sqrt(sum (x - T)^2/(N - 1))) = (U - L)/(6
 /// sqrt(sigma_o^2 + N/(N - 1) (x-bar - T)^2)) (Chan, Cheng & Spiring 1988, JQT 20(3)). Two-sided intervals at
 /// `confidence` = 1 - alpha, nu = N - 1: Cp and Pp: C sqrt(chi2(alpha/2; nu)/nu) .. C sqrt(chi2(1 -
-/// alpha/2; nu)/nu) (Montgomery eq. 8.19); Cpk and Ppk: C -+ z(1 - alpha/2) sqrt(1/(9N) + C^2/(2(N - 1)))
-/// (Bissell 1990, Applied Statistics 39(3), the normal approximation; Montgomery eq. 8.20); Cpm: chi-square
+/// alpha/2; nu)/nu) (Montgomery section 8.3); Cpk and Ppk: C -+ z(1 - alpha/2) sqrt(1/(9N) + C^2/(2(N - 1)))
+/// (Bissell 1990, Applied Statistics 39(3), the normal approximation; Montgomery section 8.3); Cpm: chi-square
 /// with nu* = N (1 + a^2)^2/(1 + 2 a^2), a = (x-bar - T)/sigma_o (Boyles 1991, JQT 23(1)). Throws
 /// std::invalid_argument on bad limits, N < 2, a sigma not above 0 or a confidence outside 0.5 .. 0.999.
 CapabilityIndices normalCapabilityIndices(const ProcessMoments& moments, const SpecLimits& spec,

@@ -31,7 +31,7 @@ double rangeD2(int subgroupSize);
 double rangeD3(int subgroupSize);
 
 /// c4(n) = sqrt(2/(n-1)) Gamma(n/2)/Gamma((n-1)/2), the mean of s/sigma for n normal values (Montgomery
-/// eq. 6.26), from Boost.Math's log-gamma; n = 2..1000. Throws std::invalid_argument outside that range.
+/// section 6.3), from Boost.Math's log-gamma; n = 2..1000. Throws std::invalid_argument outside that range.
 double stdDevC4(int subgroupSize);
 
 /// Every constant of subgroup size n = 2..25: d2, d3, A2, D3, D4 from the published table (Montgomery

@@ -43,8 +43,8 @@ struct EwmaChart {
     std::vector<ChartExcursion> excursions;  ///< z_i beyond its limits
 };
 
-/// EWMA chart (Roberts 1959; Montgomery, Introduction to Statistical Quality Control, 6th ed., eqs. 9.22
-/// and 9.25-9.26): z_i = lambda x_i + (1 - lambda) z_(i-1), z_0 = mu0; limits mu0 +- L sigma sqrt(lambda /
+/// EWMA chart (Roberts 1959; Montgomery, Introduction to Statistical Quality Control, 6th ed., section
+/// 9.2): z_i = lambda x_i + (1 - lambda) z_(i-1), z_0 = mu0; limits mu0 +- L sigma sqrt(lambda /
 /// (2 - lambda) (1 - (1 - lambda)^(2i))), the exact variance at point i (i = 1, 2, ...), which tends to the
 /// asymptotic limits. Throws std::invalid_argument on bad values or settings, or a zero sigma.
 EwmaChart ewmaChart(std::span<const double> valuesMm, const EwmaSettings& settings);
@@ -62,7 +62,7 @@ struct CusumSignal {
     ChartExcursion excursion;
     std::size_t runLength = 0;   ///< N+ or N- at the alarm: consecutive points the sum has been above 0
     std::size_t shiftStart = 0;  ///< first point of that run (the estimated start of the shift)
-    double shiftedMeanMm = 0.0;  ///< mu0 + K + C+/N+ or mu0 - K - C-/N- at the alarm (Montgomery eq. 9.4)
+    double shiftedMeanMm = 0.0;  ///< mu0 + K + C+/N+ or mu0 - K - C-/N- at the alarm (Montgomery section 9.1)
 };
 
 /// The tabular CUSUM of individual values.
@@ -78,8 +78,8 @@ struct CusumChart {
     std::vector<CusumSignal> signals;
 };
 
-/// Tabular CUSUM (Page 1954; Montgomery, Introduction to Statistical Quality Control, 6th ed., eqs.
-/// 9.2-9.3): C+_i = max(0, x_i - (mu0 + K) + C+_(i-1)), C-_i = max(0, (mu0 - K) - x_i + C-_(i-1)), C_0 = 0;
+/// Tabular CUSUM (Page 1954; Montgomery, Introduction to Statistical Quality Control, 6th ed.,
+/// section 9.1): C+_i = max(0, x_i - (mu0 + K) + C+_(i-1)), C-_i = max(0, (mu0 - K) - x_i + C-_(i-1)), C_0 = 0;
 /// an alarm where C+ or C- exceeds H. Throws std::invalid_argument on bad values or settings, or a zero sigma.
 CusumChart cusumChart(std::span<const double> valuesMm, const CusumSettings& settings);
 

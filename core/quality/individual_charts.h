@@ -12,7 +12,7 @@ namespace tt::core {
 inline constexpr std::size_t kMinBaselineIndividuals = 2;
 
 /// Phase-I limits of the individuals and moving-range (I-MR) charts from baseline values (Montgomery,
-/// Introduction to Statistical Quality Control, 6th ed., eq. 6.33): MR_i = |x_i - x_(i-1)|, sigma =
+/// Introduction to Statistical Quality Control, 6th ed., section 6.4): MR_i = |x_i - x_(i-1)|, sigma =
 /// MR-bar/d2(2) = MR-bar/1.128, individuals x-bar +- 3 MR-bar/1.128, moving ranges 0 .. D4(2) MR-bar =
 /// 3.267 MR-bar. Throws std::invalid_argument on bad values, fewer than 2 of them or MR-bar = 0.
 ChartLimits individualsLimits(std::span<const double> baselineValuesMm);

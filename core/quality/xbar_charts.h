@@ -32,7 +32,7 @@ struct SubgroupStatistics {
 SubgroupStatistics subgroupStatistics(std::span<const double> valuesMm, int subgroupSize, SubgroupSpread spread);
 
 /// Phase-I limits from the baseline subgroups of `subgroups` (Montgomery, Introduction to Statistical
-/// Quality Control, 6th ed., eqs. 6.4-6.5 and 6.27-6.29): X-bar-R: x-double-bar +- A2 R-bar, R chart
+/// Quality Control, 6th ed., sections 6.2 and 6.3): X-bar-R: x-double-bar +- A2 R-bar, R chart
 /// D3 R-bar .. D4 R-bar, sigma = R-bar/d2; X-bar-s: x-double-bar +- A3 s-bar, s chart B3 s-bar ..
 /// B4 s-bar, sigma = s-bar/c4. Throws std::invalid_argument on a bad baseline or a zero mean spread.
 ChartLimits xbarLimits(const SubgroupStatistics& subgroups, const ChartBaseline& baseline = {});

@@ -48,9 +48,10 @@ TEST(Capability, MontgomeryExample85CpkInterval) {
     EXPECT_NEAR(c.cpkInterval->upper, 1.78, 0.005);
 }
 
-// Montgomery (2009), Section 6.2.5: the piston rings with specifications 74.000 +- 0.05 mm and sigma =
-// R-bar/d2 = 0.0099 give Cp = 0.10/(6 * 0.0099) = 1.68. The book rounds sigma to 0.0099 (exactly 0.00999):
-// tolerance 0.015. Cpm with the target in the middle, N = 125: Chan, Cheng & Spiring's formula by hand.
+// Montgomery (2009), Section 6.2 (process capability from the X-bar-R chart): the piston rings with
+// specifications 74.000 +- 0.05 mm and sigma = R-bar/d2 = 0.0099 give Cp = 0.10/(6 * 0.0099) = 1.68. The book rounds
+// sigma to 0.0099 (exactly 0.00999): tolerance 0.015. Cpm with the target in the middle, N = 125: Chan, Cheng &
+// Spiring's formula by hand.
 TEST(Capability, PistonRingsMatchMontgomerySection625) {
     CapabilitySettings settings;
     settings.within = WithinSigmaMethod::Range;

@@ -91,7 +91,7 @@ TEST(ChartConstants, C4FromTheGammaFunctionMatchesTheTable) {
     EXPECT_NEAR(stdDevC4(2), std::sqrt(2.0 / std::numbers::pi), 1e-15);
     for (int n = kMinSubgroupSize; n <= kMaxSubgroupSize; ++n)
         EXPECT_NEAR(stdDevC4(n), kC4[static_cast<std::size_t>(n - 2)], 0.00005 + 1e-12) << "n = " << n;
-    // c4 -> 1 - 1/(4n) for large n (Montgomery, footnote to eq. 6.26): 1e-4 at n = 1000.
+    // c4 -> 1 - 1/(4n) for large n (Montgomery, section 6.3): 1e-4 at n = 1000.
     EXPECT_NEAR(stdDevC4(1000), 1.0 - 1.0 / 4000.0, 1e-6);
 }
 

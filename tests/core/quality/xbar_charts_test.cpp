@@ -35,7 +35,7 @@ TEST(XbarRChart, PistonRingsMatchMontgomeryExample61) {
     EXPECT_NEAR(chart.spreadMm[13], 0.039, 1e-9);
     EXPECT_TRUE(chart.locationBeyondLimits.empty());
     EXPECT_TRUE(chart.spreadBeyondLimits.empty());
-    // Section 6.2.5: sigma = R-bar/d2 = 0.023/2.326 = 0.0099 (the exact R-bar 0.02324 gives 0.00999).
+    // Section 6.2, process capability: sigma = R-bar/d2 = 0.023/2.326 = 0.0099 (the exact R-bar 0.02324 gives 0.00999).
     EXPECT_NEAR(l.sigmaWithinMm, 0.0099, 0.0001);
     EXPECT_NEAR(l.locationSigmaMm * 3.0, l.location.upperMm - l.location.centreMm, 1e-12);
 }
