@@ -14,6 +14,7 @@ packages=(
 test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
     clang libclang-rt-14-dev postgresql
+    python3-scipy python3-statsmodels
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then
     packages+=("${test_packages[@]}")

@@ -1,0 +1,64 @@
+#include "core/quality/point_analysis.h"
+
+#include "core/quality/individual_charts.h"
+
+namespace tt::core {
+
+namespace {
+
+ControlChart chartOf(std::span<const double> values, const PointAnalysisSettings& settings) {
+    if (settings.heldLimits)
+        return settings.heldLimits->kind == ChartKind::IndividualsMovingRange
+                   ? individualsChart(values, *settings.heldLimits)
+                   : xbarChart(values, *settings.heldLimits);
+    if (settings.subgroupSize == 1) return individualsChart(values, settings.baseline);
+    return xbarChart(values, settings.subgroupSize, settings.spread, settings.baseline);
+}
+
+WithinSigmaMethod withinMethodOf(const ChartLimits& limits) {
+    switch (limits.kind) {
+        case ChartKind::XbarRange:
+            return WithinSigmaMethod::Range;
+        case ChartKind::XbarStdDev:
+            return WithinSigmaMethod::StdDev;
+        case ChartKind::IndividualsMovingRange:
+            break;
+    }
+    return WithinSigmaMethod::MovingRange;
+}
+
+}  // namespace
+
+PointAnalysis analysePoint(const MeasuredSeries& series, const PointAnalysisSettings& settings) {
+    checkSeries(series, 1, "the analysis of a control point");
+    PointAnalysis result;
+    const std::span<const double> values = series.valuesMm;
+    const MeanAndDeviation moments = meanAndDeviation(values);
+    result.count = moments.count;
+    result.meanMm = moments.mean;
+    result.sigmaOverallMm = moments.stdDev;
+    result.firstPart = series.partNumbers.front();
+    result.lastPart = series.partNumbers.back();
+    result.firstTimeS = series.timesS.front();
+    result.lastTimeS = series.timesS.back();
+
+    result.chart = chartOf(values, settings);
+    const ChartLimits& limits = result.chart.limits;
+    for (RuleViolation& v : findRuleViolations(result.chart.locationMm, limits.location.centreMm,
+                                               limits.locationSigmaMm, settings.rules)) {
+        std::vector<std::int64_t> parts = partsOfPoints(series, limits.subgroupSize, v.points);
+        result.violations.push_back({std::move(v), std::move(parts)});
+    }
+
+    if (settings.spec) {
+        CapabilitySettings capability;
+        capability.within = withinMethodOf(limits);
+        capability.subgroupSize = limits.subgroupSize;
+        capability.confidence = settings.confidence;
+        capability.normalityAlpha = settings.normalityAlpha;
+        result.capability = capabilityStudy(values, *settings.spec, capability);
+    }
+    return result;
+}
+
+}  // namespace tt::core
