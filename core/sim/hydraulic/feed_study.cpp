@@ -32,6 +32,20 @@ double designLoad(const FeedScenario& s) {
     return final > 0.0 ? final : s.load.maxForceN();
 }
 
+/// Whether the chain regulates at these parameters: its steady state under the load is stable, and the
+/// gain is below the stability boundary (beyond it the only steady state left is the fully open slot,
+/// which the linearisation alone would call stable).
+bool stableAt(const HydraulicFeedParams& p, double loadN, const FeedLinearisation& lin) {
+    if (!lin.stable()) return false;
+    if (!(loadN > 0.0)) return true;
+    try {
+        const FeedStability st = analyseStability(p, loadN);
+        return !st.gainLimit || p.amplifierGain < *st.gainLimit;
+    } catch (const std::invalid_argument&) {
+        return true;  // the slot cannot make up this load at any gain: no design point, the eigenvalues decide
+    }
+}
+
 }  // namespace
 
 FeedRun runFeedScenario(const FeedScenario& scenario, bool regulatorOn, const FeedCancelled& cancelled) {
@@ -77,7 +91,7 @@ std::vector<FeedSweepPoint> sweepFeed(const FeedScenario& scenario, FeedSweepKin
         point.value = v;
         point.run = runFeedScenario(s, true, cancelled);
         const FeedLinearisation lin = linearise(HydraulicFeedModel(s.params, true), load);
-        point.stable = lin.stable();
+        point.stable = stableAt(s.params, load, lin);
         point.oscillates = point.run.opening.overshootPct > kOscillationPct;
         out.push_back(std::move(point));
         if (progress) progress(static_cast<int>(out.size()), static_cast<int>(values.size()));

@@ -41,9 +41,10 @@ FeedSweepKind feedSweepKindFromString(const std::string& text);
 struct FeedSweepPoint {
     double value = 0.0;       ///< xi, or the amplifier gain K_a in V/V
     FeedRun run;              ///< regulator on
-    bool stable = false;      ///< every eigenvalue of the chain linearised at its steady state under the final load
-                              ///< has a negative real part
-    bool oscillates = false;  ///< the slot's opening swings past its final value by more than 0.05 %
+    bool stable = false;      ///< the chain linearised at its steady state under the final load has every eigenvalue
+                              ///< in the left half-plane, and the gain is below the stability boundary
+    bool oscillates = false;  ///< the slot's opening swings past its final value by more than 0.05 % of its
+                              ///< largest deviation
 };
 
 /// The sweep's default values: xi = 0.2 .. 2 (the paper: below 1 the spool oscillates, slightly above

@@ -83,6 +83,24 @@ TEST(FeedSweep, GainSweepFollowsTheSquareLawUntilTheSlotIsFullyOpen) {
     EXPECT_EQ(feedSweepKindFromString("xi"), FeedSweepKind::DampingRatio);
 }
 
+// With the sensed force following the chip (preset hydraulic-feed-chip, y = 0.6) the gains beyond the
+// stability boundary (1.022 x the design gain) run away to the fully open slot and are marked unstable.
+TEST(FeedSweep, GainsBeyondTheBoundaryRunAway) {
+    FeedScenario scenario = paperScenario();
+    scenario.params.feedExponent = 0.6;
+    scenario.run.durationS = 2.0;
+    scenario.run.sampleS = 1e-3;
+    const double design = designAmplifierGain(scenario.params, kPaperLoadN);
+    const std::vector<FeedSweepPoint> points =
+        sweepFeed(scenario, FeedSweepKind::AmplifierGain, {0.5 * design, 1.0 * design, 1.25 * design});
+    EXPECT_TRUE(points[0].stable);
+    EXPECT_TRUE(points[1].stable);
+    EXPECT_FALSE(points[2].stable);
+    EXPECT_FALSE(points[1].run.slotFullyOpen);
+    EXPECT_NEAR(points[1].run.feed.finalValue, 1e-3, 1e-6);
+    EXPECT_TRUE(points[2].run.slotFullyOpen);
+}
+
 TEST(FeedSweep, CanBeCancelled) {
     EXPECT_THROW(sweepFeed(paperScenario(), FeedSweepKind::DampingRatio, {0.5, 1.0}, {}, [] { return true; }),
                  FeedSimulationCancelled);
