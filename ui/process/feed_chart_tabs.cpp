@@ -123,7 +123,7 @@ void FeedChartTabs::plotRuns() {
 QString FeedChartTabs::sweepValueText(double value) const {
     if (m_sweepResult && m_sweepResult->job == FeedStudyResult::Job::SweepXi)
         return QStringLiteral("ξ = %1").arg(QString::number(value, 'g', 3));
-    return QStringLiteral("K_a = %1").arg(QString::number(value, 'g', 4));
+    return QStringLiteral("Kₐ = %1").arg(QString::number(value, 'g', 4));
 }
 
 void FeedChartTabs::plotSweep() {

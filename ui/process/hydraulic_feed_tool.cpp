@@ -59,7 +59,10 @@ HydraulicFeedTool::HydraulicFeedTool(AppContext& context, QWidget* parent)
     loadPreset();
     connect(m_diagram, &FeedBlockDiagram::blockSelected, m_form, &FeedParameterForm::showBlock);
     connect(m_form, &FeedParameterForm::changed, this, &HydraulicFeedTool::refreshDiagram);
-    connect(m_charts, &QTabWidget::currentChanged, this, &HydraulicFeedTool::updateEnabled);
+    connect(m_charts, &QTabWidget::currentChanged, this, [this] {
+        updateEnabled();
+        showSummary();
+    });
     connect(m_form, &FeedParameterForm::designRequested, this, &HydraulicFeedTool::designGain);
     connect(m_reset, &QPushButton::clicked, this, [this] {
         loadPreset();
@@ -294,14 +297,7 @@ void HydraulicFeedTool::finishJob(const std::shared_ptr<const FeedStudyResult>& 
     } else {
         m_sweep = result;
         m_charts->showSweep(*result);
-        int oscillating = 0;
-        for (const core::FeedSweepPoint& p : result->sweep)
-            oscillating += p.oscillates ? 1 : 0;
-        setStatus(tr("%n run(s) swept; settling times and overshoots are on the Sweep table tab.", nullptr,
-                     static_cast<int>(result->sweep.size())) +
-                      QLatin1Char(' ') +
-                      tr("The spool swings past its final opening in %n of them.", nullptr, oscillating),
-                  false);
+        setStatus(QString(), false);
     }
     showSummary();
     updateEnabled();
@@ -328,7 +324,26 @@ void HydraulicFeedTool::designGain() {
     retranslate();
 }
 
+QString HydraulicFeedTool::sweepSummary() const {
+    int oscillating = 0;
+    int unstable = 0;
+    for (const core::FeedSweepPoint& p : m_sweep->sweep) {
+        oscillating += p.oscillates ? 1 : 0;
+        unstable += p.stable ? 0 : 1;
+    }
+    QString text = tr("%n run(s) swept; settling times and overshoots are on the Sweep table tab.", nullptr,
+                      static_cast<int>(m_sweep->sweep.size())) +
+                   QLatin1Char(' ') +
+                   tr("The spool swings past its final opening in %n of them.", nullptr, oscillating);
+    if (unstable > 0) text += QLatin1Char(' ') + tr("%n run(s) beyond the stability boundary.", nullptr, unstable);
+    return text;
+}
+
 void HydraulicFeedTool::showSummary() {
+    if (m_sweep && m_charts->currentIndex() >= FeedChartTabs::SweepTab) {
+        m_summary->setText(sweepSummary());
+        return;
+    }
     if (!m_run) {
         m_summary->setText(tr("Choose a block on the diagram to edit its parameters, then Simulate."));
         return;

@@ -64,6 +64,8 @@ private:
     void finishJob(const std::shared_ptr<const FeedStudyResult>& result);
     void designGain();
     void showSummary();
+    /// What the last sweep showed, for the sweep's tabs.
+    QString sweepSummary() const;
     /// The diagram's texts, which follow the parameters (the loop is drawn when y > 0).
     void refreshDiagram();
     void updateEnabled();

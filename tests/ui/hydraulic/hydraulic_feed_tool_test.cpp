@@ -125,8 +125,8 @@ TEST_F(HydraulicFeedToolTest, XiSweepAsAFamilyOfCurvesWithItsTableAndExports) {
     EXPECT_EQ(tool->charts()->currentIndex(), FeedChartTabs::SweepTab);
     for (int k = 0; k < 8; ++k)
         EXPECT_EQ(tool->charts()->sweepChart()->pointCount(QStringLiteral("member%1").arg(k)), 801) << k;
-    EXPECT_TRUE(tool->status().contains(QStringLiteral("The spool swings past its final opening in 4 of them")))
-        << tool->status().toStdString();
+    EXPECT_TRUE(tool->summary().contains(QStringLiteral("The spool swings past its final opening in 4 of them")))
+        << tool->summary().toStdString();
     EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_sweep_xi")));
     tool->charts()->setCurrentIndex(FeedChartTabs::SweepTableTab);
     EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_sweep_table")));
@@ -170,6 +170,27 @@ TEST_F(HydraulicFeedToolTest, ChipLoopShowsTheStabilityBoundary) {
     waitIdle();
     EXPECT_TRUE(tool->summary().contains(QStringLiteral("No gain destabilises the chain")))
         << tool->summary().toStdString();
+}
+
+// In Russian, with results on every tab (the i18n test sees the tab before any run).
+TEST_F(HydraulicFeedToolTest, RussianWithResults) {
+    ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+    QApplication::processEvents();
+    EXPECT_EQ(tool->title(), QStringLiteral("Гидроподача"));
+    click("feedSimulate");
+    waitIdle();
+    EXPECT_TRUE(tool->summary().startsWith(QStringLiteral("Установившаяся подача 1.0000 мм/с")))
+        << tool->summary().toStdString();
+    EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_simulated_ru")));
+    click("feedSweepGain");
+    waitIdle();
+    tool->charts()->setCurrentIndex(FeedChartTabs::SweepTableTab);
+    EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_sweep_gain_table_ru")));
+    tool->charts()->setCurrentIndex(FeedChartTabs::SweepTab);
+    EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_sweep_gain_ru")));
+    EXPECT_LE(window->minimumSizeHint().height(), 800);
+    EXPECT_LE(window->minimumSizeHint().width(), 1280);
+    ASSERT_TRUE(language.apply(QStringLiteral("en")));
 }
 
 TEST_F(HydraulicFeedToolTest, RefusesALoadStepAfterTheEndAndCancels) {
