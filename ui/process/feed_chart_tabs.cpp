@@ -156,7 +156,7 @@ void FeedChartTabs::plotSweep() {
             m_table->setItem(static_cast<int>(k), c, item);
         }
     }
-    m_sweep->rescale(true);
+    m_sweep->rescale(false);  // the spool's swing shows near the set feed
     m_sweep->refresh();
 }
 
