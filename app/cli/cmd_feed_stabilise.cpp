@@ -208,6 +208,7 @@ struct FeedReport {
     core::FeedRun with;
     core::FeedRun without;
     std::optional<core::FeedStability> stability;
+    QString stabilityNote;  ///< why there is no stability analysis (no load, or more leakage than the slot passes)
     std::optional<core::FeedBoundaryCheck> check;
     std::vector<core::FeedSensitivity> sensitivity;
     std::optional<core::FeedSweepKind> sweepKind;
@@ -228,6 +229,7 @@ QJsonObject toJson(const FeedReport& r) {
     out.insert(QStringLiteral("derived"), derivedJson(r.scenario));
     out.insert(QStringLiteral("stability"),
                r.stability ? QJsonValue(stabilityJson(*r.stability, r.check)) : QJsonValue(QJsonValue::Null));
+    if (!r.stabilityNote.isEmpty()) out.insert(QStringLiteral("stability_note"), r.stabilityNote);
     out.insert(QStringLiteral("sensitivity"), sensitivityJson(r.sensitivity));
     if (r.sweepKind) {
         out.insert(QStringLiteral("sweep_of"), QString::fromLatin1(core::toString(*r.sweepKind)));
@@ -251,7 +253,7 @@ QString metricsLine(const QString& what, const core::FeedRun& run) {
 
 void printStability(const FeedReport& r) {
     if (!r.stability) {
-        printLine(QStringLiteral("Stability: the scenario ends without load; nothing to regulate."));
+        printLine(QStringLiteral("Stability: not analysed, %1.").arg(r.stabilityNote));
         return;
     }
     const core::FeedStability& st = *r.stability;
@@ -428,10 +430,16 @@ int runFeedStabilise(const QStringList& arguments) {
     r.without = core::runFeedScenario(r.scenario, false);
     const double load = r.scenario.finalLoadN();
     if (load > 0.0) {
-        r.stability =
-            asUsage(QStringLiteral("stability"), [&] { return core::analyseStability(r.scenario.params, load); });
-        if (r.stability->gainLimit) r.check = core::crossCheckGainLimit(r.scenario, *r.stability->gainLimit);
+        try {
+            r.stability = core::analyseStability(r.scenario.params, load);
+        } catch (const std::invalid_argument& e) {
+            r.stabilityNote = QString::fromStdString(e.what());  // no design point: the slot cannot make it up
+        }
+        if (r.stability && r.stability->gainLimit)
+            r.check = core::crossCheckGainLimit(r.scenario, *r.stability->gainLimit);
         r.sensitivity = core::feedSensitivity(r.scenario.params, load);
+    } else {
+        r.stabilityNote = QStringLiteral("the scenario ends without load: nothing to regulate");
     }
     if (r.sweepKind) {
         const std::vector<double> values = sweepValues(parser, *r.sweepKind, r.scenario);

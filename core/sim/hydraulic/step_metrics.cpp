@@ -1,5 +1,6 @@
 #include "core/sim/hydraulic/step_metrics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,7 +24,13 @@ StepMetrics stepMetrics(const std::vector<double>& timesS, const std::vector<dou
     m.peakDeviation = values[peak] - m.finalValue;
     m.peakTimeS = timesS[peak] - eventTimeS;
     const double magnitude = std::abs(m.peakDeviation);
-    if (magnitude == 0.0) {
+    // A swing at the level of the integration error (a load step of 0 N) is no transient.
+    double scale = 0.0;
+    for (std::size_t k = first; k < values.size(); ++k)
+        scale = std::max(scale, std::abs(values[k]));
+    if (magnitude <= 1e-7 * scale) {
+        m.peakDeviation = 0.0;
+        m.peakTimeS = 0.0;
         m.settled = true;
         return m;
     }

@@ -18,8 +18,8 @@ struct StepMetrics {
 /// of the peak deviation: 5 % is the paper's "duration of the transient t_c = 3T" of a first-order
 /// link (e^-3 = 0.05). The overshoot is the classical one measured from the largest deviation: for a
 /// feed that dips under a load and recovers, how far it goes past its final value on the way back.
-/// Throws std::invalid_argument when the sizes differ, no sample follows the event, or the band is
-/// not in (0, 1).
+/// A swing below 1e-7 of the signal's size (the integrator's accuracy) counts as none (settled at once). Throws
+/// std::invalid_argument when the sizes differ, no sample follows the event, or the band is not in (0, 1).
 StepMetrics stepMetrics(const std::vector<double>& timesS, const std::vector<double>& values, double eventTimeS,
                         double bandFraction = 0.05);
 

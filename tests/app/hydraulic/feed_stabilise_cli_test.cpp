@@ -114,6 +114,20 @@ TEST_F(FeedStabiliseCommand, WritesTheCurvesAsCsvAndPrintsText) {
     EXPECT_NEAR(lines.last().split(',')[1].toDouble(), 1.0, 1e-9);  // the ramp ended at 1 N
 }
 
+// A load the slot cannot make up even fully open: the runs are reported, the stability analysis says why
+// it is missing.
+TEST_F(FeedStabiliseCommand, LoadBeyondTheSlotIsReportedNotRefused) {
+    const QJsonObject j = feedStabilise({QStringLiteral("--load-step"), QStringLiteral("500@0.02")});
+    EXPECT_TRUE(j.value(QStringLiteral("stability")).isNull());
+    EXPECT_TRUE(
+        j.value(QStringLiteral("stability_note")).toString().contains(QStringLiteral("more than the full opening")));
+    EXPECT_TRUE(j.value(QStringLiteral("slot_fully_open")).toBool());
+    const QJsonObject none = feedStabilise({QStringLiteral("--load-step"), QStringLiteral("0@0.02")});
+    EXPECT_NEAR(number(none, "steady_feed_m_s"), 1e-3, 1e-9);  // the stepper's tolerance
+    EXPECT_EQ(number(none, "settling_s"), 0.0);
+    EXPECT_EQ(number(none, "overshoot_pct"), 0.0);
+}
+
 TEST_F(FeedStabiliseCommand, RefusesBadInput) {
     const QString cmd = QStringLiteral("feed-stabilise");
     expectRefused({cmd, QStringLiteral("--xi"), QStringLiteral("20")},

@@ -144,6 +144,16 @@ TEST(StepMetricsTest, FirstOrderSettlesAtThreeTimeConstants) {
     EXPECT_TRUE(m.settled);
 }
 
+// A response that does not move (a load step of 0 N) has no transient, whatever its rounding noise.
+TEST(StepMetricsTest, RoundingNoiseIsNoTransient) {
+    const std::vector<double> t = {0.0, 0.1, 0.2, 0.3};
+    const StepMetrics m = stepMetrics(t, {1e-3, 1e-3 + 3e-18, 1e-3 - 2e-18, 1e-3}, 0.05);
+    EXPECT_EQ(m.peakDeviation, 0.0);
+    EXPECT_EQ(m.settlingS, 0.0);
+    EXPECT_EQ(m.overshootPct, 0.0);
+    EXPECT_TRUE(m.settled);
+}
+
 // An underdamped second-order step overshoots by exp(-pi xi / sqrt(1 - xi^2)): 16.3 % at xi = 0.5.
 TEST(StepMetricsTest, SecondOrderOvershoot) {
     const double xi = 0.5, tz = 0.01;
