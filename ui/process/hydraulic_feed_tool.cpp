@@ -3,7 +3,6 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QGridLayout>
-#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
