@@ -34,6 +34,8 @@ public:
     bool json() const { return isSet(QStringLiteral("json")); }
     /// The value of `--name`, or its default (empty when it has none).
     QString value(const QString& name) const;
+    /// Every value of a repeated `--name` (empty when absent).
+    QStringList values(const QString& name) const { return m_parser.values(name); }
     /// The value, which must be given.
     QString required(const QString& name) const;
     /// Integer in [minValue, maxValue].

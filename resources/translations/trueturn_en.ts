@@ -1924,6 +1924,320 @@ L/d %4</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::FeedChartTabs</name>
+    <message>
+        <source>Feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spool and magnet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time, s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed, mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slot opening, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>magnet current, mA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed after the load step, with and without the regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot opening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Magnet current</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>set feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>without regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>with regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed after the load step for each ξ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed after the load step for each gain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ξ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gain K_a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>feed,
+mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>settling,
+s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overshoot,
+%</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spool
+overshoot, %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>regulates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no: runs away</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slot fully open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedParameterForm</name>
+    <message>
+        <source>Sensor: the tool&apos;s elastic displacement</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Amplifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Electromagnet and armature</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spool of the flow regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot of the flow regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cylinder and carriage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signal per newton</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mV/N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed exponent y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gain K_a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V/V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bias U₀</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coil turns</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gap permeance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>µH</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gap section</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coil circuit r</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ω</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time constant T_z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Damping ratio ξ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gain K_z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>µm/N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discharge coeff. μ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plunger d₁</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pressure drop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MPa</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Oil density</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kg/m³</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Full opening</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Carriage mass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Piston D</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leakage k_y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm³/(s·Pa)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set feed S</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 .. %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Design gain for the load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The radial force follows the chip: P_y = P (v/S)^y; y = 0 is the paper&apos;s constant force.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bias current %1 mA; the lap that keeps the slot shut at the bias: %2 mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>L = %1 H, T_k = %2 ms, K_e = %3 N/A²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ξ &lt; 1: the spool oscillates (the paper recommends ξ slightly above 1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ξ ≥ 1: aperiodic, settles in about 3T.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_s = %1 m²/s; full flow %2 cm³/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>F = %1 cm², k₀ = %2 m⁻², T_c = %3 ms, pump %4 cm³/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::HistoryCheck</name>
     <message>
         <source>not available — %1</source>
@@ -1938,6 +2252,210 @@ L/d %4</source>
 
 Runs are not recorded until this is fixed (Settings shows where the history is kept).</source>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::HydraulicFeedTool</name>
+    <message>
+        <source>Hydraulic feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Amplifier</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Electromagnet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Spool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>load P: leakage α₀ = k_y P/F</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>chip thickness: P_y = P (v/S)^%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no loop: the force does not follow the feed (y = 0)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preset values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep ξ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep gain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The load step at %1 s comes after the end of the simulation (%2 s).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A gain sweep needs a load: the gains are multiples of the one that makes up its leakage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulating with and without the regulator…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweeping ξ…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweeping the gain…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled; the curves shown are from the last finished run.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n run(s) swept; settling times and overshoots are on the Sweep table tab.</source>
+        <translation>
+            <numerusform>%n run swept; settling times and overshoots are on the Sweep table tab.</numerusform>
+            <numerusform>%n runs swept; settling times and overshoots are on the Sweep table tab.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The spool swings past its final opening in %n of them.</source>
+        <translation>
+            <numerusform>The spool swings past its final opening in %n of them.</numerusform>
+            <numerusform>The spool swings past its final opening in %n of them.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set a load first: the gain is designed to make up its leakage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gain %1 V/V and lap %2 mm: the slot opens by just the leakage of %3 N at the set feed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a block on the diagram to edit its parameters, then Simulate.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steady feed %1 mm/s with the regulator, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>confirmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not confirmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No gain destabilises the chain; the slot opens fully above K_a = %1 (%2 × the design gain %3).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No gain up to 1e5 destabilises the chain (design gain %1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the chart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chart written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export the curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Curves written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n run(s) beyond the stability boundary.</source>
+        <translation>
+            <numerusform>%n run beyond the stability boundary.</numerusform>
+            <numerusform>%n runs beyond the stability boundary.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2652,14 +3170,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Process</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Process design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>
@@ -3089,6 +3599,17 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Export…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProcessPage</name>
+    <message>
+        <source>Process design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

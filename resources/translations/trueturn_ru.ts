@@ -1929,6 +1929,324 @@ L/d %4</translation>
     </message>
 </context>
 <context>
+    <name>tt::ui::FeedChartTabs</name>
+    <message>
+        <source>Feed</source>
+        <translation>Подача</translation>
+    </message>
+    <message>
+        <source>Spool and magnet</source>
+        <translation>Золотник, магнит</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Перебор</translation>
+    </message>
+    <message>
+        <source>Sweep table</source>
+        <translation>Таблица</translation>
+    </message>
+    <message>
+        <source>time, s</source>
+        <translation>время, с</translation>
+    </message>
+    <message>
+        <source>feed, mm/s</source>
+        <translation>подача, мм/с</translation>
+    </message>
+    <message>
+        <source>slot opening, mm</source>
+        <translation>открытие щели, мм</translation>
+    </message>
+    <message>
+        <source>magnet current, mA</source>
+        <translation>ток магнита, мА</translation>
+    </message>
+    <message>
+        <source>Feed after the load step, with and without the regulator</source>
+        <translation>Подача после скачка нагрузки, с регулятором и без</translation>
+    </message>
+    <message>
+        <source>Slot opening</source>
+        <translation>Открытие щели</translation>
+    </message>
+    <message>
+        <source>Magnet current</source>
+        <translation>Ток магнита</translation>
+    </message>
+    <message>
+        <source>set feed</source>
+        <translation>заданная подача</translation>
+    </message>
+    <message>
+        <source>without regulator</source>
+        <translation>без регулятора</translation>
+    </message>
+    <message>
+        <source>with regulator</source>
+        <translation>с регулятором</translation>
+    </message>
+    <message>
+        <source>Feed after the load step for each ξ</source>
+        <translation>Подача после скачка нагрузки при каждом ξ</translation>
+    </message>
+    <message>
+        <source>Feed after the load step for each gain</source>
+        <translation>Подача после скачка нагрузки при каждом усилении</translation>
+    </message>
+    <message>
+        <source>ξ</source>
+        <translation>ξ</translation>
+    </message>
+    <message>
+        <source>gain K_a</source>
+        <translation>K_a</translation>
+    </message>
+    <message>
+        <source>feed,
+mm/s</source>
+        <translation>подача,
+мм/с</translation>
+    </message>
+    <message>
+        <source>settling,
+s</source>
+        <translation>t уст.,
+с</translation>
+    </message>
+    <message>
+        <source>overshoot,
+%</source>
+        <translation>перерег.,
+%</translation>
+    </message>
+    <message>
+        <source>spool
+overshoot, %</source>
+        <translation>перерег.
+золотника, %</translation>
+    </message>
+    <message>
+        <source>regulates</source>
+        <translation>регулирует</translation>
+    </message>
+    <message>
+        <source>no: runs away</source>
+        <translation>нет: уходит</translation>
+    </message>
+    <message>
+        <source>slot fully open</source>
+        <translation>на упоре</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>да</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedParameterForm</name>
+    <message>
+        <source>Sensor: the tool&apos;s elastic displacement</source>
+        <translation>Датчик упругого перемещения резца</translation>
+    </message>
+    <message>
+        <source>Amplifier</source>
+        <translation>Усилитель</translation>
+    </message>
+    <message>
+        <source>Electromagnet and armature</source>
+        <translation>Электромагнит и якорь</translation>
+    </message>
+    <message>
+        <source>Spool of the flow regulator</source>
+        <translation>Золотник регулятора расхода</translation>
+    </message>
+    <message>
+        <source>Slot of the flow regulator</source>
+        <translation>Щель регулятора расхода</translation>
+    </message>
+    <message>
+        <source>Cylinder and carriage</source>
+        <translation>Силовой цилиндр и суппорт</translation>
+    </message>
+    <message>
+        <source>Signal per newton</source>
+        <translation>Сигнал на ньютон</translation>
+    </message>
+    <message>
+        <source>mV/N</source>
+        <translation>мВ/Н</translation>
+    </message>
+    <message>
+        <source>Feed exponent y</source>
+        <translation>Показатель подачи y</translation>
+    </message>
+    <message>
+        <source>Gain K_a</source>
+        <translation>Усиление K_a</translation>
+    </message>
+    <message>
+        <source>V/V</source>
+        <translation>В/В</translation>
+    </message>
+    <message>
+        <source>Bias U₀</source>
+        <translation>Смещение U₀</translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation>В</translation>
+    </message>
+    <message>
+        <source>Coil turns</source>
+        <translation>Витков катушки</translation>
+    </message>
+    <message>
+        <source>Gap permeance</source>
+        <translation>Проводимость зазора</translation>
+    </message>
+    <message>
+        <source>µH</source>
+        <translation>мкГн</translation>
+    </message>
+    <message>
+        <source>Gap section</source>
+        <translation>Сечение зазора</translation>
+    </message>
+    <message>
+        <source>mm²</source>
+        <translation>мм²</translation>
+    </message>
+    <message>
+        <source>Coil circuit r</source>
+        <translation>Цепь катушки r</translation>
+    </message>
+    <message>
+        <source>Ω</source>
+        <translation>Ом</translation>
+    </message>
+    <message>
+        <source>Time constant T_z</source>
+        <translation>Постоянная T_z</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>Damping ratio ξ</source>
+        <translation>Демпфирование ξ</translation>
+    </message>
+    <message>
+        <source>Gain K_z</source>
+        <translation>Усиление K_z</translation>
+    </message>
+    <message>
+        <source>µm/N</source>
+        <translation>мкм/Н</translation>
+    </message>
+    <message>
+        <source>Lap</source>
+        <translation>Перекрытие</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>Discharge coeff. μ</source>
+        <translation>Коэф. расхода μ</translation>
+    </message>
+    <message>
+        <source>Plunger d₁</source>
+        <translation>Плунжер d₁</translation>
+    </message>
+    <message>
+        <source>Pressure drop</source>
+        <translation>Перепад давления</translation>
+    </message>
+    <message>
+        <source>MPa</source>
+        <translation>МПа</translation>
+    </message>
+    <message>
+        <source>Oil density</source>
+        <translation>Плотность масла</translation>
+    </message>
+    <message>
+        <source>kg/m³</source>
+        <translation>кг/м³</translation>
+    </message>
+    <message>
+        <source>Full opening</source>
+        <translation>Полное открытие</translation>
+    </message>
+    <message>
+        <source>Carriage mass</source>
+        <translation>Масса суппорта</translation>
+    </message>
+    <message>
+        <source>kg</source>
+        <translation>кг</translation>
+    </message>
+    <message>
+        <source>Piston D</source>
+        <translation>Поршень D</translation>
+    </message>
+    <message>
+        <source>Leakage k_y</source>
+        <translation>Утечки k_y</translation>
+    </message>
+    <message>
+        <source>mm³/(s·Pa)</source>
+        <translation>мм³/(с·Па)</translation>
+    </message>
+    <message>
+        <source>Set feed S</source>
+        <translation>Заданная подача S</translation>
+    </message>
+    <message>
+        <source>mm/s</source>
+        <translation>мм/с</translation>
+    </message>
+    <message>
+        <source>%1 .. %2 %3</source>
+        <translation>%1 .. %2 %3</translation>
+    </message>
+    <message>
+        <source>Design gain for the load</source>
+        <translation>Рассчитать усиление</translation>
+    </message>
+    <message>
+        <source>The radial force follows the chip: P_y = P (v/S)^y; y = 0 is the paper&apos;s constant force.</source>
+        <translation>Радиальная сила следует за толщиной среза: P_y = P (v/S)^y; y = 0 — постоянная сила, как в статье.</translation>
+    </message>
+    <message>
+        <source>Bias current %1 mA; the lap that keeps the slot shut at the bias: %2 mm.</source>
+        <translation>Ток смещения %1 мА; перекрытие, при котором щель закрыта при смещении: %2 мм.</translation>
+    </message>
+    <message>
+        <source>L = %1 H, T_k = %2 ms, K_e = %3 N/A²</source>
+        <translation>L = %1 Гн, T_k = %2 мс, K_e = %3 Н/А²</translation>
+    </message>
+    <message>
+        <source>ξ &lt; 1: the spool oscillates (the paper recommends ξ slightly above 1).</source>
+        <translation>ξ &lt; 1: золотник колеблется (в статье рекомендовано ξ немного больше 1).</translation>
+    </message>
+    <message>
+        <source>ξ ≥ 1: aperiodic, settles in about 3T.</source>
+        <translation>ξ ≥ 1: апериодический процесс, длится около 3T.</translation>
+    </message>
+    <message>
+        <source>k_s = %1 m²/s; full flow %2 cm³/s</source>
+        <translation>k_s = %1 м²/с; полный расход %2 см³/с</translation>
+    </message>
+    <message>
+        <source>F = %1 cm², k₀ = %2 m⁻², T_c = %3 ms, pump %4 cm³/s</source>
+        <translation>F = %1 см², k₀ = %2 м⁻², T_c = %3 мс, насос %4 см³/с</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::HistoryCheck</name>
     <message>
         <source>not available — %1</source>
@@ -1945,6 +2263,213 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Историю серий невозможно использовать: %1
 
 Серии не записываются, пока это не исправлено (на странице «Настройки» указано, где хранится история).</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::HydraulicFeedTool</name>
+    <message>
+        <source>Hydraulic feed</source>
+        <translation>Гидроподача</translation>
+    </message>
+    <message>
+        <source>Sensor</source>
+        <translation>Датчик</translation>
+    </message>
+    <message>
+        <source>Amplifier</source>
+        <translation>Усилитель</translation>
+    </message>
+    <message>
+        <source>Electromagnet</source>
+        <translation>Электромагнит</translation>
+    </message>
+    <message>
+        <source>Spool</source>
+        <translation>Золотник</translation>
+    </message>
+    <message>
+        <source>Slot</source>
+        <translation>Щель</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Цилиндр</translation>
+    </message>
+    <message>
+        <source>load P: leakage α₀ = k_y P/F</source>
+        <translation>нагрузка P: утечки α₀ = k_y P/F</translation>
+    </message>
+    <message>
+        <source>chip thickness: P_y = P (v/S)^%1</source>
+        <translation>толщина среза: P_y = P (v/S)^%1</translation>
+    </message>
+    <message>
+        <source>no loop: the force does not follow the feed (y = 0)</source>
+        <translation>контура нет: сила не зависит от подачи (y = 0)</translation>
+    </message>
+    <message>
+        <source>Load step</source>
+        <translation>Нагрузка</translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation> Н</translation>
+    </message>
+    <message>
+        <source>at</source>
+        <translation>в</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> с</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Моделировать</translation>
+    </message>
+    <message>
+        <source>Preset values</source>
+        <translation>Из пресета</translation>
+    </message>
+    <message>
+        <source>Sweep ξ</source>
+        <translation>Перебор ξ</translation>
+    </message>
+    <message>
+        <source>Sweep gain</source>
+        <translation>Перебор K_a</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Экспорт</translation>
+    </message>
+    <message>
+        <source>PNG…</source>
+        <translation>PNG…</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>The load step at %1 s comes after the end of the simulation (%2 s).</source>
+        <translation>Скачок нагрузки в %1 с позже конца моделирования (%2 с).</translation>
+    </message>
+    <message>
+        <source>A gain sweep needs a load: the gains are multiples of the one that makes up its leakage.</source>
+        <translation>Для перебора усиления нужна нагрузка: усиления берутся кратными тому, что компенсирует её утечки.</translation>
+    </message>
+    <message>
+        <source>Simulating with and without the regulator…</source>
+        <translation>Моделирование с регулятором и без…</translation>
+    </message>
+    <message>
+        <source>Sweeping ξ…</source>
+        <translation>Перебор ξ…</translation>
+    </message>
+    <message>
+        <source>Sweeping the gain…</source>
+        <translation>Перебор усиления…</translation>
+    </message>
+    <message>
+        <source>Cancelled; the curves shown are from the last finished run.</source>
+        <translation>Отменено; показаны кривые последнего завершённого расчёта.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n run(s) swept; settling times and overshoots are on the Sweep table tab.</source>
+        <translation>
+            <numerusform>Выполнен %n расчёт; время установления и перерегулирование — на вкладке «Таблица».</numerusform>
+            <numerusform>Выполнено %n расчёта; время установления и перерегулирование — на вкладке «Таблица».</numerusform>
+            <numerusform>Выполнено %n расчётов; время установления и перерегулирование — на вкладке «Таблица».</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>The spool swings past its final opening in %n of them.</source>
+        <translation>
+            <numerusform>Золотник проходит за установившееся открытие в %n из них.</numerusform>
+            <numerusform>Золотник проходит за установившееся открытие в %n из них.</numerusform>
+            <numerusform>Золотник проходит за установившееся открытие в %n из них.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Set a load first: the gain is designed to make up its leakage.</source>
+        <translation>Сначала задайте нагрузку: усиление рассчитывается на компенсацию её утечек.</translation>
+    </message>
+    <message>
+        <source>Gain %1 V/V and lap %2 mm: the slot opens by just the leakage of %3 N at the set feed.</source>
+        <translation>Усиление %1 В/В и перекрытие %2 мм: щель открывается ровно на утечки от %3 Н при заданной подаче.</translation>
+    </message>
+    <message>
+        <source>Choose a block on the diagram to edit its parameters, then Simulate.</source>
+        <translation>Выберите блок на схеме, чтобы изменить его параметры, затем «Моделировать».</translation>
+    </message>
+    <message>
+        <source>Steady feed %1 mm/s with the regulator, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
+        <translation>Установившаяся подача %1 мм/с с регулятором, %2 мм/с без него (задано %3). Время установления (5 %): %4 с с регулятором, %5 с без; перерегулирование %6 %.</translation>
+    </message>
+    <message>
+        <source>Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.</source>
+        <translation>Граница устойчивости: K_a = %1 (%2 × расчётного %3); моделирование при ±5 %: %4.</translation>
+    </message>
+    <message>
+        <source>confirmed</source>
+        <translation>подтверждено</translation>
+    </message>
+    <message>
+        <source>not confirmed</source>
+        <translation>не подтверждено</translation>
+    </message>
+    <message>
+        <source>No gain destabilises the chain; the slot opens fully above K_a = %1 (%2 × the design gain %3).</source>
+        <translation>Никакое усиление не нарушает устойчивость; щель открывается полностью при K_a выше %1 (%2 × расчётного %3).</translation>
+    </message>
+    <message>
+        <source>No gain up to 1e5 destabilises the chain (design gain %1).</source>
+        <translation>Никакое усиление до 1e5 не нарушает устойчивость (расчётное %1).</translation>
+    </message>
+    <message>
+        <source>Export the chart</source>
+        <translation>Экспорт графика</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>Изображения PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1.</source>
+        <translation>Не удаётся записать %1.</translation>
+    </message>
+    <message>
+        <source>Chart written to %1.</source>
+        <translation>График записан в %1.</translation>
+    </message>
+    <message>
+        <source>Export the curves</source>
+        <translation>Экспорт кривых</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не удаётся записать %1: %2</translation>
+    </message>
+    <message>
+        <source>Curves written to %1.</source>
+        <translation>Кривые записаны в %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n run(s) beyond the stability boundary.</source>
+        <translation>
+            <numerusform>%n расчёт за границей устойчивости.</numerusform>
+            <numerusform>%n расчёта за границей устойчивости.</numerusform>
+            <numerusform>%n расчётов за границей устойчивости.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2660,14 +3185,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Process</source>
         <translation>Технология</translation>
     </message>
-    <message>
-        <source>Process design</source>
-        <translation>Технологическая подготовка</translation>
-    </message>
-    <message>
-        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
-        <translation>Программирование подачи по силовой деформации с управляющей программой ЧПУ, корректирующий импульс приводов подач на углах траектории и гидравлическая стабилизация подачи.</translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>
@@ -3100,6 +3617,17 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Export…</source>
         <translation>Экспорт…</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProcessPage</name>
+    <message>
+        <source>Process design</source>
+        <translation>Технологическая подготовка</translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
+        <translation>Программирование подачи по силовой деформации с управляющей программой ЧПУ, корректирующий импульс приводов подач на углах траектории и гидравлическая стабилизация подачи.</translation>
     </message>
 </context>
 <context>
