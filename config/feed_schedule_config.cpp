@@ -73,12 +73,23 @@ FeedSchedulingSetup feedSchedulingSetupFromPreset(const QJsonObject& preset) {
     FeedSchedulingSetup s;
     s.lathe = latheSetupFromJson(preset.value(QStringLiteral("lathe")).toObject());
     s.experiment = experimentFromJson(preset, s.lathe.workpiece.lengthMm);
-    QJsonObject job = preset.value(QStringLiteral("job")).toObject();
-    if (!job.contains(QStringLiteral("finish_diameter_mm")))
-        job.insert(QStringLiteral("finish_diameter_mm"), s.lathe.workpiece.finishDiameterMm);
-    s.job = feedPassJobFromJson(job, QStringLiteral("job"));
+    if (!preset.contains(QStringLiteral("job"))) throw std::invalid_argument("job: missing");
+    s.job = *feedPassJobFromPreset(preset);
     s.request = requestFromJson(preset);
     return s;
+}
+
+std::optional<devices::FeedPassJob> feedPassJobFromPreset(const QJsonObject& preset) {
+    if (!preset.contains(QStringLiteral("job"))) return std::nullopt;
+    if (!preset.value(QStringLiteral("job")).isObject()) throw std::invalid_argument("job: must be an object");
+    QJsonObject job = preset.value(QStringLiteral("job")).toObject();
+    if (!job.contains(QStringLiteral("finish_diameter_mm"))) {
+        const JsonSection workpiece(preset.value(QStringLiteral("lathe")).toObject(), QStringLiteral("workpiece"),
+                                    QStringLiteral("lathe"));
+        job.insert(QStringLiteral("finish_diameter_mm"),
+                   workpiece.required(QStringLiteral("finish_diameter_mm"), 0.1, 10000.0));
+    }
+    return feedPassJobFromJson(job, QStringLiteral("job"));
 }
 
 devices::FeedPassProgram feedPassProgram(const core::FeedSchedule& schedule, const core::FeedScheduleRequest& request,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QJsonObject>
+#include <optional>
 
 #include "config/deformation_model_config.h"
 #include "core/control/feed_scheduler.h"
@@ -28,6 +29,10 @@ struct FeedSchedulingSetup {
 ///                "z_start_mm", "z_end_mm", "level_fraction", "min_length_mm"}.
 /// Throws std::invalid_argument naming the field ("experiment.z_mm.step: ...").
 FeedSchedulingSetup feedSchedulingSetupFromPreset(const QJsonObject& preset);
+
+/// The machine job of a preset ("job" section, the finished diameter defaulting to the lathe's), or
+/// nothing when the preset has no "job". Throws std::invalid_argument naming a bad field.
+std::optional<devices::FeedPassJob> feedPassJobFromPreset(const QJsonObject& preset);
 
 /// The program content of a schedule: the segments and header notes naming the model (terms, R²,
 /// residual 2σ, source), the level Yc with Y1 and Y2, the feed range and step, L_min and the times.

@@ -9,11 +9,21 @@ Command makeBoringCommand();
 Command makeLqgCommand();
 Command makeSimulateCommand();
 Command makeBenchCommand();
+Command makeDeformationExperimentCommand();
+Command makeFitDeformationCommand();
+Command makeScheduleFeedCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
-        makeFitProfileCommand(), makeLineariseCommand(), makeBoringCommand(),
-        makeLqgCommand(),        makeSimulateCommand(),  makeBenchCommand(),
+        makeFitProfileCommand(),
+        makeLineariseCommand(),
+        makeBoringCommand(),
+        makeLqgCommand(),
+        makeSimulateCommand(),
+        makeBenchCommand(),
+        makeDeformationExperimentCommand(),
+        makeFitDeformationCommand(),
+        makeScheduleFeedCommand(),
     };
     return all;
 }
