@@ -1732,6 +1732,69 @@ L/d %4</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::DeformationModelPanel</name>
+    <message>
+        <source>Terms of the next fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cubic in z (a, f quadratic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>full quadratic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linear with interactions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove insignificant terms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Term (coded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coefficient, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Std. error, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t-value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>significant at 95 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT significant at 95 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 points, %2 terms.&lt;/b&gt; R² %3, adjusted R² %4. F %5 against the table value F(0.95; %6, %7) = %8: %9. Residual 2σ %10 µm. t-values below %11 are not significant.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Removed as insignificant: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -1920,6 +1983,268 @@ L/d %4</source>
     </message>
     <message>
         <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedScheduleTool</name>
+    <message>
+        <source>Feed schedule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The built-in set-up cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiments on the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiment to fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fitting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machining on the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deformation Y; the tool travels z %1 → %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scheduled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scheduled feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fmin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fmax</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the CNC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC programs (*.nc *.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program was written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated experiments (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y1 %1 µm
+quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y2 %1 µm
+output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>– µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y1
+quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y2
+output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%n segment(s)&lt;/b&gt;, feeds %1 → %2 mm/rev.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%n segment&lt;/b&gt;, feeds %1 → %2 mm/rev.</numerusform>
+            <numerusform>&lt;b&gt;%n segments&lt;/b&gt;, feeds %1 → %2 mm/rev.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time %1 min against %2 min at fmin: &lt;b&gt;%3 % saved&lt;/b&gt; (fmax %4 min).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model names no machine job (spindle speed): no times, no program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator: within &lt;b&gt;%1 %&lt;/b&gt; of Yc (worst at z %2 mm); constant fmax exceeds Yc by %3 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No simulator for this model&apos;s set-up: the check is not available.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force-deformation model Y(a, f, z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the experiments on the simulator and fit the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load a model file written by &apos;trueturn fit-deformation --json&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth of cut a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feeds, mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass z, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shortest segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC dialect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fanuc-style</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check on simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>f, mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model statistics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2652,14 +2977,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Process</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>Process design</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>
@@ -3089,6 +3406,17 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Export…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProcessPage</name>
+    <message>
+        <source>Process design</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

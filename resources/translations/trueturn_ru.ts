@@ -1736,6 +1736,69 @@ L/d %4</translation>
     </message>
 </context>
 <context>
+    <name>tt::ui::DeformationModelPanel</name>
+    <message>
+        <source>Terms of the next fit</source>
+        <translation>Члены следующей модели</translation>
+    </message>
+    <message>
+        <source>cubic in z (a, f quadratic)</source>
+        <translation>кубическая по z (по a, f квадратичная)</translation>
+    </message>
+    <message>
+        <source>full quadratic</source>
+        <translation>полная квадратичная</translation>
+    </message>
+    <message>
+        <source>linear with interactions</source>
+        <translation>линейная с взаимодействиями</translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation>линейная</translation>
+    </message>
+    <message>
+        <source>Remove insignificant terms</source>
+        <translation>Исключать незначимые члены</translation>
+    </message>
+    <message>
+        <source>Term (coded)</source>
+        <translation>Член (кодир.)</translation>
+    </message>
+    <message>
+        <source>Coefficient, µm</source>
+        <translation>Коэффициент, мкм</translation>
+    </message>
+    <message>
+        <source>Std. error, µm</source>
+        <translation>Ст. ошибка, мкм</translation>
+    </message>
+    <message>
+        <source>t-value</source>
+        <translation>Критерий t</translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation>Модели пока нет.</translation>
+    </message>
+    <message>
+        <source>significant at 95 %</source>
+        <translation>значима при 95 %</translation>
+    </message>
+    <message>
+        <source>NOT significant at 95 %</source>
+        <translation>НЕ значима при 95 %</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 points, %2 terms.&lt;/b&gt; R² %3, adjusted R² %4. F %5 against the table value F(0.95; %6, %7) = %8: %9. Residual 2σ %10 µm. t-values below %11 are not significant.</source>
+        <translation>&lt;b&gt;Точек: %1, членов: %2.&lt;/b&gt; R² %3, скорректированный R² %4. F %5 при табличном F(0,95; %6, %7) = %8: %9. Остаточное 2σ %10 мкм. Члены с t ниже %11 незначимы.</translation>
+    </message>
+    <message>
+        <source>Removed as insignificant: %1</source>
+        <translation>Исключены как незначимые: %1</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -1926,6 +1989,273 @@ L/d %4</translation>
     <message>
         <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
         <translation>Не проверено: на странице «Работа» идёт серия, а эти настройки закрыли бы используемое ею устройство. Сначала остановите серию или проверьте с применёнными настройками.</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedScheduleTool</name>
+    <message>
+        <source>Feed schedule</source>
+        <translation>Программа подачи</translation>
+    </message>
+    <message>
+        <source>The built-in set-up cannot be read: %1</source>
+        <translation>Встроенную наладку не удаётся прочитать: %1</translation>
+    </message>
+    <message>
+        <source>Experiments on the simulator</source>
+        <translation>Эксперименты на симуляторе</translation>
+    </message>
+    <message>
+        <source>Experiment to fit</source>
+        <translation>Эксперимент для модели</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Fitting</source>
+        <translation>Построение модели</translation>
+    </message>
+    <message>
+        <source>Model file</source>
+        <translation>Файл модели</translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation>Файлы моделей (*.json)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation>%1 нельзя использовать: %2</translation>
+    </message>
+    <message>
+        <source>Machining on the simulator</source>
+        <translation>Обработка на симуляторе</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Остановлено.</translation>
+    </message>
+    <message>
+        <source>Deformation Y; the tool travels z %1 → %2 mm</source>
+        <translation>Деформация Y; резец идёт по z %1 → %2 мм</translation>
+    </message>
+    <message>
+        <source>%1 mm/rev</source>
+        <translation>%1 мм/об</translation>
+    </message>
+    <message>
+        <source>Yc</source>
+        <translation>Yc</translation>
+    </message>
+    <message>
+        <source>scheduled</source>
+        <translation>по программе</translation>
+    </message>
+    <message>
+        <source>scheduled feed</source>
+        <translation>подача по программе</translation>
+    </message>
+    <message>
+        <source>fmin</source>
+        <translation>fmin</translation>
+    </message>
+    <message>
+        <source>fmax</source>
+        <translation>fmax</translation>
+    </message>
+    <message>
+        <source>Save the CNC program</source>
+        <translation>Сохранить программу ЧПУ</translation>
+    </message>
+    <message>
+        <source>CNC programs (*.nc *.txt)</source>
+        <translation>Программы ЧПУ (*.nc *.txt)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 не удаётся записать: %2</translation>
+    </message>
+    <message>
+        <source>The program was written to %1.</source>
+        <translation>Программа записана в %1.</translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation>Модели пока нет.</translation>
+    </message>
+    <message>
+        <source>Simulated experiments (%1)</source>
+        <translation>Эксперименты на симуляторе (%1)</translation>
+    </message>
+    <message>
+        <source>%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.</source>
+        <translation>%1: точек %2, членов %3. R² %4, F %5 (табл. %6), 2σ %7 мкм.</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 мкм</translation>
+    </message>
+    <message>
+        <source>Y1 %1 µm
+quality</source>
+        <translation>Y1 %1 мкм
+точность</translation>
+    </message>
+    <message>
+        <source>Y2 %1 µm
+output</source>
+        <translation>Y2 %1 мкм
+скорость</translation>
+    </message>
+    <message>
+        <source>– µm</source>
+        <translation>– мкм</translation>
+    </message>
+    <message>
+        <source>Y1
+quality</source>
+        <translation>Y1
+точность</translation>
+    </message>
+    <message>
+        <source>Y2
+output</source>
+        <translation>Y2
+скорость</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%n segment(s)&lt;/b&gt;, feeds %1 → %2 mm/rev.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%n участок&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+            <numerusform>&lt;b&gt;%n участка&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+            <numerusform>&lt;b&gt;%n участков&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time %1 min against %2 min at fmin: &lt;b&gt;%3 % saved&lt;/b&gt; (fmax %4 min).</source>
+        <translation>Время %1 мин против %2 мин при fmin: &lt;b&gt;экономия %3 %&lt;/b&gt; (fmax %4 мин).</translation>
+    </message>
+    <message>
+        <source>The model names no machine job (spindle speed): no times, no program.</source>
+        <translation>В модели нет наладки станка (частоты вращения): нет времени и программы.</translation>
+    </message>
+    <message>
+        <source>Simulator: within &lt;b&gt;%1 %&lt;/b&gt; of Yc (worst at z %2 mm); constant fmax exceeds Yc by %3 %.</source>
+        <translation>Симулятор: в пределах &lt;b&gt;%1 %&lt;/b&gt; от Yc (хуже всего при z %2 мм); постоянная fmax превышает Yc на %3 %.</translation>
+    </message>
+    <message>
+        <source>No simulator for this model&apos;s set-up: the check is not available.</source>
+        <translation>Для наладки этой модели нет симулятора: проверка недоступна.</translation>
+    </message>
+    <message>
+        <source>Force-deformation model Y(a, f, z)</source>
+        <translation>Модель силовой деформации Y(a, f, z)</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Симуляция</translation>
+    </message>
+    <message>
+        <source>Run the experiments on the simulator and fit the model</source>
+        <translation>Провести эксперименты на симуляторе и построить модель</translation>
+    </message>
+    <message>
+        <source>Fit CSV…</source>
+        <translation>Из CSV…</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Файл…</translation>
+    </message>
+    <message>
+        <source>Load a model file written by &apos;trueturn fit-deformation --json&apos;</source>
+        <translation>Загрузить файл модели, записанный командой «trueturn fit-deformation --json»</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation>Проход</translation>
+    </message>
+    <message>
+        <source>Depth of cut a</source>
+        <translation>Глубина резания a</translation>
+    </message>
+    <message>
+        <source>Feeds, mm/rev</source>
+        <translation>Подачи, мм/об</translation>
+    </message>
+    <message>
+        <source>Feed step</source>
+        <translation>Шаг подачи</translation>
+    </message>
+    <message>
+        <source>Pass z, mm</source>
+        <translation>Проход по z, мм</translation>
+    </message>
+    <message>
+        <source>Shortest segment</source>
+        <translation>Мин. участок</translation>
+    </message>
+    <message>
+        <source>CNC dialect</source>
+        <translation>Диалект ЧПУ</translation>
+    </message>
+    <message>
+        <source>Fanuc-style</source>
+        <translation>в стиле Fanuc</translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation>LinuxCNC</translation>
+    </message>
+    <message>
+        <source>Check on simulator</source>
+        <translation>Проверить на симуляторе</translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation>Сохранить программу…</translation>
+    </message>
+    <message>
+        <source>Level Yc</source>
+        <translation>Уровень Yc</translation>
+    </message>
+    <message>
+        <source>z, mm</source>
+        <translation>z, мм</translation>
+    </message>
+    <message>
+        <source>Y, µm</source>
+        <translation>Y, мкм</translation>
+    </message>
+    <message>
+        <source>f, mm/rev</source>
+        <translation>f, мм/об</translation>
+    </message>
+    <message>
+        <source>Curves</source>
+        <translation>Кривые</translation>
+    </message>
+    <message>
+        <source>CNC program</source>
+        <translation>Программа ЧПУ</translation>
+    </message>
+    <message>
+        <source>Model statistics</source>
+        <translation>Статистика модели</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> мм</translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation> мм/об</translation>
     </message>
 </context>
 <context>
@@ -2660,14 +2990,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Process</source>
         <translation>Технология</translation>
     </message>
-    <message>
-        <source>Process design</source>
-        <translation>Технологическая подготовка</translation>
-    </message>
-    <message>
-        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
-        <translation>Программирование подачи по силовой деформации с управляющей программой ЧПУ, корректирующий импульс приводов подач на углах траектории и гидравлическая стабилизация подачи.</translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::ProbeAcceptPage</name>
@@ -3100,6 +3422,17 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Export…</source>
         <translation>Экспорт…</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ProcessPage</name>
+    <message>
+        <source>Process design</source>
+        <translation>Технологическая подготовка</translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation with its CNC program, the corrective pulse of the feed drives at corners, and hydraulic feed stabilisation.</source>
+        <translation>Программирование подачи по силовой деформации с управляющей программой ЧПУ, корректирующий импульс приводов подач на углах траектории и гидравлическая стабилизация подачи.</translation>
     </message>
 </context>
 <context>

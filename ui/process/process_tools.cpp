@@ -1,12 +1,13 @@
 #include "ui/process/process_tools.h"
 
+#include "ui/process/feed_schedule_tool.h"
+
 namespace tt::ui {
 
 std::vector<ProcessTool*> makeProcessTools(AppContext& context, QWidget* parent) {
-    (void)context;
     std::vector<ProcessTool*> tools;
-    // One line per tool: tools.push_back(new FeedScheduleTool(context, parent));
-    (void)parent;
+    // One line per tool.
+    tools.push_back(new FeedScheduleTool(context, parent));
     return tools;
 }
 

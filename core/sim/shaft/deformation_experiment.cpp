@@ -21,7 +21,8 @@ void checkLevels(const std::vector<double>& levels, std::size_t maxCount, const 
 
 }  // namespace
 
-DeformationSamples runDeformationExperiment(const LatheSetup& setup, const DeformationExperimentPlan& plan) {
+DeformationSamples runDeformationExperiment(const LatheSetup& setup, const DeformationExperimentPlan& plan,
+                                            const DeformationExperimentProgress& progress) {
     checkLevels(plan.depthsMm, 50, "depths of cut");
     checkLevels(plan.feedsMmPerRev, 50, "feeds");
     checkLevels(plan.zMm, 2000, "gauged positions");
@@ -35,6 +36,7 @@ DeformationSamples runDeformationExperiment(const LatheSetup& setup, const Defor
     s.deformationUm.resize(rows);
     Eigen::Index row = 0;
     std::int64_t bar = 0;
+    const std::size_t bars = plan.depthsMm.size() * plan.feedsMmPerRev.size();
     for (double a : plan.depthsMm) {
         const LathePass pass(setup, a);
         for (double f : plan.feedsMmPerRev) {
@@ -49,6 +51,7 @@ DeformationSamples runDeformationExperiment(const LatheSetup& setup, const Defor
                 s.deformationUm(row) = 1000.0 * 0.5 * (read - nominal);
                 ++row;
             }
+            if (progress && !progress(static_cast<std::size_t>(bar), bars)) throw DeformationExperimentStopped();
         }
     }
     return s;

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <stdexcept>
 #include <vector>
 
 #include "core/model/deformation_model.h"
@@ -18,12 +21,23 @@ struct DeformationExperimentPlan {
     std::uint64_t seed = 1;             ///< seed of the micrometer's noise
 };
 
+/// Called after each bar with (bars done, bars in all); returning false stops the experiment.
+using DeformationExperimentProgress = std::function<bool(std::size_t barsDone, std::size_t bars)>;
+
+/// Thrown when the progress callback stopped the experiment.
+class DeformationExperimentStopped : public std::runtime_error {
+public:
+    DeformationExperimentStopped() : std::runtime_error("the experiment was stopped") {}
+};
+
 /// Runs the experiment on the shaft-turning simulator: for every bar the deformation along z from
 /// LathePass (Kienzle force, shaft on elastic centres, cutter deflection), the finished diameter
 /// d = d_nominal + 2 Y read by the set-up's micrometer (Gaussian error, rounded to its display step;
 /// LatheMicrometerModel, a separate stream per bar and position), and the measured deformation
 /// Y = (d_read - d_nominal) / 2 in µm. Rows ordered by a, then f, then z. Throws
-/// std::invalid_argument naming the first value outside its limits.
-DeformationSamples runDeformationExperiment(const LatheSetup& setup, const DeformationExperimentPlan& plan);
+/// std::invalid_argument naming the first value outside its limits; DeformationExperimentStopped when
+/// `progress` returns false.
+DeformationSamples runDeformationExperiment(const LatheSetup& setup, const DeformationExperimentPlan& plan,
+                                            const DeformationExperimentProgress& progress = {});
 
 }  // namespace tt::core

@@ -111,6 +111,28 @@ TEST(DeformationExperiment, OneBarPerDepthAndFeedGaugedWithNoise) {
     EXPECT_NE(runDeformationExperiment(s.lathe, other).deformationUm, e.deformationUm);
 }
 
+TEST(DeformationExperiment, ReportsProgressBarByBarAndStopsWhenAsked) {
+    std::vector<std::size_t> done;
+    const DeformationSamples all =
+        runDeformationExperiment(preset().lathe, preset().experiment, [&](std::size_t bar, std::size_t bars) {
+            EXPECT_EQ(bars, 32U);
+            done.push_back(bar);
+            return true;
+        });
+    ASSERT_EQ(done.size(), 32U);
+    EXPECT_EQ(done.front(), 1U);
+    EXPECT_EQ(done.back(), 32U);
+    EXPECT_EQ(all.deformationUm, experiment().deformationUm);  // watching does not change the data
+    std::size_t calls = 0;
+    EXPECT_THROW(runDeformationExperiment(preset().lathe, preset().experiment,
+                                          [&](std::size_t bar, std::size_t) {
+                                              ++calls;
+                                              return bar < 5;
+                                          }),
+                 DeformationExperimentStopped);
+    EXPECT_EQ(calls, 5U);
+}
+
 TEST(DeformationModel, SlicesAreTheModel) {
     const DeformationModel& m = fitted().model;
     for (double a : {0.6, 1.5}) {
