@@ -15,6 +15,8 @@ namespace {
 constexpr double kMaxSteps = 10000.0;
 /// Values within this relative margin of a fitted range's end count as inside it (typed rounding).
 constexpr double kRangeMargin = 1e-9;
+/// Relative difference of two deformations that is rounding, not a different level.
+constexpr double kLevelTolerance = 1e-12;
 
 std::string num(double v) {
     std::ostringstream out;
@@ -78,8 +80,10 @@ void checkRequest(const DeformationModel& model, const FeedScheduleRequest& r) {
 double feedForLevel(const DeformationModel& model, const FeedScheduleRequest& r, double zMm, double levelUm,
                     const char* where) {
     const ScaledPolynomial y = model.againstFeed(r.depthMm, zMm);
-    const std::optional<double> f =
-        firstCrossing(y, levelUm, r.feedMinMmPerRev, r.feedMaxMmPerRev, CrossingSide::AtOrAbove);
+    std::optional<double> f = firstCrossing(y, levelUm, r.feedMinMmPerRev, r.feedMaxMmPerRev, CrossingSide::AtOrAbove);
+    // Yc = Y2 reaches the level exactly at fmax: rounding must not turn that into "no root".
+    if (!f && std::abs(y.value(r.feedMaxMmPerRev) - levelUm) <= kLevelTolerance * std::max(1.0, std::abs(levelUm)))
+        f = r.feedMaxMmPerRev;
     if (!f)
         refuse(std::string("no feed between fmin ") + num(r.feedMinMmPerRev) + " and fmax " + num(r.feedMaxMmPerRev) +
                " mm/rev gives Yc = " + num(levelUm) + " µm at " + where + " = " + num(zMm) + " mm (the model gives " +
@@ -112,8 +116,9 @@ double MachiningTimes::savedVsFeedMinPct() const {
 FeedSchedule scheduleFeed(const DeformationModel& model, const FeedScheduleRequest& r) {
     checkRequest(model, r);
     FeedSchedule s;
-    s.y1Um = model.deformationUm(r.depthMm, r.feedMinMmPerRev, r.zStartMm);
-    s.y2Um = model.deformationUm(r.depthMm, r.feedMaxMmPerRev, r.zEndMm);
+    // Y1 and Y2 from the same polynomials the feeds are solved on, so Yc = Y1 or Y2 is met exactly at fmin, fmax.
+    s.y1Um = model.againstFeed(r.depthMm, r.zStartMm).value(r.feedMinMmPerRev);
+    s.y2Um = model.againstFeed(r.depthMm, r.zEndMm).value(r.feedMaxMmPerRev);
     if (s.y1Um > s.y2Um)
         refuse("no level can be held from z_start to z_end: Y1 = Y(fmin, z_start) = " + num(s.y1Um) +
                " µm is above Y2 = Y(fmax, z_end) = " + num(s.y2Um) +

@@ -226,6 +226,32 @@ TEST(FeedSchedule, OnTheFittedModelEveryBreakpointIsAtTheLevel) {
     EXPECT_LT(s.segments.back().feedMmPerRev, s.feedEndMmPerRev);
 }
 
+TEST(FeedSchedule, BothEndsOfTheLevelRangeCanBeScheduledOnEveryExperiment) {
+    // Yc = Y1 starts at fmin and Yc = Y2 ends at fmax exactly: rounding in the fitted polynomial must not
+    // make either "no feed gives Yc" (it did for seed 6 before Y1, Y2 and the feeds came from the same
+    // polynomials). Eight experiments, both ends, and the middle checked on the simulator.
+    const FeedScheduleRequest base = preset().request;
+    const LathePass pass(preset().lathe, base.depthMm);
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        DeformationExperimentPlan plan = preset().experiment;
+        plan.seed = seed;
+        const DeformationFit fit =
+            fitDeformationModel(runDeformationExperiment(preset().lathe, plan), DeformationTermSet::CubicZ, true);
+        for (double q : {0.0, 0.5, 1.0}) {
+            FeedScheduleRequest r = base;
+            r.levelFraction = q;
+            const FeedSchedule s = scheduleFeed(fit.model, r);
+            if (q == 0.0) {
+                EXPECT_DOUBLE_EQ(s.feedStartMmPerRev, r.feedMinMmPerRev) << seed;
+            }
+            if (q == 1.0) {
+                EXPECT_DOUBLE_EQ(s.feedEndMmPerRev, r.feedMaxMmPerRev) << seed;
+            }
+            EXPECT_LT(checkFeedSchedule(pass, s, r).maxDeviationPct, 10.0) << "seed " << seed << " q " << q;
+        }
+    }
+}
+
 TEST(FeedSchedule, MachinedOnTheSimulatorStaysWithinTenPercentOfTheLevel) {
     const FeedScheduleRequest& r = preset().request;
     const FeedSchedule s = scheduleFeed(fitted().model, r);
