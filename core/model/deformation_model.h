@@ -24,6 +24,7 @@ struct DeformationTerm {
     std::string name() const;
     /// Total degree i + j + k.
     int degree() const { return depthPower + feedPower + axialPower; }
+    /// Same exponents.
     bool operator==(const DeformationTerm&) const = default;
 };
 
@@ -75,11 +76,13 @@ public:
     /// The design row of the model's terms at (a, f, z) (coded powers).
     Eigen::VectorXd termRow(double depthMm, double feedMmPerRev, double zMm) const;
 
+    /// The terms, intercept first.
     const std::vector<DeformationTerm>& terms() const { return m_terms; }
     /// Coefficients in the coded variables, µm, one per term.
     const Eigen::VectorXd& coefficients() const { return m_coefficients; }
     /// The coding (and fitted range) of a factor.
     const FactorCoding& coding(DeformationFactor factor) const { return m_coding[static_cast<std::size_t>(factor)]; }
+    /// The codings of a, f and z, in that order.
     const std::array<FactorCoding, 3>& codings() const { return m_coding; }
 
 private:

@@ -18,6 +18,7 @@ namespace tt::ui {
 class DeformationModelPanel : public QWidget {
     Q_OBJECT
 public:
+    /// An empty panel ("no model yet"), cubic-z with stepwise removal chosen for the next fit.
     explicit DeformationModelPanel(QWidget* parent = nullptr);
 
     /// Shows `file` (or "no model" for nullptr).
@@ -26,8 +27,10 @@ public:
     core::DeformationTermSet termSet() const;
     /// Whether the next fit removes insignificant terms.
     bool stepwise() const;
+    /// Sets every user-visible text (also on a language change).
     void retranslate();
 
+    /// Widgets, for tests.
     QTableWidget* table() const { return m_table; }
     QLabel* summary() const { return m_summary; }
     QComboBox* termSetBox() const { return m_terms; }

@@ -24,6 +24,7 @@ struct FeedTaskResult {
 class FeedModelTask : public QObject {
     Q_OBJECT
 public:
+    /// Idle until a task is started.
     explicit FeedModelTask(QObject* parent = nullptr);
     /// Cancels a running task and waits for it.
     ~FeedModelTask() override;

@@ -35,6 +35,7 @@ struct FeedTaskResult;
 class FeedScheduleTool : public ProcessTool {
     Q_OBJECT
 public:
+    /// Builds the tab and starts the built-in set-up's experiments and fit in the worker.
     explicit FeedScheduleTool(AppContext& context, QWidget* parent = nullptr);
     ~FeedScheduleTool() override;
 
@@ -55,14 +56,22 @@ public:
     /// Sets Yc as a fraction of [Y1, Y2] (what dragging the slider does).
     void setLevelFraction(double fraction);
 
+    /// Whether a task runs in the worker.
     bool busy() const;
+    /// The model in use (with its statistics, set-up and job), if any.
     const std::optional<config::DeformationModelFile>& model() const { return m_model; }
+    /// The schedule of the current inputs, or nothing when they cannot be scheduled (see problem()).
     const std::optional<core::FeedSchedule>& schedule() const { return m_schedule; }
+    /// Machining times of the schedule and of constant fmin and fmax (when the model has a job), s.
     const std::optional<core::MachiningTimes>& times() const { return m_times; }
+    /// The check on the simulator of the current schedule, if made since it last changed.
     const std::optional<core::FeedScheduleCheck>& check() const { return m_check; }
+    /// The CNC program of the schedule in the chosen dialect (empty when there is none).
     QString programText() const { return m_program; }
+    /// Why the current inputs cannot be scheduled (the engine's message), empty otherwise.
     QString problem() const { return m_problem; }
 
+    /// Widgets, for tests and screenshots.
     Chart* curvesChart() const { return m_curves; }
     Chart* feedChart() const { return m_feeds; }
     GCodeView* programView() const { return m_programView; }

@@ -9,6 +9,7 @@ namespace tt::ui {
 class GCodeView : public QPlainTextEdit {
     Q_OBJECT
 public:
+    /// An empty, read-only view.
     explicit GCodeView(QWidget* parent = nullptr);
 
     /// Shows `program` (replacing what was shown) from its first line.
