@@ -11,9 +11,12 @@ packages=(
     qt6-qpa-plugins libgl-dev fonts-dejavu-core
     libeigen3-dev libqcustomplot-dev libboost-dev
 )
+# linuxcnc-uspace: LinuxCNC's standalone G-code interpreter rs274 (/usr/bin/rs274), which the feed-schedule
+# tests run on the emitted programs. It must be installed with --no-install-recommends (as below): it
+# recommends a real-time kernel.
 test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
-    clang libclang-rt-14-dev postgresql
+    clang libclang-rt-14-dev postgresql linuxcnc-uspace
     python3-scipy python3-statsmodels
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then

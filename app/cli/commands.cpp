@@ -10,11 +10,22 @@ Command makeLqgCommand();
 Command makeSimulateCommand();
 Command makeBenchCommand();
 Command makeFeedStabiliseCommand();
+Command makeDeformationExperimentCommand();
+Command makeFitDeformationCommand();
+Command makeScheduleFeedCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
-        makeFitProfileCommand(), makeLineariseCommand(), makeBoringCommand(),        makeLqgCommand(),
-        makeSimulateCommand(),   makeBenchCommand(),     makeFeedStabiliseCommand(),
+        makeFitProfileCommand(),
+        makeLineariseCommand(),
+        makeBoringCommand(),
+        makeLqgCommand(),
+        makeSimulateCommand(),
+        makeBenchCommand(),
+        makeDeformationExperimentCommand(),
+        makeFitDeformationCommand(),
+        makeScheduleFeedCommand(),
+        makeFeedStabiliseCommand(),
     };
     return all;
 }

@@ -11,6 +11,42 @@ namespace tt::core {
 /// Highest polynomial degree the regression offers (paper 000 uses 5).
 inline constexpr int kMaxRegressionDegree = 6;
 
+/// A least-squares fit y = X b of several terms (the columns of the design matrix X, the first one
+/// the intercept, all ones) with the statistics a planner judges a model by (paper 000, Table 1, for
+/// one variable; paper 004 for the force-deformation model Y(a, f, z)).
+struct LinearRegression {
+    int pointCount = 0;                    ///< n
+    int termCount = 0;                     ///< p, the intercept included
+    int residualDof = 0;                   ///< n - p
+    Eigen::VectorXd coefficients;          ///< b, one per column of X
+    Eigen::VectorXd coefficientStdErrors;  ///< sqrt of the diagonal of residualSigma^2 (X'X)^-1
+    Eigen::VectorXd tValues;               ///< b_k / SE(b_k); +-infinity where SE is 0 (exact fit)
+    double r2 = 0.0;                       ///< 1 - SSE/SST
+    double r2Adjusted = 0.0;               ///< 1 - (1 - R^2)(n - 1)/(n - p)
+    double fStatistic = 0.0;               ///< (SSR/(p-1)) / (SSE/(n-p)); +infinity for an exact fit
+    double fCritical95 = 0.0;              ///< F(0.95; p-1, n-p), the table value (Boost.Math)
+    double tCritical95 = 0.0;              ///< t(0.975; n-p): |t| below it means "not significant at 95 %"
+    double residualSigma = 0.0;            ///< sqrt(SSE/(n-p)), units of y
+    double residualSumOfSquares = 0.0;     ///< SSE
+    double totalSumOfSquares = 0.0;        ///< SST about the mean of y
+    double press = 0.0;                    ///< leave-one-out prediction error sum of squares
+    Eigen::MatrixXd covarianceFactor;      ///< (X'X)^-1: cov(b) = residualSigma^2 * this
+
+    /// Half width of the prediction band of one new observation with design row `row` at `level`
+    /// (Student t, n-p degrees of freedom): t sigma sqrt(1 + row' (X'X)^-1 row). Throws
+    /// std::invalid_argument for a row of the wrong size or a level outside (0, 1).
+    double predictionHalfWidth(const Eigen::VectorXd& row, double level = 0.95) const;
+};
+
+/// Fits y = X b by least squares through column-pivoting Householder QR (never the normal equations)
+/// with R^2, adjusted R^2, F against its table value, standard errors and t-values of the
+/// coefficients, the residual sigma and PRESS. The caller scales the columns (coded variables in
+/// [-1, 1]); column 0 must be the intercept (all ones). Needs at least p + 1 rows so the scatter can
+/// be estimated. Throws std::invalid_argument naming the problem: sizes differ, too few points,
+/// NaN/Inf, no intercept, all y equal, or columns that are linearly dependent on these data (the
+/// message names the first such column, 1-based).
+LinearRegression fitLinearRegression(const Eigen::MatrixXd& design, const Eigen::VectorXd& y);
+
 /// A fitted value with its 95 % (or other level) bands at one x.
 struct RegressionPrediction {
     double x = 0.0;

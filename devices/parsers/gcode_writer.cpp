@@ -1,8 +1,10 @@
 #include "devices/parsers/gcode_writer.h"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 namespace tt::devices {
 
@@ -103,6 +105,145 @@ std::string writeCorrectionGCode(const core::PartCorrection& correction, const G
     line("G0 X" + mm(safeX));
     line("G0 Z" + mm(approachZ));
     if (job.spindleRpm > 0) line("M5");
+    line("M30");
+    line("%");
+    return out;
+}
+
+namespace {
+
+/// Feed with four decimals, rounded down (0.0001 mm/rev is the finest feed word of both dialects).
+std::string feedWord(double feedMmPerRev) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4f", std::floor(feedMmPerRev * 1e4 + 1e-6) / 1e4);
+    return text;
+}
+
+/// A comment's text: upper case, printable ASCII, no parentheses (neither dialect nests comments).
+std::string commentText(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (c == '(' || c == '[')
+            out += '<';
+        else if (c == ')' || c == ']')
+            out += '>';
+        else if (c >= 0x20 && c < 0x7f)
+            out += static_cast<char>(std::toupper(c));
+    }
+    return out;
+}
+
+void checkFeedJob(const FeedPassJob& job) {
+    if (!(job.finishDiameterMm > 0.0) || !std::isfinite(job.finishDiameterMm) || job.finishDiameterMm > 10000.0)
+        throw std::invalid_argument("G-code: the finished diameter must be between 0 and 10000 mm");
+    if (!(job.depthMm > 0.0) || !std::isfinite(job.depthMm) || job.depthMm > 50.0)
+        throw std::invalid_argument("G-code: the depth of cut must be between 0 and 50 mm");
+    if (job.spindleRpm < 1 || job.spindleRpm > 10000)
+        throw std::invalid_argument("G-code: the spindle speed must be 1 to 10000 rpm (got " +
+                                    std::to_string(job.spindleRpm) + ")");
+    if (job.zDirection != 1 && job.zDirection != -1)
+        throw std::invalid_argument("G-code: the Z direction must be +1 or -1");
+    if (!(job.clearanceMm > 0.0 && job.clearanceMm <= 100.0))
+        throw std::invalid_argument("G-code: the clearance must be between 0 and 100 mm");
+    if (job.toolNumber < 1 || job.toolNumber > 99)
+        throw std::invalid_argument("G-code: the tool number must be 1 to 99");
+    if (job.programNumber < 1 || job.programNumber > 9999)
+        throw std::invalid_argument("G-code: the program number must be 1 to 9999");
+    if (!std::isfinite(job.zOriginMm) || std::fabs(job.zOriginMm) > 100000.0)
+        throw std::invalid_argument("G-code: the Z origin must be a finite number within 100 m");
+}
+
+void checkSegments(const std::vector<FeedPassSegment>& segments) {
+    if (segments.empty()) throw std::invalid_argument("G-code: the feed schedule has no segments");
+    const double direction = segments.front().zToMm >= segments.front().zFromMm ? 1.0 : -1.0;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const FeedPassSegment& s = segments[i];
+        const std::string which = "G-code: segment " + std::to_string(i + 1);
+        if (!std::isfinite(s.zFromMm) || !std::isfinite(s.zToMm) || !std::isfinite(s.feedMmPerRev) ||
+            !std::isfinite(s.yFromUm) || !std::isfinite(s.yToUm))
+            throw std::invalid_argument(which + " has a value that is not a number");
+        if (!(s.feedMmPerRev > 0.0 && s.feedMmPerRev <= 5.0))
+            throw std::invalid_argument(which + ": the feed " + feedWord(s.feedMmPerRev) +
+                                        " mm/rev is outside (0, 5] mm/rev");
+        if (!(direction * (s.zToMm - s.zFromMm) > 0.0))
+            throw std::invalid_argument(which + " does not advance in the direction of the pass (from " +
+                                        mm(s.zFromMm) + " to " + mm(s.zToMm) + " mm)");
+        if (i > 0 && std::fabs(s.zFromMm - segments[i - 1].zToMm) > 1e-9)
+            throw std::invalid_argument(which + " starts at " + mm(s.zFromMm) + " mm, not where segment " +
+                                        std::to_string(i) + " ends (" + mm(segments[i - 1].zToMm) + " mm)");
+    }
+}
+
+}  // namespace
+
+std::string gcodeDialectName(GCodeDialect dialect) {
+    return dialect == GCodeDialect::LinuxCnc ? "linuxcnc" : "fanuc";
+}
+
+GCodeDialect gcodeDialectFromName(const std::string& name) {
+    if (name == "fanuc") return GCodeDialect::Fanuc;
+    if (name == "linuxcnc") return GCodeDialect::LinuxCnc;
+    throw std::invalid_argument("unknown G-code dialect '" + name + "' (fanuc, linuxcnc)");
+}
+
+std::string writeFeedScheduleGCode(const FeedPassProgram& program, const FeedPassJob& job) {
+    checkFeedJob(job);
+    checkSegments(program.segments);
+    const bool fanuc = job.dialect == GCodeDialect::Fanuc;
+    const std::vector<FeedPassSegment>& segments = program.segments;
+    const double travel = segments.front().zToMm > segments.front().zFromMm ? 1.0 : -1.0;
+    auto zWord = [&](double z) { return mm(job.zOriginMm + job.zDirection * z); };
+    const double safeX = job.finishDiameterMm + 2.0 * job.depthMm + 2.0 * job.clearanceMm;
+    const double approachZ = segments.front().zFromMm - travel * job.clearanceMm;
+
+    std::string out;
+    auto line = [&](const std::string& text) { out += text + "\n"; };
+    auto comment = [&](const std::string& text) {
+        std::string c(1, '(');
+        c += commentText(text);
+        c += ')';
+        line(c);
+    };
+    char number[16];
+    std::snprintf(number, sizeof number, "%04d", job.programNumber);
+    line("%");
+    if (fanuc)
+        line(std::string("O") + number + " (TRUETURN FEED SCHEDULE)");
+    else
+        comment(std::string("PROGRAM ") + number + " TRUETURN FEED SCHEDULE");
+    comment(fanuc ? "FANUC-STYLE, G-CODE SYSTEM B: G90 ABSOLUTE, G95 FEED PER REVOLUTION" : "LINUXCNC");
+    comment("LATHE, METRIC: G21, MILLIMETRES; X WORDS ARE DIAMETERS");
+    comment("FEED SCHEDULED AGAINST FORCE DEFORMATION Y<A, F, Z>, PAPER 004");
+    for (const std::string& note : program.notes)
+        comment(note);
+    comment("PASS DIAMETER " + mm(job.finishDiameterMm) + " MM, DEPTH " + mm(job.depthMm) + " MM, " +
+            std::to_string(job.spindleRpm) + " RPM, MACHINE Z = " + mm(job.zOriginMm) +
+            (job.zDirection > 0 ? " + " : " - ") + "MODEL Z");
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const FeedPassSegment& s = segments[i];
+        char y[64];
+        std::snprintf(y, sizeof y, " Y %.1f TO %.1f UM", s.yFromUm, s.yToUm);
+        comment("SEG " + std::to_string(i + 1) + " Z" + zWord(s.zFromMm) + " TO Z" + zWord(s.zToMm) + " F" +
+                feedWord(s.feedMmPerRev) + y);
+    }
+    line(fanuc ? "G18 G21 G40 G90 G95" : "G18 G21 G40 G90 G95 G7");
+    char tool[24];
+    if (fanuc)
+        std::snprintf(tool, sizeof tool, "T%02d%02d", job.toolNumber, job.toolNumber);
+    else
+        std::snprintf(tool, sizeof tool, "T%d M6 G43", job.toolNumber);
+    line(tool);
+    line("G97 S" + std::to_string(job.spindleRpm) + " M3");
+    if (job.coolant) line("M8");
+    line("G0 X" + mm(safeX) + " Z" + zWord(approachZ));
+    line("G0 X" + mm(job.finishDiameterMm));
+    line("G1 Z" + zWord(segments.front().zFromMm) + " F" + feedWord(segments.front().feedMmPerRev));
+    for (const FeedPassSegment& s : segments)
+        line("G1 Z" + zWord(s.zToMm) + " F" + feedWord(s.feedMmPerRev));
+    line("G0 X" + mm(safeX));
+    line("G0 Z" + zWord(approachZ));
+    if (job.coolant) line("M9");
+    line("M5");
     line("M30");
     line("%");
     return out;

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "core/ports/correction_output.h"
 
@@ -30,5 +31,56 @@ struct GCodeJob {
 /// decimals (0.001 mm). Throws std::invalid_argument, in the user's terms, for an empty or
 /// inconsistent path, non-finite values, a correction beyond maxCorrectionMm, or a bad job.
 std::string writeCorrectionGCode(const core::PartCorrection& correction, const GCodeJob& job);
+
+/// The G-code dialect of a program: what the control expects around the same moves.
+enum class GCodeDialect {
+    Fanuc,     ///< Fanuc-style, G-code system B (G90 absolute, G95 feed/rev): O number, T0101, X in diameter
+    LinuxCnc,  ///< LinuxCNC (rs274ngc): program number in a comment, G7 diameter mode, T1 M6 G43
+};
+
+/// "fanuc" or "linuxcnc".
+std::string gcodeDialectName(GCodeDialect dialect);
+/// The dialect named `name` ("fanuc", "linuxcnc"); throws std::invalid_argument listing both.
+GCodeDialect gcodeDialectFromName(const std::string& name);
+
+/// The machine and part conventions of a longitudinal pass with a scheduled feed (paper 004): metric
+/// (G21), absolute (G90), feed per revolution (G95), XZ plane (G18), X words are diameters.
+struct FeedPassJob {
+    double finishDiameterMm = 50.0;  ///< the diameter the pass leaves (X of the cut), mm
+    double depthMm = 1.0;            ///< radial depth of cut a, mm: the blank is finishDiameter + 2a
+    int spindleRpm = 730;            ///< constant spindle speed (G97 S), rpm, 1..10000
+    bool coolant = true;             ///< flood coolant on (M8) during the pass, off (M9) after
+    int toolNumber = 1;              ///< tool (and offset) number, 1..99
+    int programNumber = 4004;        ///< O word (Fanuc) or the number in the header comment, 1..9999
+    double zOriginMm = 0.0;          ///< machine Z of the model's z = 0, mm
+    int zDirection = 1;              ///< machine Z = zOriginMm + zDirection * z (+1 or -1)
+    double clearanceMm = 2.0;        ///< radial and axial clearance of the approach and retract, mm
+    GCodeDialect dialect = GCodeDialect::Fanuc;
+};
+
+/// One segment of the pass at constant feed, in the model's z (mm) and in the order of travel.
+struct FeedPassSegment {
+    double zFromMm = 0.0;
+    double zToMm = 0.0;
+    double feedMmPerRev = 0.0;
+    double yFromUm = 0.0;  ///< predicted deformation at zFrom, µm (for the header comment)
+    double yToUm = 0.0;    ///< predicted deformation at zTo, µm
+};
+
+/// What the program of a scheduled pass states and does: the segments and the header's notes (the
+/// model, the level Yc; one comment line each, printable ASCII, parentheses replaced).
+struct FeedPassProgram {
+    std::vector<FeedPassSegment> segments;
+    std::vector<std::string> notes;
+};
+
+/// The CNC program of a feed-scheduled pass (paper 004: automatic part programming): a header
+/// comment (units, X mode, the notes, one line per segment with its feed and predicted deformation),
+/// G18 G21 G40 G90 G95, the tool, G97 S.. M3, M8, the approach a clearance before z_start outside the
+/// blank, then one `G1 Z.. F..` per segment, the retract, M9, M5, M30. Z with three decimals, feeds
+/// with four (rounded down to 0.0001 mm/rev, so the program never asks for more than the schedule).
+/// Throws std::invalid_argument, in the user's terms, for no segments, segments that do not join or
+/// reverse, non-finite values, a feed outside (0, 5] mm/rev, or a bad job.
+std::string writeFeedScheduleGCode(const FeedPassProgram& program, const FeedPassJob& job);
 
 }  // namespace tt::devices

@@ -2,6 +2,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -88,6 +89,26 @@ std::vector<double> LatheShaftBeam::cuttingComplianceMmPerN(double finishDiamete
         compliance[static_cast<std::size_t>(node)] = deflectionMm(node, 1.0, diameters)(node);
     }
     return compliance;
+}
+
+CutterCompliance cutterCompliance(const LatheSetup& setup, double depthMm) {
+    validateLatheSetup(setup);
+    const double finish = setup.workpiece.finishDiameterMm;
+    if (!std::isfinite(depthMm) || depthMm <= 0.0 || depthMm >= 0.5 * finish)
+        throw std::invalid_argument("the depth of cut must be above 0 and below the finished radius " +
+                                    std::to_string(0.5 * finish) + " mm (got " + std::to_string(depthMm) + ")");
+    const int elements = std::max(2, static_cast<int>(std::lround(setup.workpiece.lengthMm / setup.beamElementMm)));
+    const LatheShaftBeam beam(setup.workpiece.lengthMm, setup.workpiece.youngModulusNPerMm2,
+                              setup.stiffness.headstockNPerMm, setup.stiffness.tailstockNPerMm, elements);
+    CutterCompliance c;
+    c.complianceMmPerN =
+        beam.cuttingComplianceMmPerN(finish, finish + 2.0 * depthMm, setup.cutting.feedTowardsHeadstock);
+    for (double& v : c.complianceMmPerN)
+        v += 1.0 / setup.stiffness.toolNPerMm;
+    c.zMm.resize(c.complianceMmPerN.size());
+    for (int i = 0; i < beam.nodeCount(); ++i)
+        c.zMm[static_cast<std::size_t>(i)] = beam.nodeXMm(i);
+    return c;
 }
 
 }  // namespace tt::core

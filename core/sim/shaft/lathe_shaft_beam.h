@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include "core/sim/shaft/lathe_setup.h"
+
 namespace tt::core {
 
 /// A shaft between centres as an Euler–Bernoulli beam on two elastic supports (the headstock centre
@@ -44,5 +46,16 @@ private:
     double m_tailstock;
     int m_elements;
 };
+
+/// The compliance under the cutter at the nodes of a lathe set-up's shaft model.
+struct CutterCompliance {
+    std::vector<double> zMm;               ///< node positions from the headstock centre, mm
+    std::vector<double> complianceMmPerN;  ///< stepped shaft on its centres plus the cutter (1 / k_tool), mm/N
+};
+
+/// The compliance under the cutter of `setup` (shaft, centres, cutter, element length, direction of the
+/// cut) for a radial depth of cut `depthMm` (the blank ahead of the cutter is finish + 2a in diameter).
+/// Throws std::invalid_argument on a bad set-up or a depth that is not positive and below the radius.
+CutterCompliance cutterCompliance(const LatheSetup& setup, double depthMm);
 
 }  // namespace tt::core

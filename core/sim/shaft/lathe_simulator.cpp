@@ -24,11 +24,6 @@ double pathCorrectionAt(const CorrectionPath& path, double z) {
     return path.xCorrectionMm[i - 1] + t * (path.xCorrectionMm[i] - path.xCorrectionMm[i - 1]);
 }
 
-int elementCountFor(const LatheSetup& setup) {
-    validateLatheSetup(setup);
-    return std::max(2, static_cast<int>(std::lround(setup.workpiece.lengthMm / setup.beamElementMm)));
-}
-
 }  // namespace
 
 LatheSimulator::LatheSimulator(const LatheSetup& setup, std::vector<double> controlPointZMm,
@@ -37,7 +32,7 @@ LatheSimulator::LatheSimulator(const LatheSetup& setup, std::vector<double> cont
       m_pointZ(std::move(controlPointZMm)),
       m_force(setup.force, setup.cutting),
       m_disturbance(std::move(disturbance), setup.seed) {
-    const int elements = elementCountFor(setup);
+    validateLatheSetup(setup);
     if (m_pointZ.empty()) throw std::invalid_argument("the lathe simulator needs at least one control point");
     if (static_cast<int>(m_pointZ.size()) != m_disturbance.pointCount())
         throw std::invalid_argument("the disturbance model has " + std::to_string(m_disturbance.pointCount()) +
@@ -48,16 +43,9 @@ LatheSimulator::LatheSimulator(const LatheSetup& setup, std::vector<double> cont
         if (i > 0 && m_pointZ[i] <= m_pointZ[i - 1])
             throw std::invalid_argument("the control points must be strictly increasing along the part");
     }
-    const LatheShaftBeam beam(setup.workpiece.lengthMm, setup.workpiece.youngModulusNPerMm2,
-                              setup.stiffness.headstockNPerMm, setup.stiffness.tailstockNPerMm, elements);
-    const double finish = setup.workpiece.finishDiameterMm;
-    m_compliance = beam.cuttingComplianceMmPerN(finish, finish + 2.0 * setup.cutting.depthOfCutMm,
-                                                setup.cutting.feedTowardsHeadstock);
-    for (double& c : m_compliance)
-        c += 1.0 / setup.stiffness.toolNPerMm;
-    m_gridZ.resize(m_compliance.size());
-    for (int i = 0; i < beam.nodeCount(); ++i)
-        m_gridZ[static_cast<std::size_t>(i)] = beam.nodeXMm(i);
+    CutterCompliance compliance = cutterCompliance(setup, setup.cutting.depthOfCutMm);
+    m_compliance = std::move(compliance.complianceMmPerN);
+    m_gridZ = std::move(compliance.zMm);
 }
 
 double LatheSimulator::warmUpShiftMm(std::int64_t partNumber) const {
