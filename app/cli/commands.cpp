@@ -9,11 +9,12 @@ Command makeBoringCommand();
 Command makeLqgCommand();
 Command makeSimulateCommand();
 Command makeBenchCommand();
+Command makeCornerCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
-        makeFitProfileCommand(), makeLineariseCommand(), makeBoringCommand(),
-        makeLqgCommand(),        makeSimulateCommand(),  makeBenchCommand(),
+        makeFitProfileCommand(), makeLineariseCommand(), makeBoringCommand(), makeLqgCommand(),
+        makeSimulateCommand(),   makeBenchCommand(),     makeCornerCommand(),
     };
     return all;
 }
