@@ -98,7 +98,8 @@ DriftCheck CornerDriftMonitor::check() const {
     c.retrain = c.corners >= m_settings.windowCorners && std::abs(c.differenceFraction) > m_settings.thresholdFraction;
     if (c.retrain)
         c.reason = "mean real cost " + formatSignificant(c.meanReal * 1e3, 3) + " µm over the last " +
-                   std::to_string(c.corners) + " corners (" + std::to_string(c.outliers) + (c.outliers == 1 ? " miss" : " misses") + " removed) is " +
+                   std::to_string(c.corners) + " corners (" + std::to_string(c.outliers) +
+                   (c.outliers == 1 ? " miss" : " misses") + " removed) is " +
                    formatFixed(std::abs(c.differenceFraction) * 100.0, 1) +
                    (c.differenceFraction > 0.0 ? " % above" : " % below") + " the predicted " +
                    formatSignificant(c.meanPredicted * 1e3, 3) + " µm (threshold " +
