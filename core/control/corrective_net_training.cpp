@@ -74,23 +74,6 @@ NetWeights initialWeights(int hidden, std::mt19937_64& engine) {
     return w;
 }
 
-NetNormalisation normalisationFor(const std::vector<NetSample>& samples) {
-    double total = 0.0;
-    double mean = 0.0;
-    for (const NetSample& s : samples) {
-        total += s.weight;
-        mean += s.weight * s.amplitudeV;
-    }
-    mean /= total;
-    double variance = 0.0;
-    for (const NetSample& s : samples)
-        variance += s.weight * (s.amplitudeV - mean) * (s.amplitudeV - mean);
-    NetNormalisation n;
-    n.outputOffset = mean;
-    n.outputScale = std::max(std::sqrt(variance / total), 1e-3);
-    return n;
-}
-
 void validateSamples(const std::vector<NetSample>& samples) {
     if (samples.size() < 10 || samples.size() > 1000000)
         throw std::invalid_argument("training needs 10 .. 1 000 000 samples, got " + std::to_string(samples.size()));
@@ -166,6 +149,23 @@ CorrectiveNet train(const CorrectiveNet& start, const std::vector<NetSample>& sa
 }
 
 }  // namespace
+
+NetNormalisation normalisationFor(const std::vector<NetSample>& samples) {
+    double total = 0.0;
+    double mean = 0.0;
+    for (const NetSample& s : samples) {
+        total += s.weight;
+        mean += s.weight * s.amplitudeV;
+    }
+    mean /= total;
+    double variance = 0.0;
+    for (const NetSample& s : samples)
+        variance += s.weight * (s.amplitudeV - mean) * (s.amplitudeV - mean);
+    NetNormalisation n;
+    n.outputOffset = mean;
+    n.outputScale = std::max(std::sqrt(variance / total), 1e-3);
+    return n;
+}
 
 void validateNetTraining(const NetTrainingSettings& s) {
     const auto fail = [](const std::string& what) { throw std::invalid_argument("network training: " + what); };

@@ -29,6 +29,10 @@ struct NetTrainingSettings {
 /// patience 1 .. epochs, validation 0.05 .. 0.5, learning rate 1e-5 .. 1).
 void validateNetTraining(const NetTrainingSettings& settings);
 
+/// The output normalisation trainCorrectiveNet uses: offset = weighted mean of the amplitudes, scale =
+/// their weighted standard deviation (at least 1 mV); the inputs keep the paper's fixed 0.5 .. 9 rad/s map.
+NetNormalisation normalisationFor(const std::vector<NetSample>& samples);
+
 /// Called after every epoch with the epoch (1-based), the training and the validation loss; returning
 /// false cancels (OperationCancelled).
 using NetTrainingProgress = std::function<bool(int epoch, double trainingLoss, double validationLoss)>;

@@ -96,6 +96,7 @@ void Chart::setSeries(const QString& key, const QString& label, const std::vecto
     graph->setName(label);
     graph->setData(toQVector(xs), toQVector(ys), true);
     applyStyle(graph, color, style);
+    if (label.isEmpty()) graph->removeFromLegend();  // a series without a name has no legend entry
 }
 
 void Chart::setBand(const QString& key, const QString& label, const std::vector<double>& xs,

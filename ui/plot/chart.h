@@ -22,7 +22,8 @@ public:
     void setTitle(const QString& title);
     void setAxisTitles(const QString& x, const QString& y);
 
-    /// Creates or replaces the series `key` (legend shows `label`). xs and ys have equal length.
+    /// Creates or replaces the series `key` (legend shows `label`; none when it is empty). xs and ys
+    /// have equal length.
     void setSeries(const QString& key, const QString& label, const std::vector<double>& xs,
                    const std::vector<double>& ys, const QColor& color, Style style = Style::Line);
     /// A shaded band between `lower` and `upper` (tolerance band, prediction band).

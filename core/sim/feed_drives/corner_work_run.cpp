@@ -5,15 +5,12 @@
 #include <random>
 
 #include "core/common/operation_cancelled.h"
-#include "core/common/text_format.h"
 #include "core/sim/shaft/lathe_random.h"
 #include "core/sim/statistics/normal_stream.h"
 
 namespace tt::core {
 
 namespace {
-
-constexpr int kTraceEvery = 10;  // 1 ms at the 0.1 ms step: what the controller records per corner
 
 double uniform01(std::mt19937_64& engine) {
     return static_cast<double>(engine() >> 11) * 0x1.0p-53;
@@ -30,52 +27,6 @@ double reduction(const std::vector<CornerWorkMove>& moves, std::size_t from) {
     const double without = meanError(moves, from, false);
     return without > 0.0 ? 100.0 * (1.0 - meanError(moves, from, true) / without) : 0.0;
 }
-
-// The retraining of paper 002 on the recent corners: identify, new targets, retrain.
-class Retrainer {
-public:
-    Retrainer(const CornerScenario& scenario, FeedDrivesConfig& model, CorrectiveNet& net, std::vector<NetSample>& old)
-        : m_scenario(scenario), m_model(model), m_net(net), m_old(old) {}
-
-    CornerRetrainEvent run(int move, const DriftCheck& check, const std::vector<RecordedCorner>& corners,
-                           const CornerProgress& progress) {
-        const CornerRetrainSettings& r = m_scenario.retraining;
-        CornerRetrainEvent event;
-        event.move = move;
-        event.friction = identifyFriction(m_model, m_scenario.cost, m_scenario.pulse, corners, r.frictionFactorMin,
-                                          r.frictionFactorMax, kTraceEvery);
-        scaleFriction(m_model, FeedAxis::X, event.friction.xFactor);
-        scaleFriction(m_model, FeedAxis::Z, event.friction.zFactor);
-        std::vector<CornerMove> moves;
-        for (const RecordedCorner& c : corners)
-            moves.push_back(c.move);
-        const std::vector<CornerExample> examples =
-            findPulseTargets(m_model, m_scenario.cost, m_scenario.pulse, m_scenario.training.search, moves);
-        std::vector<NetSample> samples = toNetSamples(examples, 1.0);
-        for (NetSample s : m_old) {
-            s.weight *= r.oldSetWeight;
-            samples.push_back(s);
-        }
-        const NetTrainingSettings& settings = m_scenario.training.network;
-        const NetTrainingProgress epochs = [&](int epoch, double, double) {
-            return !progress || progress("retraining", epoch, settings.maxEpochs);
-        };
-        m_net = retrainCorrectiveNet(m_net, samples, settings, epochs);
-        for (const NetSample& s : toNetSamples(examples, 1.0))
-            m_old.push_back(s);
-        event.reason = check.reason + "; friction identified from " + std::to_string(corners.size()) + " corners: X x" +
-                       formatFixed(event.friction.xFactor, 3) + ", Z x" + formatFixed(event.friction.zFactor, 3) +
-                       "; network retrained on them and " + std::to_string(m_old.size() - examples.size()) +
-                       " earlier samples weighted " + formatFixed(r.oldSetWeight, 2);
-        return event;
-    }
-
-private:
-    const CornerScenario& m_scenario;
-    FeedDrivesConfig& m_model;
-    CorrectiveNet& m_net;
-    std::vector<NetSample>& m_old;
-};
 
 }  // namespace
 
@@ -109,10 +60,9 @@ CornerWorkResult runCornerWork(const CornerScenario& scenario, CorrectiveNet& ne
     FeedDrivesConfig model = scenario.drives;
     CornerDriftMonitor monitor(scenario.retraining.monitor);
     std::deque<RecordedCorner> recent;
-    Retrainer retrainer(scenario, model, net, oldSet);
     CornerSimulationOptions recordOptions;
     recordOptions.keepTrace = true;
-    recordOptions.traceEvery = kTraceEvery;
+    recordOptions.traceEvery = kCornerRecordEvery;
     for (int i = 0; i < count; ++i) {
         const CornerMove& move = moves[static_cast<std::size_t>(i)];
         const bool isDrifted = result.driftAtMove >= 0 && i >= result.driftAtMove;
@@ -141,12 +91,17 @@ CornerWorkResult runCornerWork(const CornerScenario& scenario, CorrectiveNet& ne
             std::vector<RecordedCorner> kept;
             for (std::size_t k = 0; k < recent.size(); ++k)
                 if (!outliers[k]) kept.push_back(recent[k]);
-            result.retrains.push_back(retrainer.run(i, check, kept, progress));
+            result.retrains.push_back(retrainOnCorners(scenario, model, net, oldSet, kept, i, check.reason, progress));
             monitor.clear();
             recent.clear();
         }
         if (progress && !progress("work", i + 1, count)) throw OperationCancelled();
     }
+    result.model = model;
+    result.samples = std::move(oldSet);
+    const std::vector<bool> outliers = monitor.outlierFlags();
+    for (std::size_t k = 0; k < recent.size(); ++k)
+        if (!outliers[k]) result.recent.push_back(recent[k]);
     result.meanWithoutMm = meanError(result.moves, 0, false);
     result.meanWithMm = meanError(result.moves, 0, true);
     result.reductionPct = reduction(result.moves, 0);

@@ -4,8 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/sim/feed_drives/corner_training.h"
-#include "core/sim/feed_drives/friction_identification.h"
+#include "core/sim/feed_drives/corner_retraining.h"
 
 namespace tt::core {
 
@@ -17,13 +16,6 @@ struct CornerWorkMove {
     CornerCost with;          ///< measured with it
     CornerCost predicted;     ///< what the controller's model expected with it
     bool hitByLoad = false;   ///< the machine's variation made it a miss
-};
-
-/// A retraining on drift.
-struct CornerRetrainEvent {
-    int move = 0;               ///< index of the corner after which it happened (0-based)
-    std::string reason;         ///< the monitor's finding and what was identified
-    FrictionEstimate friction;  ///< the model's friction factors found from the recent corners
 };
 
 /// Where and how much the machine drifts during a work run.
@@ -43,6 +35,9 @@ struct CornerWorkResult {
     std::optional<double> reductionAfterRetrainPct;  ///< over the moves after the first retraining
     int driftAtMove = -1;                            ///< where the drift began (−1: none)
     std::vector<DriftCheck> checks;                  ///< the monitor's verdict after each move
+    FeedDrivesConfig model;                          ///< the controller's model at the end (identified friction)
+    std::vector<NetSample> samples;                  ///< the training set at the end (old set + retrained corners)
+    std::vector<RecordedCorner> recent;              ///< corners since the last retraining, misses left out
 };
 
 /// Runs `moves` on the simulated machine (the scenario's drives with its per-corner variation and the
