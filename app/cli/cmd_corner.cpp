@@ -197,6 +197,8 @@ int runWork(const QStringList& arguments) {
     parser.addOption(QStringLiteral("drift"),
                      QStringLiteral("Multiply the Z drive's friction by F from the middle move on, 0.5 .. 3."),
                      QStringLiteral("F"));
+    parser.addOption(QStringLiteral("no-retrain"),
+                     QStringLiteral("The drift monitor only watches: no retraining (for comparison)."));
     parser.parse(arguments);
     core::CornerScenario scenario = loadScenario(parser);
     const int moves = movesOption(parser, scenario.evaluationMoves);
@@ -223,7 +225,8 @@ int runWork(const QStringList& arguments) {
     }
     const std::vector<core::CornerMove> work = core::drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, moves, seed);
     core::CorrectiveNet net = file->net;
-    const core::CornerWorkResult result = core::runCornerWork(scenario, net, file->samples, work, drift);
+    const bool retrain = !parser.isSet(QStringLiteral("no-retrain"));
+    const core::CornerWorkResult result = core::runCornerWork(scenario, net, file->samples, work, drift, retrain);
     if (parser.json())
         printJson(workJson(result));
     else
