@@ -60,6 +60,10 @@ void Chart::setYTickCount(int count) {
     m_plot->yAxis->ticker()->setTickCount(std::max(2, count));
 }
 
+void Chart::setXTickCount(int count) {
+    m_plot->xAxis->ticker()->setTickCount(std::max(2, count));
+}
+
 void Chart::setLegendBelow(int columns) {
     QCPLayoutGrid* layout = m_plot->plotLayout();
     if (m_plot->legend->layout() != layout) {

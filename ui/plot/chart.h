@@ -40,6 +40,8 @@ public:
     void setYRange(double lower, double upper);
     /// About how many ticks the y axis shows (fewer for a short strip chart).
     void setYTickCount(int count);
+    /// About how many ticks the x axis shows (fewer for a narrow chart).
+    void setXTickCount(int count);
     /// Puts the legend under the plot in `columns` columns, so it never covers the data.
     void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).

@@ -45,6 +45,7 @@ void showPaths(Chart& chart, const core::CornerRun& without, const core::CornerR
     chart.setSeries(QStringLiteral("with"), QCoreApplication::translate("CornerPlots", "With pulse"), with.trace.zMm,
                     with.trace.xMm, kWith);
     chart.setLegendBelow(1);
+    chart.setXTickCount(4);
     chart.rescale(false);
     chart.refresh();
     if (!zoom) return;
