@@ -13,6 +13,7 @@ Command makeFeedStabiliseCommand();
 Command makeDeformationExperimentCommand();
 Command makeFitDeformationCommand();
 Command makeScheduleFeedCommand();
+Command makeCornerCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -25,6 +26,7 @@ const std::vector<Command>& commands() {
         makeDeformationExperimentCommand(),
         makeFitDeformationCommand(),
         makeScheduleFeedCommand(),
+        makeCornerCommand(),
         makeFeedStabiliseCommand(),
     };
     return all;

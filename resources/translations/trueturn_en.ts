@@ -61,6 +61,105 @@
     </message>
 </context>
 <context>
+    <name>CornerPlots</name>
+    <message>
+        <source>Path near the corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Programmed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contour error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time, ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control interval</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corrective pulse on X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corrective pulse on Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pulse, V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network training</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Epoch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RMS amplitude error, mV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Validation moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drift monitor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured − predicted cost, %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Within the threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last %1 corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retrained</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>DeviceKinds</name>
     <message>
         <source>Gauge micrometer</source>
@@ -1728,6 +1827,217 @@ L/d %4</source>
     </message>
     <message>
         <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::CornerMoveEditor</name>
+    <message>
+        <source>Corner between two moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pulse on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X, cross slide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z, carriage</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pulse length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speeds as entered</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: X %2 → %3, Z %4 → %5</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::CornerTool</name>
+    <message>
+        <source>Corner pulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paths</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drift monitor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom on the corner</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Train network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z friction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retrain now</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing running.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The corner preset cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error %1 → %2 µm, −%3 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network&apos;s pulse %1 V</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Best pulse %1 V; no network for this pulse yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network trained.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained on demand on %n corner(s): friction X × %1, Z × %2.</source>
+        <translation>
+            <numerusform>Retrained on demand on %n corner: friction X × %1, Z × %2.</numerusform>
+            <numerusform>Retrained on demand on %n corners: friction X × %1, Z × %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Finding the best pulse of training move %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Training the network: epoch %1 of at most %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Running corner %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retraining the network: epoch %1 of at most %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled: the network of before is kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No network yet. Training finds the best pulse of each training move on the simulator (a bracketed search of U = k1·e_max + k2·e_mean), then the 4-10-1 network learns it from the four motor speeds.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Network 4-%1-1 for a %2 ms pulse on %3: %4 epochs (best %5), RMS amplitude error %6 mV on the training moves, %7 mV on the validation moves. The best pulses cut the training moves&apos; error by %8 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained %n time(s) since.</source>
+        <translation>
+            <numerusform>Retrained %n time since.</numerusform>
+            <numerusform>Retrained %n times since.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on the Z friction is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n corner(s): mean error %1 → %2 µm (−%3 %).</source>
+        <translation>
+            <numerusform>%n corner: mean error %1 → %2 µm (−%3 %).</numerusform>
+            <numerusform>%n corners: mean error %1 → %2 µm (−%3 %).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No retraining was needed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retrained after corner %1: the measured cost was %2 % above the prediction; friction identified X × %3, Z × %4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>After it: −%1 %.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

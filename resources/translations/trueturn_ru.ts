@@ -61,6 +61,105 @@
     </message>
 </context>
 <context>
+    <name>CornerPlots</name>
+    <message>
+        <source>Path near the corner</source>
+        <translation>Траектория у угла</translation>
+    </message>
+    <message>
+        <source>Z, mm</source>
+        <translation>Z, мм</translation>
+    </message>
+    <message>
+        <source>X, mm</source>
+        <translation>X, мм</translation>
+    </message>
+    <message>
+        <source>Programmed</source>
+        <translation>Заданная</translation>
+    </message>
+    <message>
+        <source>Without pulse</source>
+        <translation>Без импульса</translation>
+    </message>
+    <message>
+        <source>With pulse</source>
+        <translation>С импульсом</translation>
+    </message>
+    <message>
+        <source>Contour error</source>
+        <translation>Траекторная ошибка</translation>
+    </message>
+    <message>
+        <source>Time, ms</source>
+        <translation>Время, мс</translation>
+    </message>
+    <message>
+        <source>Error, µm</source>
+        <translation>Ошибка, мкм</translation>
+    </message>
+    <message>
+        <source>Control interval</source>
+        <translation>Интервал управления</translation>
+    </message>
+    <message>
+        <source>Corrective pulse on X</source>
+        <translation>Корректирующий импульс на X</translation>
+    </message>
+    <message>
+        <source>Corrective pulse on Z</source>
+        <translation>Корректирующий импульс на Z</translation>
+    </message>
+    <message>
+        <source>Pulse, V</source>
+        <translation>Импульс, В</translation>
+    </message>
+    <message>
+        <source>Network training</source>
+        <translation>Обучение сети</translation>
+    </message>
+    <message>
+        <source>Epoch</source>
+        <translation>Эпоха</translation>
+    </message>
+    <message>
+        <source>RMS amplitude error, mV</source>
+        <translation>СКО амплитуды, мВ</translation>
+    </message>
+    <message>
+        <source>Training moves</source>
+        <translation>Обучающие перемещения</translation>
+    </message>
+    <message>
+        <source>Validation moves</source>
+        <translation>Проверочные перемещения</translation>
+    </message>
+    <message>
+        <source>Drift monitor</source>
+        <translation>Контроль дрейфа</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Угол</translation>
+    </message>
+    <message>
+        <source>Measured − predicted cost, %</source>
+        <translation>Измеренная − расчётная цель, %</translation>
+    </message>
+    <message>
+        <source>Within the threshold</source>
+        <translation>В пределах порога</translation>
+    </message>
+    <message>
+        <source>Last %1 corners</source>
+        <translation>Последние %1 углов</translation>
+    </message>
+    <message>
+        <source>Retrained</source>
+        <translation>Переобучена</translation>
+    </message>
+</context>
+<context>
     <name>DeviceKinds</name>
     <message>
         <source>Gauge micrometer</source>
@@ -1733,6 +1832,220 @@ L/d %4</translation>
     <message>
         <source>Cancel</source>
         <translation>Отмена</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::CornerMoveEditor</name>
+    <message>
+        <source>Corner between two moves</source>
+        <translation>Угол между двумя перемещениями</translation>
+    </message>
+    <message>
+        <source>Corner</source>
+        <translation>Угол</translation>
+    </message>
+    <message>
+        <source>X before</source>
+        <translation>X до</translation>
+    </message>
+    <message>
+        <source>Z before</source>
+        <translation>Z до</translation>
+    </message>
+    <message>
+        <source>X after</source>
+        <translation>X после</translation>
+    </message>
+    <message>
+        <source>Z after</source>
+        <translation>Z после</translation>
+    </message>
+    <message>
+        <source> rad/s</source>
+        <translation> рад/с</translation>
+    </message>
+    <message>
+        <source>Pulse on</source>
+        <translation>Импульс на</translation>
+    </message>
+    <message>
+        <source>X, cross slide</source>
+        <translation>X, поперечный</translation>
+    </message>
+    <message>
+        <source>Z, carriage</source>
+        <translation>Z, продольный</translation>
+    </message>
+    <message>
+        <source>Pulse length</source>
+        <translation>Длительность</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> мс</translation>
+    </message>
+    <message>
+        <source>Speeds as entered</source>
+        <translation>Вручную</translation>
+    </message>
+    <message>
+        <source>%1: X %2 → %3, Z %4 → %5</source>
+        <translation>%1: X %2 → %3, Z %4 → %5</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::CornerTool</name>
+    <message>
+        <source>Corner pulse</source>
+        <translation>Импульс на углах</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Смоделировать</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Paths</source>
+        <translation>Траектории</translation>
+    </message>
+    <message>
+        <source>Network</source>
+        <translation>Сеть</translation>
+    </message>
+    <message>
+        <source>Drift monitor</source>
+        <translation>Контроль дрейфа</translation>
+    </message>
+    <message>
+        <source>Zoom on the corner</source>
+        <translation>Крупно у угла</translation>
+    </message>
+    <message>
+        <source>Training moves</source>
+        <translation>Обучающие перемещения</translation>
+    </message>
+    <message>
+        <source>Train network</source>
+        <translation>Обучить сеть</translation>
+    </message>
+    <message>
+        <source>Z friction</source>
+        <translation>Трение Z</translation>
+    </message>
+    <message>
+        <source>Corners</source>
+        <translation>Углов</translation>
+    </message>
+    <message>
+        <source>Run corners</source>
+        <translation>Пройти углы</translation>
+    </message>
+    <message>
+        <source>Retrain now</source>
+        <translation>Переобучить</translation>
+    </message>
+    <message>
+        <source>Nothing running.</source>
+        <translation>Расчёт не идёт.</translation>
+    </message>
+    <message>
+        <source>The corner preset cannot be read: %1</source>
+        <translation>Не удаётся прочитать набор параметров угла: %1</translation>
+    </message>
+    <message>
+        <source>Error %1 → %2 µm, −%3 %</source>
+        <translation>Ошибка %1 → %2 мкм, −%3 %</translation>
+    </message>
+    <message>
+        <source>Network&apos;s pulse %1 V</source>
+        <translation>Импульс сети %1 В</translation>
+    </message>
+    <message>
+        <source>Best pulse %1 V; no network for this pulse yet</source>
+        <translation>Лучший импульс %1 В; сети для такого импульса ещё нет</translation>
+    </message>
+    <message>
+        <source>Network trained.</source>
+        <translation>Сеть обучена.</translation>
+    </message>
+    <message>
+        <source>Run finished.</source>
+        <translation>Прогон закончен.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained on demand on %n corner(s): friction X × %1, Z × %2.</source>
+        <translation>
+            <numerusform>Переобучена по запросу на %n угле: трение X × %1, Z × %2.</numerusform>
+            <numerusform>Переобучена по запросу на %n углах: трение X × %1, Z × %2.</numerusform>
+            <numerusform>Переобучена по запросу на %n углах: трение X × %1, Z × %2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Finding the best pulse of training move %1 of %2</source>
+        <translation>Поиск лучшего импульса: перемещение %1 из %2</translation>
+    </message>
+    <message>
+        <source>Training the network: epoch %1 of at most %2</source>
+        <translation>Обучение сети: эпоха %1 из не более чем %2</translation>
+    </message>
+    <message>
+        <source>Running corner %1 of %2</source>
+        <translation>Угол %1 из %2</translation>
+    </message>
+    <message>
+        <source>Retraining the network: epoch %1 of at most %2</source>
+        <translation>Переобучение сети: эпоха %1 из не более чем %2</translation>
+    </message>
+    <message>
+        <source>Cancelled: the network of before is kept.</source>
+        <translation>Отменено: прежняя сеть сохранена.</translation>
+    </message>
+    <message>
+        <source>Failed: %1</source>
+        <translation>Ошибка: %1</translation>
+    </message>
+    <message>
+        <source>No network yet. Training finds the best pulse of each training move on the simulator (a bracketed search of U = k1·e_max + k2·e_mean), then the 4-10-1 network learns it from the four motor speeds.</source>
+        <translation>Сети ещё нет. Обучение находит на симуляторе лучший импульс каждого обучающего перемещения (одномерный поиск минимума U = k1·e_max + k2·e_mean на отрезке), затем сеть 4-10-1 учится выдавать его по четырём скоростям двигателей.</translation>
+    </message>
+    <message>
+        <source>Network 4-%1-1 for a %2 ms pulse on %3: %4 epochs (best %5), RMS amplitude error %6 mV on the training moves, %7 mV on the validation moves. The best pulses cut the training moves&apos; error by %8 %.</source>
+        <translation>Сеть 4-%1-1 для импульса %2 мс на %3: %4 эпох (лучшая %5), СКО амплитуды %6 мВ на обучающих перемещениях, %7 мВ на проверочных. Лучшие импульсы снижают ошибку обучающих перемещений на %8 %.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained %n time(s) since.</source>
+        <translation>
+            <numerusform>С тех пор переобучена %n раз.</numerusform>
+            <numerusform>С тех пор переобучена %n раза.</numerusform>
+            <numerusform>С тех пор переобучена %n раз.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on the Z friction is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %.</source>
+        <translation>Проходит углы с импульсом сети на моделируемом станке; с середины прогона трение привода Z умножается на заданный множитель. После каждого угла контроль сравнивает измеренное значение цели с расчётным по последним %1 углам (промахи исключены) и переобучает сеть, если разница больше %2 %.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n corner(s): mean error %1 → %2 µm (−%3 %).</source>
+        <translation>
+            <numerusform>%n угол: средняя ошибка %1 → %2 мкм (−%3 %).</numerusform>
+            <numerusform>%n угла: средняя ошибка %1 → %2 мкм (−%3 %).</numerusform>
+            <numerusform>%n углов: средняя ошибка %1 → %2 мкм (−%3 %).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No retraining was needed.</source>
+        <translation>Переобучение не понадобилось.</translation>
+    </message>
+    <message>
+        <source>Retrained after corner %1: the measured cost was %2 % above the prediction; friction identified X × %3, Z × %4.</source>
+        <translation>Переобучена после угла %1: измеренная цель на %2 % выше расчётной; определено трение X × %3, Z × %4.</translation>
+    </message>
+    <message>
+        <source>After it: −%1 %.</source>
+        <translation>После этого: −%1 %.</translation>
     </message>
 </context>
 <context>

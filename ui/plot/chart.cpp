@@ -60,6 +60,10 @@ void Chart::setYTickCount(int count) {
     m_plot->yAxis->ticker()->setTickCount(std::max(2, count));
 }
 
+void Chart::setXTickCount(int count) {
+    m_plot->xAxis->ticker()->setTickCount(std::max(2, count));
+}
+
 void Chart::setLegendBelow(int columns) {
     QCPLayoutGrid* layout = m_plot->plotLayout();
     if (m_plot->legend->layout() != layout) {
@@ -96,6 +100,7 @@ void Chart::setSeries(const QString& key, const QString& label, const std::vecto
     graph->setName(label);
     graph->setData(toQVector(xs), toQVector(ys), true);
     applyStyle(graph, color, style);
+    if (label.isEmpty()) graph->removeFromLegend();  // a series without a name has no legend entry
 }
 
 void Chart::setBand(const QString& key, const QString& label, const std::vector<double>& xs,

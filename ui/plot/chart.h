@@ -22,7 +22,8 @@ public:
     void setTitle(const QString& title);
     void setAxisTitles(const QString& x, const QString& y);
 
-    /// Creates or replaces the series `key` (legend shows `label`). xs and ys have equal length.
+    /// Creates or replaces the series `key` (legend shows `label`; none when it is empty). xs and ys
+    /// have equal length.
     void setSeries(const QString& key, const QString& label, const std::vector<double>& xs,
                    const std::vector<double>& ys, const QColor& color, Style style = Style::Line);
     /// A shaded band between `lower` and `upper` (tolerance band, prediction band).
@@ -39,6 +40,8 @@ public:
     void setYRange(double lower, double upper);
     /// About how many ticks the y axis shows (fewer for a short strip chart).
     void setYTickCount(int count);
+    /// About how many ticks the x axis shows (fewer for a narrow chart).
+    void setXTickCount(int count);
     /// Puts the legend under the plot in `columns` columns, so it never covers the data.
     void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).

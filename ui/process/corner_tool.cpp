@@ -1,0 +1,481 @@
+#include "ui/process/corner_tool.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "config/corner_config.h"
+#include "ui/plot/chart.h"
+#include "ui/process/corner_job.h"
+#include "ui/process/corner_move_editor.h"
+#include "ui/process/corner_plots.h"
+
+namespace tt::ui {
+
+namespace {
+
+constexpr int kSampleCorners = 12;
+constexpr unsigned long long kRunSeed = 3;  ///< the run's moves: neither training (1) nor the samples (2)
+
+QString number(double v, int decimals) {
+    return QLocale().toString(v, 'f', decimals);
+}
+
+QLabel* wrapped(QWidget* parent) {
+    auto* label = new QLabel(parent);
+    label->setWordWrap(true);
+    label->setStyleSheet(QStringLiteral("color: #38434f; font-size: 12pt;"));
+    return label;
+}
+
+}  // namespace
+
+CornerTool::CornerTool(AppContext& context, QWidget* parent)
+    : ProcessTool(parent),
+      m_curve(std::make_shared<LiveCurve>()),
+      m_job(new CornerJob(this)),
+      m_editor(new CornerMoveEditor(this)),
+      m_simulate(new QPushButton(this)),
+      m_summary(new QLabel(this)),
+      m_status(wrapped(this)),
+      m_progress(new QProgressBar(this)),
+      m_cancel(new QPushButton(this)),
+      m_views(new QTabWidget(this)),
+      m_zoom(new QCheckBox(this)),
+      m_pathChart(new Chart(this)),
+      m_errorChart(new Chart(this)),
+      m_pulseChart(new Chart(this)),
+      m_trainingMovesLabel(new QLabel(this)),
+      m_trainingMoves(new QSpinBox(this)),
+      m_train(new QPushButton(this)),
+      m_networkText(wrapped(this)),
+      m_trainingChart(new Chart(this)),
+      m_frictionLabel(new QLabel(this)),
+      m_friction(new QDoubleSpinBox(this)),
+      m_cornersLabel(new QLabel(this)),
+      m_corners(new QSpinBox(this)),
+      m_run(new QPushButton(this)),
+      m_retrain(new QPushButton(this)),
+      m_driftText(wrapped(this)),
+      m_driftChart(new Chart(this)) {
+    (void)context;  // the tool needs no device and no history: it works on the simulator
+    try {
+        m_scenario = config::loadCornerScenario(config::kDefaultCornerPreset);
+    } catch (const std::exception& e) {
+        m_scenarioProblem = QString::fromStdString(e.what());
+    }
+    buildLayout();
+    m_editor->setPulse(m_scenario.pulse);
+    m_editor->setSamples(
+        core::drawCornerMoves(m_scenario.xSpeeds, m_scenario.zSpeeds, kSampleCorners, m_scenario.training.seed + 1));
+    connect(m_simulate, &QPushButton::clicked, this, &CornerTool::simulate);
+    connect(m_editor, &CornerMoveEditor::changed, this, &CornerTool::simulate);
+    connect(m_zoom, &QCheckBox::toggled, this, [this] {
+        if (m_shownWithout && m_shownWith)
+            corner_plots::showPaths(*m_pathChart, *m_shownWithout, *m_shownWith, m_zoom->isChecked());
+    });
+    connect(m_train, &QPushButton::clicked, this, &CornerTool::train);
+    connect(m_run, &QPushButton::clicked, this, &CornerTool::runCorners);
+    connect(m_retrain, &QPushButton::clicked, this, &CornerTool::retrainNow);
+    connect(m_cancel, &QPushButton::clicked, this, &CornerTool::cancel);
+    connect(m_job, &CornerJob::progress, this, &CornerTool::showProgress);
+    connect(m_job, &CornerJob::finished, this, &CornerTool::finishJob);
+    retranslate();
+    simulate();
+}
+
+CornerTool::~CornerTool() = default;
+
+QString CornerTool::title() const {
+    return tr("Corner pulse");
+}
+
+QWidget* CornerTool::buildCornerView() {
+    auto* view = new QWidget(this);
+    m_zoom->setObjectName(QStringLiteral("cornerZoom"));
+    m_zoom->setChecked(true);
+    m_pathChart->setObjectName(QStringLiteral("cornerPathChart"));
+    m_errorChart->setObjectName(QStringLiteral("cornerErrorChart"));
+    m_pulseChart->setObjectName(QStringLiteral("cornerPulseChart"));
+    m_pulseChart->setMinimumHeight(160);
+    auto* right = new QVBoxLayout;
+    right->addWidget(m_errorChart, 3);
+    right->addWidget(m_pulseChart, 2);
+    auto* left = new QVBoxLayout;
+    left->addWidget(m_pathChart, 1);
+    left->addWidget(m_zoom);
+    auto* layout = new QHBoxLayout(view);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(left, 1);
+    layout->addLayout(right, 1);
+    return view;
+}
+
+QWidget* CornerTool::buildNetworkView() {
+    auto* view = new QWidget(this);
+    m_trainingMoves->setObjectName(QStringLiteral("cornerTrainingMoves"));
+    m_trainingMoves->setRange(20, 2000);
+    m_trainingMoves->setSingleStep(20);
+    m_trainingMoves->setValue(m_scenario.training.moves);
+    m_train->setObjectName(QStringLiteral("cornerTrain"));
+    m_train->setProperty("role", QStringLiteral("primary"));
+    m_networkText->setObjectName(QStringLiteral("cornerNetworkText"));
+    m_trainingChart->setObjectName(QStringLiteral("cornerTrainingChart"));
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_trainingMovesLabel);
+    row->addWidget(m_trainingMoves);
+    row->addWidget(m_train);
+    row->addStretch(1);
+    auto* layout = new QVBoxLayout(view);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(row);
+    layout->addWidget(m_networkText);
+    layout->addWidget(m_trainingChart, 1);
+    return view;
+}
+
+QWidget* CornerTool::buildDriftView() {
+    auto* view = new QWidget(this);
+    m_friction->setObjectName(QStringLiteral("cornerFriction"));
+    m_friction->setRange(0.5, 3.0);
+    m_friction->setDecimals(2);
+    m_friction->setSingleStep(0.05);
+    m_friction->setValue(1.3);
+    m_friction->setPrefix(QStringLiteral("× "));
+    m_corners->setObjectName(QStringLiteral("cornerRunCorners"));
+    m_corners->setRange(20, 400);
+    m_corners->setSingleStep(10);
+    m_corners->setValue(60);
+    m_run->setObjectName(QStringLiteral("cornerRun"));
+    m_run->setProperty("role", QStringLiteral("primary"));
+    m_retrain->setObjectName(QStringLiteral("cornerRetrain"));
+    m_driftText->setObjectName(QStringLiteral("cornerDriftText"));
+    m_driftChart->setObjectName(QStringLiteral("cornerDriftChart"));
+    auto* row = new QGridLayout;
+    row->addWidget(m_frictionLabel, 0, 0);
+    row->addWidget(m_friction, 0, 1);
+    row->addWidget(m_run, 0, 2);
+    row->addWidget(m_cornersLabel, 1, 0);
+    row->addWidget(m_corners, 1, 1);
+    row->addWidget(m_retrain, 1, 2);
+    row->setColumnStretch(3, 1);
+    auto* layout = new QVBoxLayout(view);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(row);
+    layout->addWidget(m_driftText);
+    layout->addWidget(m_driftChart, 1);
+    return view;
+}
+
+void CornerTool::buildLayout() {
+    m_simulate->setObjectName(QStringLiteral("cornerSimulate"));
+    m_summary->setObjectName(QStringLiteral("cornerSummary"));
+    m_summary->setWordWrap(true);
+    m_summary->setStyleSheet(QStringLiteral("font-size: 13pt; font-weight: bold; color: #1f2a36;"));
+    m_status->setObjectName(QStringLiteral("cornerStatus"));
+    m_cancel->setObjectName(QStringLiteral("cornerCancel"));
+    m_cancel->setProperty("role", QStringLiteral("danger"));
+    m_progress->setObjectName(QStringLiteral("cornerProgress"));
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(14);
+    auto* jobRow = new QHBoxLayout;
+    jobRow->addWidget(m_progress, 1);
+    jobRow->addWidget(m_cancel);
+    auto* left = new QVBoxLayout;
+    left->setSpacing(4);
+    left->addWidget(m_editor);
+    left->addWidget(m_simulate);
+    left->addWidget(m_summary);
+    left->addStretch(1);
+    left->addWidget(m_status);
+    left->addLayout(jobRow);
+    auto* leftBox = new QWidget(this);
+    leftBox->setLayout(left);
+    leftBox->setFixedWidth(330);
+    left->setContentsMargins(0, 0, 0, 0);
+    m_views->setObjectName(QStringLiteral("cornerViews"));
+    m_views->addTab(buildCornerView(), QString());
+    m_views->addTab(buildNetworkView(), QString());
+    m_views->addTab(buildDriftView(), QString());
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(leftBox);
+    layout->addWidget(m_views, 1);
+}
+
+void CornerTool::retranslate() {
+    m_editor->retranslate();
+    m_simulate->setText(tr("Simulate"));
+    m_cancel->setText(tr("Cancel"));
+    m_views->setTabText(0, tr("Paths"));
+    m_views->setTabText(1, tr("Network"));
+    m_views->setTabText(2, tr("Drift monitor"));
+    m_zoom->setText(tr("Zoom on the corner"));
+    m_trainingMovesLabel->setText(tr("Training moves"));
+    m_train->setText(tr("Train network"));
+    m_frictionLabel->setText(tr("Z friction"));
+    m_cornersLabel->setText(tr("Corners"));
+    m_run->setText(tr("Run corners"));
+    m_retrain->setText(tr("Retrain now"));
+    if (!m_job->running()) m_status->setText(m_lastStatus.isEmpty() ? tr("Nothing running.") : m_lastStatus);
+    showNetworkText();
+    showDriftText();
+    simulate();
+    updateEnabled();
+}
+
+bool CornerTool::netFitsPulse(const core::PulseSettings& p) const {
+    return m_net && m_net->pulse.axis == p.axis && m_net->pulse.durationS == p.durationS &&
+           m_net->pulse.leadS == p.leadS && m_net->pulse.limitV == p.limitV;
+}
+
+void CornerTool::simulate() {
+    if (!m_scenarioProblem.isEmpty()) {
+        m_summary->setText(tr("The corner preset cannot be read: %1").arg(m_scenarioProblem));
+        return;
+    }
+    const core::CornerMove move = m_editor->move();
+    const core::PulseSettings pulse = m_editor->pulse(m_scenario.pulse);
+    const bool network = netFitsPulse(pulse);
+    // The best pulse takes about 30 simulated corners (some 10 ms); the network's one.
+    const double amplitude =
+        network ? core::pulseAmplitudeV(m_net->net, pulse, move)
+                : core::findBestPulse(m_scenario.drives, m_scenario.cost, move, pulse, m_scenario.training.search)
+                      .amplitudeV;
+    core::CornerSimulationOptions options;
+    options.keepTrace = true;
+    options.traceEvery = 5;
+    m_shownWithout = core::simulateCorner(m_scenario.drives, m_scenario.cost, move, pulse, 0.0, options);
+    m_shownWith = core::simulateCorner(m_scenario.drives, m_scenario.cost, move, pulse, amplitude, options);
+    corner_plots::showPaths(*m_pathChart, *m_shownWithout, *m_shownWith, m_zoom->isChecked());
+    corner_plots::showErrors(*m_errorChart, *m_shownWithout, *m_shownWith);
+    corner_plots::showPulse(*m_pulseChart, *m_shownWith, pulse.axis);
+    const double without = m_shownWithout->cost.meanErrorMm * 1e3;
+    const double with = m_shownWith->cost.meanErrorMm * 1e3;
+    const QString errors =
+        tr("Error %1 → %2 µm, −%3 %")
+            .arg(number(without, 1), number(with, 1), number(without > 0.0 ? 100.0 * (1.0 - with / without) : 0.0, 0));
+    const QString source = network ? tr("Network's pulse %1 V").arg(number(amplitude, 3))
+                                   : tr("Best pulse %1 V; no network for this pulse yet").arg(number(amplitude, 3));
+    m_summary->setText(errors + QLatin1Char('\n') + source);
+}
+
+bool CornerTool::train() {
+    if (busy() || !m_scenarioProblem.isEmpty()) return false;
+    core::CornerScenario scenario = m_scenario;
+    scenario.pulse = m_editor->pulse(m_scenario.pulse);
+    const int moves = m_trainingMoves->value();
+    {
+        const std::lock_guard<std::mutex> lock(m_curve->mutex);
+        m_curve->training.clear();
+        m_curve->validation.clear();
+    }
+    auto result = std::make_shared<std::optional<core::CornerNetTraining>>();
+    const std::shared_ptr<LiveCurve> curve = m_curve;
+    m_apply = [this, result, scenario] {
+        const core::AxisPulseSummary best = core::summarisePulses(scenario.pulse.axis, (*result)->examples);
+        m_net = CornerNetState{(*result)->net, scenario.pulse, core::toNetSamples((*result)->examples), scenario.drives,
+                               best.reductionPct};
+        m_lastStatus = tr("Network trained.");
+        const core::NetTrainingRecord& r = m_net->net.record();
+        corner_plots::showTraining(*m_trainingChart, r.trainingLoss, r.validationLoss,
+                                   m_net->net.normalisation().outputScale);
+        showNetworkText();
+        simulate();
+    };
+    if (!m_job->start([scenario, moves, result, curve](const core::CornerProgress& progress) {
+            const std::vector<core::CornerMove> drawn =
+                core::drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, moves, scenario.training.seed);
+            std::vector<core::CornerExample> examples = core::findPulseTargets(
+                scenario.drives, scenario.cost, scenario.pulse, scenario.training.search, drawn, progress);
+            const std::vector<core::NetSample> samples = core::toNetSamples(examples);
+            curve->outputScaleV = core::normalisationFor(samples).outputScale;
+            const core::NetTrainingSettings& settings = scenario.training.network;
+            core::CorrectiveNet net = core::trainCorrectiveNet(samples, settings, [&](int epoch, double tl, double vl) {
+                {
+                    const std::lock_guard<std::mutex> lock(curve->mutex);
+                    curve->training.push_back(tl);
+                    curve->validation.push_back(vl);
+                }
+                return progress("network", epoch, settings.maxEpochs);
+            });
+            *result = core::CornerNetTraining{std::move(net), std::move(examples)};
+        }))
+        return false;
+    updateEnabled();
+    return true;
+}
+
+bool CornerTool::runCorners() {
+    if (busy() || !m_net) return false;
+    core::CornerScenario scenario = m_scenario;
+    scenario.pulse = m_net->pulse;
+    const CornerNetState state = *m_net;
+    const int corners = m_corners->value();
+    core::CornerDrift drift;
+    drift.factor = m_friction->value();
+    auto result = std::make_shared<std::optional<core::CornerWorkResult>>();
+    auto net = std::make_shared<core::CorrectiveNet>(state.net);
+    m_apply = [this, result, net] {
+        m_lastRun = std::move(*result);
+        m_net->net = *net;
+        m_net->model = m_lastRun->model;
+        m_net->samples = m_lastRun->samples;
+        m_lastStatus = tr("Run finished.");
+        corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
+                                m_scenario.retraining.monitor.windowCorners);
+        showDriftText();
+        showNetworkText();
+        simulate();
+    };
+    if (!m_job->start([scenario, state, corners, drift, result, net](const core::CornerProgress& progress) {
+            const std::vector<core::CornerMove> moves =
+                core::drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, corners, kRunSeed);
+            *result = core::runCornerWork(scenario, *net, state.samples, moves, drift, true, progress);
+        }))
+        return false;
+    updateEnabled();
+    return true;
+}
+
+bool CornerTool::retrainNow() {
+    if (busy() || !m_net || !m_lastRun || m_lastRun->recent.empty()) return false;
+    core::CornerScenario scenario = m_scenario;
+    scenario.pulse = m_net->pulse;
+    auto state = std::make_shared<CornerNetState>(*m_net);
+    auto event = std::make_shared<core::CornerRetrainEvent>();
+    const std::vector<core::RecordedCorner> corners = m_lastRun->recent;
+    const int move = static_cast<int>(m_lastRun->moves.size()) - 1;
+    m_apply = [this, state, event] {
+        m_net = *state;
+        m_lastStatus = tr("Retrained on demand on %n corner(s): friction X × %1, Z × %2.", nullptr, event->corners)
+                           .arg(number(event->friction.xFactor, 3), number(event->friction.zFactor, 3));
+        showNetworkText();
+        simulate();
+    };
+    if (!m_job->start([scenario, state, event, corners, move](const core::CornerProgress& progress) {
+            *event = core::retrainOnCorners(scenario, state->model, state->net, state->samples, corners, move,
+                                            "retraining asked for", progress);
+        }))
+        return false;
+    updateEnabled();
+    return true;
+}
+
+void CornerTool::cancel() {
+    m_job->cancel();
+}
+
+bool CornerTool::busy() const {
+    return m_job->running();
+}
+
+void CornerTool::showProgress(const QString& stage, int done, int total) {
+    m_progress->setRange(0, std::max(1, total));
+    m_progress->setValue(done);
+    if (stage == QLatin1String("targets"))
+        m_status->setText(tr("Finding the best pulse of training move %1 of %2").arg(done).arg(total));
+    else if (stage == QLatin1String("network"))
+        m_status->setText(tr("Training the network: epoch %1 of at most %2").arg(done).arg(total));
+    else if (stage == QLatin1String("work"))
+        m_status->setText(tr("Running corner %1 of %2").arg(done).arg(total));
+    else
+        m_status->setText(tr("Retraining the network: epoch %1 of at most %2").arg(done).arg(total));
+    if (stage == QLatin1String("network")) {
+        const std::lock_guard<std::mutex> lock(m_curve->mutex);
+        corner_plots::showTraining(*m_trainingChart, m_curve->training, m_curve->validation, m_curve->outputScaleV);
+    }
+}
+
+void CornerTool::finishJob(bool cancelled, const QString& error) {
+    if (cancelled)
+        m_lastStatus = tr("Cancelled: the network of before is kept.");
+    else if (!error.isEmpty())
+        m_lastStatus = tr("Failed: %1").arg(error);
+    else if (m_apply)
+        m_apply();
+    m_apply = nullptr;
+    m_status->setText(m_lastStatus);
+    m_progress->setRange(0, 1);
+    m_progress->setValue(cancelled || !error.isEmpty() ? 0 : 1);
+    updateEnabled();
+    emit jobFinished();
+}
+
+void CornerTool::updateEnabled() {
+    const bool idle = !busy();
+    const bool ok = m_scenarioProblem.isEmpty();
+    m_simulate->setEnabled(ok);
+    m_train->setEnabled(idle && ok);
+    m_trainingMoves->setEnabled(idle);
+    m_run->setEnabled(idle && m_net.has_value());
+    m_retrain->setEnabled(idle && m_net && m_lastRun && !m_lastRun->recent.empty());
+    m_friction->setEnabled(idle);
+    m_corners->setEnabled(idle);
+    m_cancel->setEnabled(!idle);
+}
+
+void CornerTool::showNetworkText() {
+    if (!m_net) {
+        m_networkText->setText(
+            tr("No network yet. Training finds the best pulse of each training move on the "
+               "simulator (a bracketed search of U = k1·e_max + k2·e_mean), then the 4-10-1 "
+               "network learns it from the four motor speeds."));
+        return;
+    }
+    const core::NetTrainingRecord& r = m_net->net.record();
+    QString text = tr("Network 4-%1-1 for a %2 ms pulse on %3: %4 epochs (best %5), RMS amplitude error %6 mV on "
+                      "the training moves, %7 mV on the validation moves. The best pulses cut the training moves' "
+                      "error by %8 %.")
+                       .arg(m_net->net.weights().hiddenCount())
+                       .arg(number(m_net->pulse.durationS * 1e3, 0),
+                            m_net->pulse.axis == core::FeedAxis::X ? QStringLiteral("X") : QStringLiteral("Z"))
+                       .arg(r.epochs)
+                       .arg(r.bestEpoch)
+                       .arg(number(r.trainingRmsV * 1e3, 1), number(r.validationRmsV * 1e3, 1),
+                            number(m_net->bestReductionPct, 0));
+    if (r.retrainings > 0) text += QLatin1Char(' ') + tr("Retrained %n time(s) since.", nullptr, r.retrainings);
+    m_networkText->setText(text);
+}
+
+void CornerTool::showDriftText() {
+    const core::DriftMonitorSettings& monitor = m_scenario.retraining.monitor;
+    if (!m_lastRun) {
+        m_driftText->setText(tr("Runs corners with the network's pulse on the simulated machine; from the middle "
+                                "corner on the Z friction is multiplied by the factor. After each corner the monitor "
+                                "compares the measured cost with the predicted one over the last %1 corners (misses "
+                                "removed) and retrains above %2 %.")
+                                 .arg(monitor.windowCorners)
+                                 .arg(number(100.0 * monitor.thresholdFraction, 1)));
+        return;
+    }
+    const core::CornerWorkResult& r = *m_lastRun;
+    QString text = tr("%n corner(s): mean error %1 → %2 µm (−%3 %).", nullptr, static_cast<int>(r.moves.size()))
+                       .arg(number(r.meanWithoutMm * 1e3, 1), number(r.meanWithMm * 1e3, 1), number(r.reductionPct, 0));
+    if (r.retrains.empty()) {
+        text += QLatin1Char(' ') + tr("No retraining was needed.");
+    } else {
+        const core::CornerRetrainEvent& e = r.retrains.front();
+        text += QLatin1Char(' ') +
+                tr("Retrained after corner %1: the measured cost was %2 % above the prediction; "
+                   "friction identified X × %3, Z × %4.")
+                    .arg(e.move + 1)
+                    .arg(number(100.0 * r.checks[static_cast<std::size_t>(e.move)].differenceFraction, 1),
+                         number(e.friction.xFactor, 2), number(e.friction.zFactor, 2));
+        if (r.reductionAfterRetrainPct)
+            text += QLatin1Char(' ') + tr("After it: −%1 %.").arg(number(*r.reductionAfterRetrainPct, 0));
+    }
+    m_driftText->setText(text);
+}
+
+}  // namespace tt::ui
