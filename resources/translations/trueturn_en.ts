@@ -1299,6 +1299,10 @@
         <source>Larger corrections are refused.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no data from %1 (silent)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>

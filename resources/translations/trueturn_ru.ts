@@ -1301,6 +1301,10 @@
         <source>Larger corrections are refused.</source>
         <translation>Большие коррекции отклоняются.</translation>
     </message>
+    <message>
+        <source>no data from %1 (silent)</source>
+        <translation>нет данных: %1 молчит</translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>

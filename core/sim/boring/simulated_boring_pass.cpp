@@ -1,5 +1,6 @@
 #include "core/sim/boring/simulated_boring_pass.h"
 
+#include <atomic>
 #include <utility>
 #include <vector>
 
@@ -29,19 +30,22 @@ ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringSce
 }
 
 /// The health the source's port reports instead of the machine's (a fault switch), guarded: it is
-/// set from the thread the switch lives in.
+/// set from the thread the switch lives in. Open, it costs the pass's thread one atomic load.
 class SimulatedBoringPass::SourceGate {
 public:
     void set(std::optional<DeviceHealth> health) {
         std::lock_guard lock(m_mutex);
+        m_shut.store(health.has_value(), std::memory_order_release);
         m_health = std::move(health);
     }
     std::optional<DeviceHealth> get() const {
+        if (!m_shut.load(std::memory_order_acquire)) return std::nullopt;
         std::lock_guard lock(m_mutex);
         return m_health;
     }
 
 private:
+    std::atomic<bool> m_shut = false;
     mutable std::mutex m_mutex;
     std::optional<DeviceHealth> m_health;
 };

@@ -49,43 +49,71 @@ QStringList englishIn(QWidget* root, const QStringList& data) {
     return found;
 }
 
-TEST(BoringTabInRussian, ARunWhoseSourceGoesSilentShowsNoEnglish) {
-    QSettings().remove(QStringLiteral("boringPanel"));
+/// The tab of a 1280 × 800 main window in Russian, with the simulator's drive read-out and probe
+/// mandrel (named in Russian, as the operator would) and their own simulated passes.
+class BoringTabInRussian : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().remove(QStringLiteral("boringPanel"));
+        ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+        drive = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
+                                  QStringLiteral("Поперечная подача"), {});
+        probe = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::Probe,
+                                  QStringLiteral("Оправка-датчик"), {});
+        devices.openAll();
+    }
+    void TearDown() override { language.apply(QStringLiteral("en")); }
+
+    /// Runs the pass of `sourceKey` until the tool is 13 mm in, silences `device`, and returns the
+    /// English the tab shows then (empty: none), after saving the screenshot `shot`.
+    QStringList silenceDuringARun(const QString& sourceKey, const QString& device, const QString& reasonWords,
+                                  const QString& shot) {
+        MainWindow window(context);
+        BoringPanel* panel = test::showBoringTab(window);
+        EXPECT_NE(panel, nullptr);
+        if (!panel || !panel->selectSource(sourceKey)) return {QStringLiteral("no source ") + sourceKey};
+        panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
+        EXPECT_TRUE(panel->start()) << panel->reason().toStdString();
+        EXPECT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 900; }, 20000));
+        EXPECT_EQ(panel->headline(), QStringLiteral("Компенсация")) << panel->reason().toStdString();
+        // The source goes silent (its fault switch): the offset is held, and the tab says why, with
+        // the device's own words underneath.
+        devices.device(device)->faultSwitches()->silent = true;
+        EXPECT_TRUE(QTest::qWaitFor(
+            [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); }, 5000))
+            << panel->reason().toStdString();
+        QTest::qWait(150);  // the plots and numbers of the last cycles
+        EXPECT_TRUE(panel->reason().contains(reasonWords)) << panel->reason().toStdString();
+        EXPECT_TRUE(test::saveScreenshot(window, shot));
+        QStringList english = englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        panel->stop();
+        english << englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        devices.device(device)->faultSwitches()->silent = false;
+        return english;
+    }
+
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    ASSERT_TRUE(language.apply(QStringLiteral("ru")));
     devices::DeviceManager devices;
-    const QString drive = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
-                                            QStringLiteral("Поперечная подача"), {});
-    devices.openAll();
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
-    MainWindow window(context);
-    BoringPanel* panel = test::showBoringTab(window);
-    ASSERT_NE(panel, nullptr);
+    QString drive;
+    QString probe;
+};
 
-    ASSERT_TRUE(panel->selectSource(QStringLiteral("dev:%1:current").arg(drive)));
-    panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
-    ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 900; }, 20000));
-    ASSERT_EQ(panel->headline(), QStringLiteral("Компенсация")) << panel->reason().toStdString();
-
-    // The drive read-out goes silent (its fault switch): the offset is held, and the tab says why,
-    // with the device's own words underneath.
-    devices.device(drive)->faultSwitches()->silent = true;
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); }, 5000))
-        << panel->reason().toStdString();
-    QTest::qWait(150);  // the plots and numbers of the last cycles
-    EXPECT_TRUE(panel->reason().contains(QStringLiteral("Датчик тока привода не отвечает или отключён")))
-        << panel->reason().toStdString();
-    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("boring_tab_ru_silent")));
-    const QStringList english = englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+TEST_F(BoringTabInRussian, ARunWhoseDriveReadOutGoesSilentShowsNoEnglish) {
+    const QStringList english = silenceDuringARun(QStringLiteral("dev:%1:current").arg(drive), drive,
+                                                  QStringLiteral("Датчик тока привода не отвечает или отключён"),
+                                                  QStringLiteral("boring_tab_ru_silent"));
     EXPECT_TRUE(english.isEmpty()) << english.join(QStringLiteral("\n  ")).toStdString();
-    panel->stop();
-    EXPECT_TRUE(englishIn(panel, {QStringLiteral("Boring bar D80 L800")}).isEmpty());
-    ASSERT_TRUE(language.apply(QStringLiteral("en")));
+}
+
+TEST_F(BoringTabInRussian, ARunWhoseMandrelGoesSilentShowsNoEnglish) {
+    const QStringList english = silenceDuringARun(QStringLiteral("dev:%1:probe").arg(probe), probe,
+                                                  QStringLiteral("Оправка-датчик не отвечает или отключена"),
+                                                  QStringLiteral("boring_tab_ru_probe_silent"));
+    EXPECT_TRUE(english.isEmpty()) << english.join(QStringLiteral("\n  ")).toStdString();
 }
 
 }  // namespace
