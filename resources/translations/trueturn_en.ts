@@ -1664,6 +1664,10 @@ L/d %4</source>
         <source>Real (simulator)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>

@@ -1668,6 +1668,10 @@ L/d %4</translation>
         <source>Real (simulator)</source>
         <translation>Истинный</translation>
     </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation>Устройства не настроены.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>

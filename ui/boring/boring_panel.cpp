@@ -104,7 +104,9 @@ BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
 }
 
 BoringPanel::~BoringPanel() {
-    stop();
+    // No signal from a panel being destroyed: the session stops its thread, the link its relays.
+    m_session->stop();
+    if (m_link) m_link->disconnectDevices();
 }
 
 void BoringPanel::connectControls() {
@@ -440,7 +442,10 @@ std::shared_ptr<core::BoringStation> BoringPanel::makeStation(const SourceChoice
     if (!output || !output->correctionOutput())
         throw std::invalid_argument(tr("The chosen CNC output is gone.").toStdString());
     choices.heldOffsetMm = m_heldOffsetMm.value(outputKey, 0.0);
-    return m_link->connectDevices(source.deviceId, source.method, outputKey.mid(4), choices.plcCycleS);
+    std::shared_ptr<core::BoringStation> station =
+        m_link->connectDevices(source.deviceId, source.method, outputKey.mid(4), choices.plcCycleS);
+    if (!station) throw std::invalid_argument(tr("No devices are configured.").toStdString());
+    return station;
 }
 
 bool BoringPanel::start() {

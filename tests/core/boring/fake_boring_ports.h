@@ -11,31 +11,22 @@
 
 namespace tt::core::test {
 
-/// A probe mandrel whose samples and health the test sets.
-struct FakeProbe final : DeflectionProbe {
+/// A source port (probe mandrel, drive read-out) whose samples and health the test sets.
+template <class Port, class Sample>
+struct FakeSource final : Port {
     DeviceHealth status{DeviceState::Ready, {}};
-    std::deque<ProbeSample> queue;
+    std::deque<Sample> queue;
     DeviceHealth health() const override { return status; }
-    std::optional<ProbeSample> takeSample() override {
+    std::optional<Sample> takeSample() override {
         if (queue.empty()) return std::nullopt;
-        const ProbeSample s = queue.front();
+        const Sample s = queue.front();
         queue.pop_front();
         return s;
     }
 };
 
-/// A drive read-out whose samples and health the test sets.
-struct FakeDrive final : DriveCurrentReadout {
-    DeviceHealth status{DeviceState::Ready, {}};
-    std::deque<DriveSample> queue;
-    DeviceHealth health() const override { return status; }
-    std::optional<DriveSample> takeSample() override {
-        if (queue.empty()) return std::nullopt;
-        const DriveSample s = queue.front();
-        queue.pop_front();
-        return s;
-    }
-};
+using FakeProbe = FakeSource<DeflectionProbe, ProbeSample>;
+using FakeDrive = FakeSource<DriveCurrentReadout, DriveSample>;
 
 /// A CNC output that keeps the offsets it took, or refuses them.
 struct FakeOutput final : CorrectionOutput {
