@@ -9,7 +9,7 @@
 #include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "config/boring_config.h"
-#include "core/run/boring_run.h"
+#include "core/run/boring_simulation.h"
 
 namespace tt::cli {
 
@@ -42,8 +42,8 @@ QJsonObject toJson(const QString& preset, const core::BoringScenario& s, const c
     out.insert(QStringLiteral("slenderness_l_over_d"), core::slendernessRatio(s.tool));
     out.insert(QStringLiteral("estimates"), r.estimates);
     out.insert(QStringLiteral("holding_cycles"), r.holdingCycles);
-    if (!r.lastHoldReason.empty())
-        out.insert(QStringLiteral("last_hold_reason"), QString::fromStdString(r.lastHoldReason));
+    if (r.lastHoldProblem != core::ReadingProblem::None)
+        out.insert(QStringLiteral("last_hold_reason"), QString::fromLatin1(core::toString(r.lastHoldProblem)));
     if (r.calibration)
         out.insert(QStringLiteral("probe_calibration"),
                    QJsonObject{{QStringLiteral("points"), r.calibration->points},

@@ -13,13 +13,11 @@ DeflectionCompensator::DeflectionCompensator(const CompensatorLimits& limits) : 
         throw std::invalid_argument("the compensation rate limit must be above 0 mm/s");
 }
 
-CompensationStep DeflectionCompensator::step(double dtS, std::optional<double> deflectionMm,
-                                             const std::string& holdReason) {
+CompensationStep DeflectionCompensator::step(double dtS, std::optional<double> deflectionMm) {
     if (!std::isfinite(dtS) || dtS <= 0.0) throw std::invalid_argument("the PLC cycle must be above 0 s");
     CompensationStep out;
     if (!deflectionMm || !std::isfinite(*deflectionMm)) {
         out.holding = true;
-        out.reason = holdReason.empty() ? "no valid deflection this cycle" : holdReason;
         out.targetMm = m_offsetMm;
         out.offsetMm = m_offsetMm;
         return out;

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <optional>
-#include <string>
 
 namespace tt::core {
 
@@ -17,8 +16,7 @@ struct CompensationStep {
     double offsetMm = 0.0;  ///< the offset to send, after the limits, mm
     bool rateLimited = false;
     bool rangeLimited = false;
-    bool holding = false;  ///< no valid measurement this cycle: the last offset is kept
-    std::string reason;    ///< why it holds, in the user's terms
+    bool holding = false;  ///< no valid measurement this cycle: the last offset is kept (the caller knows why)
 };
 
 /// The in-process deflection compensator (paper 001: "correction on X = minus the deflection",
@@ -32,8 +30,8 @@ public:
     explicit DeflectionCompensator(const CompensatorLimits& limits);
 
     /// One cycle of `dtS` seconds; `deflectionMm` = tip deflection along X (negative: towards the
-    /// axis), nullopt or non-finite = none valid (hold, with `holdReason`).
-    CompensationStep step(double dtS, std::optional<double> deflectionMm, const std::string& holdReason = {});
+    /// axis), nullopt or non-finite = none valid (hold).
+    CompensationStep step(double dtS, std::optional<double> deflectionMm);
 
     double offsetMm() const { return m_offsetMm; }
     const CompensatorLimits& limits() const { return m_limits; }

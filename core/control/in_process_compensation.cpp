@@ -24,6 +24,59 @@ ReadingProblem problemOf(DitherRefusal refusal) {
 
 }  // namespace
 
+const char* toString(BoringMethod method) {
+    switch (method) {
+        case BoringMethod::None:
+            return "none";
+        case BoringMethod::Current:
+            return "current";
+        case BoringMethod::Probe:
+            return "probe";
+    }
+    return "none";
+}
+
+BoringMethod boringMethodFromString(const std::string& text) {
+    if (text == "none") return BoringMethod::None;
+    if (text == "current") return BoringMethod::Current;
+    if (text == "probe") return BoringMethod::Probe;
+    throw std::invalid_argument("method '" + text + "' must be current, probe or none");
+}
+
+const char* toString(ReadingProblem problem) {
+    switch (problem) {
+        case ReadingProblem::None:
+            return "none";
+        case ReadingProblem::SourceNotReady:
+            return "source not ready";
+        case ReadingProblem::NoRecentSample:
+            return "no recent sample";
+        case ReadingProblem::NoTable:
+            return "no linearisation table";
+        case ReadingProblem::NotCylindrical:
+            return "not cylindrical";
+        case ReadingProblem::SlideNotMoving:
+            return "slide not moving";
+        case ReadingProblem::WindowTooShort:
+            return "window too short";
+        case ReadingProblem::WaitingForStrokes:
+            return "waiting for strokes";
+    }
+    return "none";
+}
+
+const char* toString(OutputProblem problem) {
+    switch (problem) {
+        case OutputProblem::None:
+            return "none";
+        case OutputProblem::NotReady:
+            return "not ready";
+        case OutputProblem::Refused:
+            return "refused";
+    }
+    return "none";
+}
+
 CurrentDeflectionSource::CurrentDeflectionSource(DriveCurrentReadout& readout, const DitherEstimatorConfig& config)
     : m_readout(readout), m_estimator(config) {}
 
@@ -31,9 +84,8 @@ DeflectionReading CurrentDeflectionSource::poll(double /*nowS*/) {
     DeflectionReading r;
     const DeviceHealth health = m_readout.health();
     if (!health.ready()) {
-        r.reason = "drive current readout is " + std::string(toString(health.state)) +
-                   (health.message.empty() ? "" : ": " + health.message);
         r.problem = ReadingProblem::SourceNotReady;
+        r.sourceHealth = health;
         return r;
     }
     while (const std::optional<DriveSample> sample = m_readout.takeSample())
@@ -41,7 +93,6 @@ DeflectionReading CurrentDeflectionSource::poll(double /*nowS*/) {
     const DitherUpdate& state = m_estimator.state();
     if (!state.estimate) {
         r.fresh = false;
-        r.reason = state.reason;
         r.problem = problemOf(state.refusal);
         return r;
     }
@@ -68,14 +119,13 @@ DeflectionReading ProbeDeflectionSource::poll(double nowS) {
     const DeviceHealth health = m_probe.health();
     if (!health.ready()) {
         m_lastDeflectionMm.reset();
-        r.reason = "probe mandrel is " + std::string(toString(health.state)) +
-                   (health.message.empty() ? "" : ": " + health.message);
         r.problem = ReadingProblem::SourceNotReady;
+        r.sourceHealth = health;
         return r;
     }
     double sum = 0.0;
     int count = 0;
-    std::string problem;
+    bool rawWithoutTable = false;
     while (const std::optional<ProbeSample> sample = m_probe.takeSample()) {
         const std::size_t plane = static_cast<std::size_t>(m_plane);
         double mm = 0.0;
@@ -84,7 +134,7 @@ DeflectionReading ProbeDeflectionSource::poll(double nowS) {
         } else if (m_hostTable) {
             mm = m_hostTable->interpolatedUm(sample->adcCode[plane]) / 1000.0;
         } else {
-            problem = "the mandrel sends raw ADC codes and no linearisation table is loaded";
+            rawWithoutTable = true;
             continue;
         }
         if (!std::isfinite(mm)) continue;
@@ -97,10 +147,8 @@ DeflectionReading ProbeDeflectionSource::poll(double nowS) {
         r.fresh = true;
     }
     if (!m_lastDeflectionMm || nowS - m_lastSampleS > m_maxSilenceS) {
-        r.reason = !problem.empty()
-                       ? problem
-                       : "no probe sample for more than " + std::to_string(std::lround(m_maxSilenceS * 1000.0)) + " ms";
-        r.problem = !problem.empty() ? ReadingProblem::NoTable : ReadingProblem::NoRecentSample;
+        r.problem = rawWithoutTable ? ReadingProblem::NoTable : ReadingProblem::NoRecentSample;
+        r.silenceLimitS = m_maxSilenceS;
         return r;
     }
     r.deflectionMm = m_lastDeflectionMm;
@@ -126,13 +174,13 @@ CompensationCycle InProcessCompensator::cycle(double nowS) {
     c.reading = m_source.poll(nowS);
     const DeviceHealth outputHealth = m_output.health();
     if (!outputHealth.ready()) {
-        c.step =
-            m_compensator.step(m_cycleS, std::nullopt, "CNC output is " + std::string(toString(outputHealth.state)));
-        c.outputError = outputHealth.message.empty() ? c.step.reason : outputHealth.message;
+        c.step = m_compensator.step(m_cycleS, std::nullopt);
+        c.outputProblem = OutputProblem::NotReady;
+        c.outputHealth = outputHealth;
         m_source.offsetMoving(0.0);
         return c;
     }
-    c.step = m_compensator.step(m_cycleS, c.reading.deflectionMm, c.reading.reason);
+    c.step = m_compensator.step(m_cycleS, c.reading.deflectionMm);
     if (c.step.offsetMm == m_lastSentMm && c.step.holding) {
         m_source.offsetMoving(0.0);
         return c;
@@ -143,12 +191,12 @@ CompensationCycle InProcessCompensator::cycle(double nowS) {
         m_source.offsetMoving((c.step.offsetMm - m_lastSentMm) / m_cycleS);
         m_lastSentMm = c.step.offsetMm;
     } else {
-        c.outputError = result.message;
+        c.outputProblem = OutputProblem::Refused;
+        c.outputMessage = result.message;
         m_source.offsetMoving(0.0);
         m_compensator.restoreOffset(m_lastSentMm);
         c.step.offsetMm = m_lastSentMm;
         c.step.holding = true;
-        c.step.reason = "CNC refused the offset: " + result.message;
     }
     return c;
 }

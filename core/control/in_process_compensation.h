@@ -13,6 +13,15 @@
 
 namespace tt::core {
 
+/// Where the in-process compensation takes the deflection from (paper 001): none, way 1 (the
+/// cross-feed current with dither) or way 2 (the probe mandrel in the boring bar).
+enum class BoringMethod { None, Current, Probe };
+
+/// "none", "current", "probe".
+const char* toString(BoringMethod method);
+/// Parses "none" / "current" / "probe"; throws std::invalid_argument otherwise.
+BoringMethod boringMethodFromString(const std::string& text);
+
 /// Why a source has no valid deflection, so a user interface can say it in its own words.
 enum class ReadingProblem {
     None,
@@ -25,13 +34,18 @@ enum class ReadingProblem {
     WaitingForStrokes,  ///< current with dither: no forward and reverse stroke yet
 };
 
-/// What a deflection source says for one PLC cycle.
+/// Stable English name of a problem, for logs and the command line ("window too short").
+const char* toString(ReadingProblem problem);
+
+/// What a deflection source says for one PLC cycle. No sentence: the problem is a kind with its
+/// data, worded by the user interface.
 struct DeflectionReading {
     std::optional<double> deflectionMm;             ///< tool tip deflection along X, mm (negative: towards the axis)
     std::optional<double> forceN;                   ///< radial force pushing the tool towards the axis, N, when known
     bool fresh = false;                             ///< a new measurement arrived this cycle
-    std::string reason;                             ///< why there is no valid deflection, in the user's terms
-    ReadingProblem problem = ReadingProblem::None;  ///< the same as a kind, None when valid
+    ReadingProblem problem = ReadingProblem::None;  ///< why there is no valid deflection; None when valid
+    DeviceHealth sourceHealth;                      ///< SourceNotReady: the device's state and its own message
+    double silenceLimitS = 0.0;                     ///< NoRecentSample: the silence allowed, s
 };
 
 /// Where the compensator gets the deflection from (paper 001: way 1 current, way 2 probe).
@@ -83,13 +97,25 @@ private:
     double m_lastSampleS = 0.0;
 };
 
+/// Why the offset did not reach the CNC in a cycle.
+enum class OutputProblem {
+    None,
+    NotReady,  ///< the output is disconnected, connecting or in error: nothing was sent
+    Refused,   ///< the output refused the write: the CNC keeps what it had
+};
+
+/// Stable English name of an output problem, for logs and the command line ("refused").
+const char* toString(OutputProblem problem);
+
 /// One PLC cycle of the in-process compensation, for logs and plots.
 struct CompensationCycle {
     double timeS = 0.0;
     DeflectionReading reading;
     CompensationStep step;
-    bool sent = false;        ///< the offset was written to the CNC
-    std::string outputError;  ///< why the write failed or was skipped
+    bool sent = false;                                  ///< the offset was written to the CNC
+    OutputProblem outputProblem = OutputProblem::None;  ///< why not, when it was not for want of a reading
+    DeviceHealth outputHealth;                          ///< NotReady: the output's state and its own message
+    std::string outputMessage;                          ///< Refused: the output's own words (the device's text)
 };
 
 /// The in-process compensation loop (issue item 6): every PLC cycle it polls the source, limits
@@ -107,6 +133,7 @@ public:
     void resumeFrom(double offsetMm);
     double offsetMm() const { return m_compensator.offsetMm(); }
     double plcCycleS() const { return m_cycleS; }
+    const CompensatorLimits& limits() const { return m_compensator.limits(); }
 
 private:
     DeflectionSource& m_source;

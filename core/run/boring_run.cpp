@@ -1,156 +1,159 @@
 #include "core/run/boring_run.h"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
-#include <memory>
-#include <stdexcept>
+#include <string>
 
-#include "core/calibration/linearisation_image.h"
-#include "core/control/in_process_compensation.h"
-#include "core/sim/rigs/probe_calibration_rig.h"
+#include "core/model/tool_stiffness.h"
 
 namespace tt::core {
 
-const char* toString(BoringMethod method) {
-    switch (method) {
-        case BoringMethod::None:
-            return "none";
-        case BoringMethod::Current:
-            return "current";
-        case BoringMethod::Probe:
-            return "probe";
-    }
-    return "none";
-}
-
-BoringMethod boringMethodFromString(const std::string& text) {
-    if (text == "none") return BoringMethod::None;
-    if (text == "current") return BoringMethod::Current;
-    if (text == "probe") return BoringMethod::Probe;
-    throw std::invalid_argument("method '" + text + "' must be current, probe or none");
-}
-
-ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringScenario& scenario) {
-    ProbeCalibrationRig rig(machine.probeSensor(), 0, scenario.calibration.referenceResolutionUm,
-                            scenario.calibration.referenceNoiseUm, scenario.seed * 7919ULL + 3);
-    const std::vector<CalibrationPoint> points = rig.sweep(scenario.calibration);
-    const Linearisation lin = linearise(points, scenario.probe.adcBits, scenario.calibration.degree);
-    TableImageInfo info;
-    info.degree = static_cast<std::uint8_t>(lin.fit.degree);
-    const std::vector<std::uint8_t> image = encodeTableImage(lin.table, info);
-    const TableImage loaded = decodeTableImage(image);
-    machine.probeSensor().setTable(0, loaded.table);
-    machine.probeSensor().settle(0.0, 0.0);
-    ProbeCalibrationSummary summary;
-    summary.points = static_cast<int>(points.size());
-    summary.degree = lin.fit.degree;
-    summary.rmsResidualUm = lin.fit.rmsResidualUm;
-    summary.maxTableErrorUm = lin.maxTableErrorUm;
-    summary.imageCrc = loaded.crc;
-    return summary;
-}
-
 namespace {
 
-struct SurfaceStats {
-    double from = 0.0;
-    double to = 0.0;
-    double maxGauged = 0.0;
-    double maxFull = 0.0;
-    double sumSquares = 0.0;
-    long count = 0;
-    double maxDeflection = 0.0;
-    double forceSum = 0.0;
-    double forceMax = 0.0;
-};
+// The ranges a preset may set (config/boring_config.cpp) and paper 001's PLC cycle.
+constexpr double kMinOffsetMm = 1e-3;
+constexpr double kMaxOffsetMm = 10.0;
+constexpr double kMinRateMmPerS = 1e-4;
+constexpr double kMaxRateMmPerS = 100.0;
+constexpr double kMinPlcCycleS = 0.01;
+constexpr double kMaxPlcCycleS = 0.1;
+
+std::string number(double v) {
+    std::string s = std::to_string(v);
+    while (s.size() > 1 && s.back() == '0')
+        s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+    return s;
+}
+
+std::string sentence(BoringRunRefusal kind, double value, double min, double max) {
+    const std::string range = " is outside " + number(min) + " .. " + number(max);
+    switch (kind) {
+        case BoringRunRefusal::NoStiffness:
+            return "the tool has no stiffness k_st above 0 N/mm (" + number(value) + ")";
+        case BoringRunRefusal::NoCurrentGain:
+            return "the tool has no current-to-force gain k_p above 0 N/A (" + number(value) + ")";
+        case BoringRunRefusal::NoDriveReadout:
+            return "the station has no drive current read-out";
+        case BoringRunRefusal::NoProbe:
+            return "the station has no probe mandrel";
+        case BoringRunRefusal::BadPlane:
+            return "probe plane " + number(value) + " must be 0 (X) or 1 (Y)";
+        case BoringRunRefusal::OffsetLimitOutOfRange:
+            return "offset limit " + number(value) + " mm" + range + " mm";
+        case BoringRunRefusal::RateLimitOutOfRange:
+            return "rate limit " + number(value) + " mm/s" + range + " mm/s";
+        case BoringRunRefusal::PlcCycleOutOfRange:
+            return "PLC cycle " + number(value * 1000.0) + " ms" + " is outside " + number(min * 1000.0) + " .. " +
+                   number(max * 1000.0) + " ms";
+        case BoringRunRefusal::PlcCycleNotTheStations:
+            return "PLC cycle " + number(value * 1000.0) + " ms is not the simulated pass's " + number(max * 1000.0) +
+                   " ms";
+        case BoringRunRefusal::EstimatorSettings:
+            return "the dither estimator refuses its thresholds";
+        case BoringRunRefusal::HeldOffsetBeyondLimit:
+            return "the CNC holds an offset of " + number(value) + " mm, more than the limit of " + number(max) + " mm";
+    }
+    return "the run is refused";
+}
+
+bool within(double v, double lo, double hi) {
+    return std::isfinite(v) && v >= lo && v <= hi;
+}
+
+void checkChoices(const BoringRunChoices& c, BoringStation& station) {
+    using R = BoringRunRefusal;
+    if (!within(c.limits.maxOffsetMm, kMinOffsetMm, kMaxOffsetMm))
+        throw BoringRunRefused(R::OffsetLimitOutOfRange, c.limits.maxOffsetMm, kMinOffsetMm, kMaxOffsetMm);
+    if (!within(c.limits.maxRateMmPerS, kMinRateMmPerS, kMaxRateMmPerS))
+        throw BoringRunRefused(R::RateLimitOutOfRange, c.limits.maxRateMmPerS, kMinRateMmPerS, kMaxRateMmPerS);
+    if (!within(c.plcCycleS, kMinPlcCycleS - 1e-12, kMaxPlcCycleS + 1e-12))
+        throw BoringRunRefused(R::PlcCycleOutOfRange, c.plcCycleS, kMinPlcCycleS, kMaxPlcCycleS);
+    if (const std::optional<double> own = station.plcCycleS(); own && std::abs(*own - c.plcCycleS) > 1e-9)
+        throw BoringRunRefused(R::PlcCycleNotTheStations, c.plcCycleS, *own, *own);
+    if (!std::isfinite(c.heldOffsetMm) || std::abs(c.heldOffsetMm) > c.limits.maxOffsetMm)
+        throw BoringRunRefused(R::HeldOffsetBeyondLimit, c.heldOffsetMm, -c.limits.maxOffsetMm, c.limits.maxOffsetMm);
+    if (c.method == BoringMethod::None) return;
+    if (!(c.stiffnessNPerMm > 0.0) || !std::isfinite(c.stiffnessNPerMm))
+        throw BoringRunRefused(R::NoStiffness, std::isfinite(c.stiffnessNPerMm) ? c.stiffnessNPerMm : 0.0);
+    if (c.method == BoringMethod::Current) {
+        if (!station.driveReadout()) throw BoringRunRefused(R::NoDriveReadout);
+        if (!(c.currentToForceNPerA > 0.0) || !std::isfinite(c.currentToForceNPerA))
+            throw BoringRunRefused(R::NoCurrentGain,
+                                   std::isfinite(c.currentToForceNPerA) ? c.currentToForceNPerA : 0.0);
+    } else {
+        if (!station.probe()) throw BoringRunRefused(R::NoProbe);
+        if (c.plane != 0 && c.plane != 1) throw BoringRunRefused(R::BadPlane, c.plane, 0.0, 1.0);
+    }
+}
 
 }  // namespace
 
-BoringResult runBoring(const BoringScenario& scenario, BoringMethod method) {
-    BoringMachine machine(scenario, method == BoringMethod::Current);
-    BoringResult result;
-    result.method = method;
-    result.stiffnessUsedNPerMm = effectiveStiffnessNPerMm(scenario.tool);
-    result.trueStiffnessNPerMm = machine.trueStiffnessNPerMm();
+BoringRunRefused::BoringRunRefused(BoringRunRefusal kind, double value, double min, double max)
+    : std::invalid_argument(sentence(kind, value, min, max)), m_kind(kind), m_value(value), m_min(min), m_max(max) {}
 
-    SurfaceStats stats;
-    stats.from = scenario.cut.gaugeMarginMm;
-    stats.to = scenario.cut.boreLengthMm - scenario.cut.gaugeMarginMm;
-    machine.setSurfaceObserver([&stats](const BoringState& s) {
-        const double diameterError = 2.0 * s.radiusErrorMm;
-        stats.maxFull = std::max(stats.maxFull, std::abs(diameterError));
-        if (s.toolZMm < stats.from || s.toolZMm > stats.to) return;
-        stats.maxGauged = std::max(stats.maxGauged, std::abs(diameterError));
-        stats.sumSquares += diameterError * diameterError;
-        ++stats.count;
-        stats.maxDeflection = std::max(stats.maxDeflection, std::abs(s.tipDeflectionXmm));
-        stats.forceSum += s.radialForceN;
-        stats.forceMax = std::max(stats.forceMax, s.radialForceN);
-    });
+BoringRunChoices boringChoices(const BoringScenario& scenario, BoringMethod method) {
+    BoringRunChoices c;
+    c.method = method;
+    c.plane = 0;
+    c.stiffnessNPerMm = effectiveStiffnessNPerMm(scenario.tool);
+    c.currentToForceNPerA = scenario.tool.currentToForceGainNPerA;
+    c.limits = scenario.limits;
+    c.plcCycleS = scenario.plcCycleS;
+    c.estimator = scenario.estimator;
+    return c;
+}
 
-    std::unique_ptr<DeflectionSource> source;
-    if (method == BoringMethod::Current) {
-        DitherEstimatorConfig config = scenario.estimator;
-        config.currentToForceNPerA = scenario.tool.currentToForceGainNPerA;
-        config.stiffnessNPerMm = result.stiffnessUsedNPerMm;
-        source = std::make_unique<CurrentDeflectionSource>(machine.driveReadout(), config);
-    } else if (method == BoringMethod::Probe) {
-        result.calibration = calibrateMandrel(machine, scenario);
-        source = std::make_unique<ProbeDeflectionSource>(machine.probe(), 0, std::nullopt, result.stiffnessUsedNPerMm);
+BoringRun::BoringRun(const BoringRunChoices& choices, BoringStation& station) : m_choices(choices), m_station(station) {
+    checkChoices(choices, station);
+    if (choices.method == BoringMethod::None) return;
+    if (choices.method == BoringMethod::Current) {
+        DitherEstimatorConfig config = choices.estimator;
+        config.currentToForceNPerA = choices.currentToForceNPerA;
+        config.stiffnessNPerMm = choices.stiffnessNPerMm;
+        try {
+            auto current = std::make_unique<CurrentDeflectionSource>(*station.driveReadout(), config);
+            m_current = current.get();
+            m_source = std::move(current);
+        } catch (const std::invalid_argument&) {
+            throw BoringRunRefused(BoringRunRefusal::EstimatorSettings);
+        }
+    } else {
+        m_source = std::make_unique<ProbeDeflectionSource>(*station.probe(), choices.plane, std::nullopt,
+                                                           choices.stiffnessNPerMm);
     }
-    std::unique_ptr<InProcessCompensator> compensator;
-    if (source)
-        compensator =
-            std::make_unique<InProcessCompensator>(*source, machine.output(), scenario.limits, scenario.plcCycleS);
+    m_compensator =
+        std::make_unique<InProcessCompensator>(*m_source, station.output(), choices.limits, choices.plcCycleS);
+    m_compensator->resumeFrom(choices.heldOffsetMm);
+}
 
-    double errorSquares = 0.0;
-    double errorMax = 0.0;
-    int errorCount = 0;
-    while (!machine.finished()) {
-        machine.advanceCycle();
-        const BoringState& s = machine.state();
-        std::optional<CompensationCycle> cycle;
-        if (compensator) cycle = compensator->cycle(s.timeS);
-        if (!s.cutting) continue;
-        BoringTracePoint p;
-        p.timeS = s.timeS;
-        p.zMm = s.toolZMm;
-        p.diameterErrorMm = 2.0 * s.radiusErrorMm;
-        p.deflectionMm = s.tipDeflectionXmm;
-        p.offsetMm = s.appliedOffsetMm;
-        p.forceN = s.radialForceN;
-        p.estimatedForceN = std::numeric_limits<double>::quiet_NaN();
-        if (cycle) {
-            if (cycle->reading.forceN) p.estimatedForceN = *cycle->reading.forceN;
-            if (cycle->reading.fresh) ++result.estimates;
-            if (cycle->step.holding) {
-                ++result.holdingCycles;
-                result.lastHoldReason = cycle->step.reason;
+BoringRun::~BoringRun() = default;
+
+BoringRunCycle BoringRun::cycle() {
+    m_station.advanceCycle();
+    BoringRunCycle out;
+    if (m_compensator) {
+        CompensationCycle c = m_compensator->cycle(m_station.clock().nowS());
+        if (c.outputProblem == OutputProblem::Refused)
+            if (const std::optional<double> confirmed = m_station.confirmedOffsetMm()) {
+                m_compensator->resumeFrom(*confirmed);
+                c.step.offsetMm = m_compensator->offsetMm();
             }
-        }
-        result.trace.push_back(p);
-        const bool gauged = s.toolZMm >= stats.from && s.toolZMm <= stats.to;
-        if (gauged && std::isfinite(p.estimatedForceN) && p.forceN > 0.0) {
-            const double e = (p.estimatedForceN - p.forceN) / p.forceN;
-            errorSquares += e * e;
-            errorMax = std::max(errorMax, std::abs(e));
-            ++errorCount;
-        }
+        out.compensation = std::move(c);
     }
-    result.gaugedFromMm = stats.from;
-    result.gaugedToMm = stats.to;
-    result.boreErrorMaxMm = stats.maxGauged;
-    result.boreErrorMaxFullLengthMm = stats.maxFull;
-    result.boreErrorRmsMm = stats.count > 0 ? std::sqrt(stats.sumSquares / static_cast<double>(stats.count)) : 0.0;
-    result.deflectionMaxMm = stats.maxDeflection;
-    result.forceMeanN = stats.count > 0 ? stats.forceSum / static_cast<double>(stats.count) : 0.0;
-    result.forceMaxN = stats.forceMax;
-    if (errorCount > 0) {
-        result.forceEstimateErrorPct = 100.0 * std::sqrt(errorSquares / errorCount);
-        result.forceEstimateErrorMaxPct = 100.0 * errorMax;
-    }
-    return result;
+    out.truth = m_station.truth();
+    return out;
+}
+
+void BoringRun::setSegment(SegmentKind kind) {
+    if (m_current) m_current->estimator().setSegment(kind);
+}
+
+double BoringRun::offsetMm() const {
+    return m_compensator ? m_compensator->offsetMm() : m_choices.heldOffsetMm;
+}
+
+std::unique_ptr<BoringRun> buildBoringRun(const BoringRunChoices& choices, BoringStation& station) {
+    return std::make_unique<BoringRun>(choices, station);
 }
 
 }  // namespace tt::core

@@ -1,74 +1,105 @@
 #pragma once
 
+#include <memory>
 #include <optional>
-#include <string>
-#include <vector>
+#include <stdexcept>
 
+#include "core/control/in_process_compensation.h"
+#include "core/ports/boring_station.h"
 #include "core/sim/boring/boring_machine.h"
 
 namespace tt::core {
 
-/// Where the in-process compensation takes the deflection from (paper 001).
-enum class BoringMethod { None, Current, Probe };
-
-/// "none", "current", "probe".
-const char* toString(BoringMethod method);
-/// Parses "none" / "current" / "probe"; throws std::invalid_argument otherwise.
-BoringMethod boringMethodFromString(const std::string& text);
-
-/// One PLC cycle of a boring run, for plots.
-struct BoringTracePoint {
-    double timeS = 0.0;
-    double zMm = 0.0;
-    double diameterErrorMm = 0.0;  ///< bore diameter minus nominal where the tool is, mm
-    double deflectionMm = 0.0;     ///< true tip deflection along X, mm
-    double offsetMm = 0.0;         ///< dynamic offset applied, mm
-    double forceN = 0.0;           ///< true radial force, N
-    double estimatedForceN = 0.0;  ///< the source's force estimate, N (NaN when none)
+/// What the operator (or a preset) chose for one in-process compensation run (paper 001).
+struct BoringRunChoices {
+    BoringMethod method = BoringMethod::Current;
+    int plane = 0;                     ///< probe: the mandrel's bending plane that lies along X (0 or 1)
+    double stiffnessNPerMm = 0.0;      ///< k_st of the tool (tool table), N/mm
+    double currentToForceNPerA = 0.0;  ///< k_p of the cross feed (k_p calibration), N/A; current only
+    CompensatorLimits limits;          ///< range and rate of the dynamic X offset
+    double plcCycleS = 0.02;           ///< the PLC cycle the compensation runs at, 0.01 .. 0.1 s
+    DitherEstimatorConfig estimator;   ///< thresholds; k_p and k_st are taken from the fields above
+    double heldOffsetMm = 0.0;         ///< the offset the CNC already holds, mm: the run continues from it
 };
 
-/// The probe calibration done on the simulator before a probe run.
-struct ProbeCalibrationSummary {
-    int points = 0;
-    int degree = 0;
-    double rmsResidualUm = 0.0;
-    double maxTableErrorUm = 0.0;
-    std::uint32_t imageCrc = 0;  ///< CRC-32C the loaded table image carries (format 2)
+/// The choices `scenario` makes for `method` (what `trueturn boring` runs): k_st computed from
+/// the scenario's tool (tool table), k_p of its tool, its limits, PLC cycle and estimator
+/// thresholds, plane 0 (X), nothing held.
+BoringRunChoices boringChoices(const BoringScenario& scenario, BoringMethod method);
+
+/// Why a run cannot be built, as a kind; the refusal carries the value and the limits it broke.
+enum class BoringRunRefusal {
+    NoStiffness,             ///< k_st is not above 0 (value: k_st)
+    NoCurrentGain,           ///< the current method without k_p above 0 (value: k_p)
+    NoDriveReadout,          ///< the current method on a station without a drive read-out
+    NoProbe,                 ///< the probe method on a station without a probe mandrel
+    BadPlane,                ///< the probe plane is not 0 or 1 (value: plane)
+    OffsetLimitOutOfRange,   ///< the offset range limit, mm, outside min .. max
+    RateLimitOutOfRange,     ///< the offset rate limit, mm/s, outside min .. max
+    PlcCycleOutOfRange,      ///< the PLC cycle, s, outside min .. max
+    PlcCycleNotTheStations,  ///< a simulated pass runs at another PLC cycle (value: chosen, min = max: the pass's)
+    EstimatorSettings,       ///< the dither estimator refuses its thresholds
+    HeldOffsetBeyondLimit,   ///< the CNC holds more than the range limit (value: held, max: limit)
 };
 
-/// Result of one simulated boring pass (issue 6, `trueturn boring`).
-struct BoringResult {
-    BoringMethod method = BoringMethod::None;
-    double boreErrorMaxMm = 0.0;  ///< max |diameter error| over the gauged length, mm
-    double boreErrorRmsMm = 0.0;  ///< RMS diameter error over the gauged length, mm
-    double boreErrorMaxFullLengthMm = 0.0;
-    double gaugedFromMm = 0.0;
-    double gaugedToMm = 0.0;
-    double deflectionMaxMm = 0.0;  ///< max |tip deflection| over the gauged length, mm
-    double forceMeanN = 0.0;
-    double forceMaxN = 0.0;
-    std::optional<double> forceEstimateErrorPct;     ///< RMS of (estimate − true) / true over the gauged length
-    std::optional<double> forceEstimateErrorMaxPct;  ///< largest |estimate − true| / true there
-    int estimates = 0;                               ///< PLC cycles with a fresh measurement
-    int holdingCycles = 0;                           ///< PLC cycles in the bore without a valid measurement
-    std::string lastHoldReason;
-    double stiffnessUsedNPerMm = 0.0;  ///< k_st from the tool table
-    double trueStiffnessNPerMm = 0.0;
-    std::optional<ProbeCalibrationSummary> calibration;
-    std::vector<BoringTracePoint> trace;  ///< one point per PLC cycle in the bore
+/// A run refused with its kind and data; what() is a stable English sentence for the command line.
+class BoringRunRefused : public std::invalid_argument {
+public:
+    BoringRunRefused(BoringRunRefusal kind, double value = 0.0, double min = 0.0, double max = 0.0);
+    BoringRunRefusal kind() const { return m_kind; }
+    double value() const { return m_value; }
+    double min() const { return m_min; }
+    double max() const { return m_max; }
+
+private:
+    BoringRunRefusal m_kind;
+    double m_value;
+    double m_min;
+    double m_max;
 };
 
-/// Calibrates the probe mandrel of `machine` on the simulated stand (`scenario.calibration`: loads
-/// on the bar tip against a dial indicator), linearises it, and loads the table into the mandrel
-/// the way an upload does: the image is encoded, then decoded with its CRC checked on the
-/// mandrel's side. Throws core::LinearisationRefused when the calibration cannot be fitted.
-ProbeCalibrationSummary calibrateMandrel(BoringMachine& machine, const BoringScenario& scenario);
+/// One PLC cycle of a run.
+struct BoringRunCycle {
+    std::optional<CompensationCycle> compensation;  ///< what the compensation did; nullopt for the method None
+    std::optional<BoringPassTruth> truth;           ///< the truth of a simulated pass; nullopt on a machine
+};
 
-/// Runs one boring pass of `scenario` with the given compensation: none; current (dither on,
-/// DitherForceEstimator through CurrentDeflectionSource); probe (the mandrel is first calibrated
-/// on the rig, linearised, its table image encoded, checked and loaded into the mandrel, then
-/// ProbeDeflectionSource). The compensation runs in InProcessCompensator every PLC cycle and
-/// writes the offset through the machine's CorrectionOutput. Deterministic for a scenario seed.
-BoringResult runBoring(const BoringScenario& scenario, BoringMethod method);
+/// A ready in-process compensation run on a boring station: the deflection source of the chosen
+/// method (DitherForceEstimator on the drive read-out, or the probe mandrel's plane) and the
+/// InProcessCompensator writing the limited offset to the station's CNC output every PLC cycle.
+/// Used from the one thread that runs the station.
+class BoringRun {
+public:
+    BoringRun(const BoringRunChoices& choices, BoringStation& station);
+    ~BoringRun();
+    BoringRun(const BoringRun&) = delete;
+    BoringRun& operator=(const BoringRun&) = delete;
+
+    /// One PLC cycle: a simulated station moves on by a cycle, then the compensation reads the
+    /// source at the station's time, limits the offset and writes it. When the output refused the
+    /// offset and answers later (a relay), the run continues from what the CNC confirmed.
+    BoringRunCycle cycle();
+    /// What the part program cuts (the current method refuses tapers and contours).
+    void setSegment(SegmentKind kind);
+    /// The offset last written to the CNC (or held), mm.
+    double offsetMm() const;
+    double plcCycleS() const { return m_choices.plcCycleS; }
+    const BoringRunChoices& choices() const { return m_choices; }
+    BoringStation& station() { return m_station; }
+    /// A simulated pass is over.
+    bool finished() const { return m_station.finished(); }
+
+private:
+    BoringRunChoices m_choices;
+    BoringStation& m_station;
+    std::unique_ptr<DeflectionSource> m_source;
+    CurrentDeflectionSource* m_current = nullptr;
+    std::unique_ptr<InProcessCompensator> m_compensator;
+};
+
+/// The one run builder (GUI, command line and tests): checks the choices against the station and
+/// makes the run, continuing from `choices.heldOffsetMm`. The station must outlive the run.
+/// Throws BoringRunRefused with the kind and data of the first problem.
+std::unique_ptr<BoringRun> buildBoringRun(const BoringRunChoices& choices, BoringStation& station);
 
 }  // namespace tt::core

@@ -45,6 +45,7 @@ void SimulatedDevice::close() {
     m_open = false;
     m_timer.stop();
     setState(core::DeviceState::Disconnected);
+    stateChecked();
 }
 
 double SimulatedDevice::noise() {
@@ -61,6 +62,7 @@ void SimulatedDevice::heartbeat() {
         m_wasUnplugged = true;
         setState(core::DeviceState::Error,
                  QCoreApplication::translate("Simulator", "%1 is unplugged (fault switch)").arg(what()));
+        stateChecked();
         return;
     }
     if (m_wasUnplugged) {
@@ -70,6 +72,7 @@ void SimulatedDevice::heartbeat() {
         connected();
     }
     tick();
+    stateChecked();
 }
 
 }  // namespace tt::devices

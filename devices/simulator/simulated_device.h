@@ -31,6 +31,8 @@ protected:
     virtual void tick() = 0;
     /// Called when the device (re)connects: after open() and after the unplug switch is released.
     virtual void connected() = 0;
+    /// Called after every heartbeat (plugged in or not) and on close(), when the state is settled.
+    virtual void stateChecked() {}
     bool isOpen() const { return m_open; }
     bool unplugged() const { return m_faults.disconnected; }
     const FaultSwitches& faults() const { return m_faults; }

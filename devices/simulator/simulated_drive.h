@@ -4,6 +4,7 @@
 #include <deque>
 #include <optional>
 
+#include "devices/simulator/simulated_boring_station.h"
 #include "devices/simulator/simulated_device.h"
 
 namespace tt::devices {
@@ -19,7 +20,9 @@ core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double 
 /// sample travels as registers (current int16 0.01 A, velocity float32 mm/s, position int32
 /// 0.1 um) and is decoded back, so a malformed register value is refused as on the machine.
 /// The drive state comes from the injectable source (setDriveSource) or the oscillation above.
-/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA.
+/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA. It is also a simulated
+/// boring station (boringTruth(): the heavy cross feed of paper 001 with dither), whose passes
+/// follow this read-out's fault switches.
 class SimulatedDrive final : public SimulatedDevice, public core::DriveCurrentReadout {
 public:
     SimulatedDrive(const QVariantMap& settings, const DeviceContext& context);
@@ -30,10 +33,12 @@ public:
     core::DriveCurrentReadout* driveCurrentReadout() override { return this; }
     QList<DeviceStatistic> statistics() const override;
     void setDriveSource(std::function<core::DriveSample(double)> source) override;
+    BoringTruth* boringTruth() override { return &m_station; }
 
 protected:
     void tick() override;
     void connected() override;
+    void stateChecked() override { m_station.follow(health()); }
 
 private:
     std::function<core::DriveSample(double)> m_source;
@@ -42,6 +47,7 @@ private:
     int m_missedPolls = 0;
     std::uint64_t m_polls = 0;
     std::uint64_t m_refused = 0;
+    SimulatedBoringStation m_station{core::BoringMethod::Current, [this] { return health(); }};
 };
 
 }  // namespace tt::devices

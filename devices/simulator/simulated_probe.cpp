@@ -78,6 +78,10 @@ void SimulatedProbe::tick() {
                      QCoreApplication::translate("Simulator", "starting the probe mandrel"));
             break;
         case probe::ProbeSession::Link::Silent:
+            // Said in the terminal's language (the session's own sentence is English).
+            setState(core::DeviceState::Error,
+                     QCoreApplication::translate("Simulator", "no data from %1 (silent)").arg(what()));
+            break;
         case probe::ProbeSession::Link::Failed:
             setState(core::DeviceState::Error, QString::fromStdString(m_session.problem()));
             break;

@@ -4,6 +4,7 @@
 
 #include "devices/api/probe_status.h"
 #include "devices/simulator/mandrel_emulator.h"
+#include "devices/simulator/simulated_boring_station.h"
 #include "devices/simulator/simulated_device.h"
 
 namespace tt::devices {
@@ -12,7 +13,9 @@ namespace tt::devices {
 /// in-memory wire, driven by the same protocol session as the serial plugin, so corrupt frames,
 /// silence and table uploads behave as on the machine. True deflections come from the
 /// injectable source (setDeflectionSource) or, stand-alone, the constant deflections set.
-/// Settings: rateHz, deflection1Mm, deflection2Mm, silenceTimeoutMs.
+/// Settings: rateHz, deflection1Mm, deflection2Mm, silenceTimeoutMs. It is also a simulated boring
+/// station (boringTruth(): the slender bar of paper 001 with its own mandrel, calibrated on the
+/// simulated stand), whose passes follow this mandrel's fault switches.
 class SimulatedProbe final : public SimulatedDevice, public ProbeSessionPorts {
 public:
     SimulatedProbe(const QVariantMap& settings, const DeviceContext& context);
@@ -24,6 +27,7 @@ public:
     TableUploadTarget* tableUploadTarget() override { return this; }
     QList<DeviceStatistic> statistics() const override { return sessionStatistics(); }
     void setDeflectionSource(std::function<std::array<double, 2>(double)> source) override;
+    BoringTruth* boringTruth() override { return &m_station; }
 
     /// The emulated microcontroller (tests inspect the stored table).
     const MandrelEmulator& emulator() const { return m_emulator; }
@@ -31,6 +35,7 @@ public:
 protected:
     void tick() override;
     void connected() override;
+    void stateChecked() override { m_station.follow(health()); }
 
 private:
     void exchange(double nowS);
@@ -38,6 +43,7 @@ private:
     MandrelEmulator m_emulator;
     std::function<std::array<double, 2>(double)> m_source;
     double m_lastTickS = 0.0;
+    SimulatedBoringStation m_station{core::BoringMethod::Probe, [this] { return health(); }};
 };
 
 }  // namespace tt::devices

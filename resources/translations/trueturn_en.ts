@@ -12,10 +12,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No data from the probe mandrel for more than half a second.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The probe mandrel sends raw codes without a linearisation table: load one on the Calibration page.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -57,6 +53,90 @@
     </message>
     <message>
         <source>The offset follows the measured deflection.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No data from the probe mandrel for more than %1 ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No valid deflection this cycle.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The device reports: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not answering yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC output is %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC does not take the offset.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tool has no stiffness: enter its section and overhang on the Tools page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The tool has no current-to-force gain k_p: calibrate it on the Calibration page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen source has no drive current read-out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen source has no probe mandrel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the mandrel&apos;s plane that lies along X.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The offset limit of %1 mm is outside %2 to %3 mm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The rate limit of %1 mm/s is outside %2 to %3 mm/s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The PLC cycle of %1 ms is outside %2 to %3 ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulated station runs at a PLC cycle of %1 ms, not %2 ms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The force estimator&apos;s settings are refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run is refused.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1318,6 +1398,10 @@
         <source>Larger corrections are refused.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>no data from %1 (silent)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1411,10 +1495,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No devices are configured.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The chosen source device is gone.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1424,10 +1504,6 @@
     </message>
     <message>
         <source>The chosen CNC output is gone.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1499,10 +1575,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Engine: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Bore diameter error from %1 mm in: %2 mm with compensation, %3 mm without</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1515,15 +1587,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Deflection measured</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Offset applied</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Real deflection (simulator)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -1611,14 +1675,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Station: current + dither</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Station: probe mandrel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1: probe mandrel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1689,6 +1745,26 @@
     <message>
         <source>k %1 N/mm%2 · k_p %3 N/A
 L/d %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen source has no simulated pass.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Real (simulator)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No devices are configured.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -12,10 +12,6 @@
         <translation>Оправка-датчик не отвечает или отключена.</translation>
     </message>
     <message>
-        <source>No data from the probe mandrel for more than half a second.</source>
-        <translation>От оправки-датчика нет данных более полсекунды.</translation>
-    </message>
-    <message>
         <source>The probe mandrel sends raw codes without a linearisation table: load one on the Calibration page.</source>
         <translation>Оправка-датчик передаёт необработанные коды АЦП без таблицы линеаризации: загрузите таблицу на странице «Калибровка».</translation>
     </message>
@@ -58,6 +54,90 @@
     <message>
         <source>The offset follows the measured deflection.</source>
         <translation>Смещение следует за измеренным прогибом.</translation>
+    </message>
+    <message>
+        <source>No data from the probe mandrel for more than %1 ms.</source>
+        <translation>От оправки-датчика нет данных более %1 мс.</translation>
+    </message>
+    <message>
+        <source>No valid deflection this cycle.</source>
+        <translation>В этом цикле нет достоверного прогиба.</translation>
+    </message>
+    <message>
+        <source>The device reports: %1</source>
+        <translation>Устройство сообщает: %1</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>готов</translation>
+    </message>
+    <message>
+        <source>not answering yet</source>
+        <translation>пока не отвечает</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>отключён</translation>
+    </message>
+    <message>
+        <source>in error</source>
+        <translation>в состоянии ошибки</translation>
+    </message>
+    <message>
+        <source>The CNC output is %1.</source>
+        <translation>Выход коррекции в ЧПУ: %1.</translation>
+    </message>
+    <message>
+        <source>The CNC does not take the offset.</source>
+        <translation>ЧПУ не принимает смещение.</translation>
+    </message>
+    <message>
+        <source>The tool has no stiffness: enter its section and overhang on the Tools page.</source>
+        <translation>У инструмента не задана жёсткость: введите его сечение и вылет на странице «Инструменты».</translation>
+    </message>
+    <message>
+        <source>The tool has no current-to-force gain k_p: calibrate it on the Calibration page.</source>
+        <translation>У инструмента нет коэффициента ток–сила k_p: откалибруйте его на странице «Калибровка».</translation>
+    </message>
+    <message>
+        <source>The chosen source has no drive current read-out.</source>
+        <translation>У выбранного источника нет датчика тока привода.</translation>
+    </message>
+    <message>
+        <source>The chosen source has no probe mandrel.</source>
+        <translation>У выбранного источника нет оправки-датчика.</translation>
+    </message>
+    <message>
+        <source>Choose the mandrel&apos;s plane that lies along X.</source>
+        <translation>Выберите плоскость оправки, лежащую вдоль X.</translation>
+    </message>
+    <message>
+        <source>The offset limit of %1 mm is outside %2 to %3 mm.</source>
+        <translation>Предел смещения %1 мм вне диапазона от %2 до %3 мм.</translation>
+    </message>
+    <message>
+        <source>The rate limit of %1 mm/s is outside %2 to %3 mm/s.</source>
+        <translation>Предел скорости %1 мм/с вне диапазона от %2 до %3 мм/с.</translation>
+    </message>
+    <message>
+        <source>The PLC cycle of %1 ms is outside %2 to %3 ms.</source>
+        <translation>Цикл ПЛК %1 мс вне диапазона от %2 до %3 мс.</translation>
+    </message>
+    <message>
+        <source>The simulated station runs at a PLC cycle of %1 ms, not %2 ms.</source>
+        <translation>Стенд-симулятор работает с циклом ПЛК %1 мс, а не %2 мс.</translation>
+    </message>
+    <message>
+        <source>The force estimator&apos;s settings are refused.</source>
+        <translation>Настройки оценки силы отклонены.</translation>
+    </message>
+    <message>
+        <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
+        <translation>В ЧПУ установлено смещение %1 мм — больше предела %2 мм: сначала обнулите смещение (инструмент выведен из отверстия).</translation>
+    </message>
+    <message>
+        <source>The run is refused.</source>
+        <translation>Запуск отклонён.</translation>
     </message>
 </context>
 <context>
@@ -1320,6 +1400,10 @@
         <source>Larger corrections are refused.</source>
         <translation>Большие коррекции отклоняются.</translation>
     </message>
+    <message>
+        <source>no data from %1 (silent)</source>
+        <translation>нет данных: %1 молчит</translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1414,10 +1498,6 @@
         <translation>Устройства изменены, поэтому компенсация остановлена. ЧПУ сохраняет текущее смещение.</translation>
     </message>
     <message>
-        <source>No devices are configured.</source>
-        <translation>Устройства не настроены.</translation>
-    </message>
-    <message>
         <source>The chosen source device is gone.</source>
         <translation>Выбранного устройства-источника больше нет.</translation>
     </message>
@@ -1428,10 +1508,6 @@
     <message>
         <source>The chosen CNC output is gone.</source>
         <translation>Выбранного выхода в ЧПУ больше нет.</translation>
-    </message>
-    <message>
-        <source>The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the offset first (tool out of the bore).</source>
-        <translation>В ЧПУ установлено смещение %1 мм — больше предела %2 мм: сначала обнулите смещение (инструмент выведен из отверстия).</translation>
     </message>
     <message>
         <source>Choose where the deflection comes from.</source>
@@ -1502,10 +1578,6 @@
         <translation>Остановлено. ЧПУ сохраняет текущее смещение. Выберите источник, инструмент и пределы, затем нажмите «Пуск».</translation>
     </message>
     <message>
-        <source>Engine: %1</source>
-        <translation>Компенсатор: %1</translation>
-    </message>
-    <message>
         <source>Bore diameter error from %1 mm in: %2 mm with compensation, %3 mm without</source>
         <translation>Погрешность диаметра отверстия начиная с %1 мм от входа: %2 мм с компенсацией, %3 мм без неё</translation>
     </message>
@@ -1518,16 +1590,8 @@
         <translation>Инструмент на %1 из %2 мм</translation>
     </message>
     <message>
-        <source>Deflection measured</source>
-        <translation>Измеренный прогиб</translation>
-    </message>
-    <message>
         <source>Offset applied</source>
-        <translation>Выданное смещение</translation>
-    </message>
-    <message>
-        <source>Real deflection (simulator)</source>
-        <translation>Истинный прогиб (симулятор)</translation>
+        <translation>Смещение</translation>
     </message>
     <message>
         <source>Without compensation</source>
@@ -1614,14 +1678,6 @@
         <translation>Контур</translation>
     </message>
     <message>
-        <source>Station: current + dither</source>
-        <translation>Стенд: ток + дизеринг</translation>
-    </message>
-    <message>
-        <source>Station: probe mandrel</source>
-        <translation>Стенд: оправка-датчик</translation>
-    </message>
-    <message>
         <source>%1: probe mandrel</source>
         <translation>%1: оправка-датчик</translation>
     </message>
@@ -1694,6 +1750,26 @@ L/d %4</translation>
     <message>
         <source> ms</source>
         <translation> мс</translation>
+    </message>
+    <message>
+        <source>The chosen source has no simulated pass.</source>
+        <translation>У выбранного источника нет симулированного прохода.</translation>
+    </message>
+    <message>
+        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
+        <translation>Симулированный проход не может начаться: его сценарий или калибровка оправки отклонены.</translation>
+    </message>
+    <message>
+        <source>Measured</source>
+        <translation>Измеренный</translation>
+    </message>
+    <message>
+        <source>Real (simulator)</source>
+        <translation>Истинный</translation>
+    </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation>Устройства не настроены.</translation>
     </message>
 </context>
 <context>

@@ -8,7 +8,7 @@
 #include "core/calibration/probe_linearisation.h"
 #include "core/control/deflection_compensator.h"
 #include "core/control/dither_force_estimator.h"
-#include "core/run/boring_run.h"
+#include "core/run/boring_simulation.h"
 #include "core/sim/boring/dither_profile.h"
 
 namespace {

@@ -3,7 +3,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -12,18 +11,16 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "config/boring_config.h"
 #include "core/storage/tool_store.h"
 #include "devices/api/device_manager.h"
-#include "ui/boring/device_boring_rig.h"
+#include "ui/boring/boring_link.h"
+#include "ui/boring/compensation_session.h"
 #include "ui/boring/hold_reason.h"
-#include "ui/boring/simulated_boring_station.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
 #include "ui/tools/database_connection.h"
@@ -32,15 +29,13 @@ namespace tt::ui {
 
 namespace {
 
-constexpr double kWindowS = 30.0;          ///< the offset chart shows the last 30 s
-constexpr double kBoreStepMm = 0.1;        ///< the bore chart keeps a point every 0.1 mm of the bore
 constexpr qint64 kRefreshMs = 100;         ///< plots are redrawn at most ten times a second
-const int kSpeeds[] = {1, 5, 10, 20, 50};  ///< simulated station: PLC cycles per timer tick
+const int kSpeeds[] = {1, 5, 10, 20, 50};  ///< a source's own pass: PLC cycles per PLC period
 constexpr int kDefaultSpeed = 2;
-const QString kSimCurrent = QStringLiteral("sim:current");
-const QString kSimProbe = QStringLiteral("sim:probe");
-const QString kStationTool = QStringLiteral("station");
-const QString kStationOutput = QStringLiteral("sim");
+/// The CNC output entry of a source's own simulated pass (its PLC), offered when the source has one.
+const QString kOwnPass = QStringLiteral("station");
+/// The tool entry of a source's own simulated pass (the scenario's bar).
+const QString kPassTool = QStringLiteral("station");
 
 const QColor kMeasured(21, 101, 192);
 const QColor kOffset(46, 125, 50);
@@ -52,16 +47,12 @@ QString mm(double v, int decimals = 3) {
     return QString::number(v, 'f', decimals);
 }
 
-double nan() {
-    return std::numeric_limits<double>::quiet_NaN();
-}
-
 }  // namespace
 
 BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
     : QWidget(parent),
       m_context(context),
-      m_timer(new QTimer(this)),
+      m_session(new CompensationSession(this)),
       m_setup(new QGroupBox(this)),
       m_form(new QFormLayout),
       m_sourceLabel(new QLabel(this)),
@@ -104,36 +95,8 @@ BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
         m_scenarioProblem = QString::fromStdString(e.what());
     }
     buildLayout();
-    m_timer->setTimerType(Qt::PreciseTimer);
     m_sinceRefresh.start();
-    connect(m_timer, &QTimer::timeout, this, [this] {
-        const bool simulated = station() != nullptr;
-        for (int i = 0, n = simulated ? speed() : 1; i < n && m_rig; ++i) {
-            record(m_rig->cycle());
-            if (m_rig->finished()) finishPass();
-        }
-        if (!m_rig || m_sinceRefresh.elapsed() >= kRefreshMs) {
-            m_sinceRefresh.restart();
-            showWords();
-            refreshPlots();
-        }
-    });
-    connect(m_start, &QPushButton::clicked, this, &BoringPanel::start);
-    connect(m_stop, &QPushButton::clicked, this, &BoringPanel::stop);
-    connect(m_zero, &QPushButton::clicked, this, &BoringPanel::zeroOffset);
-    connect(m_source, &QComboBox::currentIndexChanged, this, [this] {
-        rebuildTools();
-        rebuildOutputs();
-        retranslate();
-    });
-    connect(m_tool, &QComboBox::currentIndexChanged, this, [this] { retranslate(); });
-    connect(m_output, &QComboBox::currentIndexChanged, this, [this] { updateEnabled(); });
-    connect(m_segment, &QComboBox::currentIndexChanged, this, [this] {
-        if (m_rig) m_rig->setSegment(static_cast<core::SegmentKind>(m_segment->currentData().toInt()));
-    });
-    connect(m_silent, &QCheckBox::toggled, this, [this](bool on) {
-        if (SimulatedBoringStation* s = station()) s->setSourceSilent(on);
-    });
+    connectControls();
     loadSettings();
     watchDevices();
     rebuildChoices();
@@ -141,7 +104,35 @@ BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
 }
 
 BoringPanel::~BoringPanel() {
-    m_timer->stop();
+    // No signal from a panel being destroyed: the session stops its thread, the link its relays.
+    m_session->stop();
+    if (m_link) m_link->disconnectDevices();
+}
+
+void BoringPanel::connectControls() {
+    connect(m_session, &CompensationSession::cycles, this, &BoringPanel::onCycles);
+    connect(m_session, &CompensationSession::passFinished, this, &BoringPanel::finishPass);
+    connect(m_start, &QPushButton::clicked, this, &BoringPanel::start);
+    connect(m_stop, &QPushButton::clicked, this, &BoringPanel::stop);
+    connect(m_zero, &QPushButton::clicked, this, &BoringPanel::zeroOffset);
+    connect(m_source, &QComboBox::currentIndexChanged, this, [this] {
+        rebuildOutputs();
+        rebuildTools();
+        syncFaultSwitch();
+        retranslate();
+    });
+    connect(m_tool, &QComboBox::currentIndexChanged, this, [this] { retranslate(); });
+    connect(m_output, &QComboBox::currentIndexChanged, this, [this] {
+        rebuildTools();
+        retranslate();
+    });
+    connect(m_segment, &QComboBox::currentIndexChanged, this, [this] {
+        if (m_running) m_session->setSegment(static_cast<core::SegmentKind>(m_segment->currentData().toInt()));
+    });
+    connect(m_silent, &QCheckBox::toggled, this, [this](bool on) {
+        // The source device's own fault switch, as on the Devices page.
+        if (devices::Device* d = sourceDevice(); d && d->faultSwitches()) d->faultSwitches()->silent = on;
+    });
 }
 
 void BoringPanel::buildLayout() {
@@ -265,12 +256,13 @@ void BoringPanel::buildLayout() {
 
 void BoringPanel::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
-    if (m_context.devices != m_devices) {
+    if (m_context.devices != m_devices && !m_running) {
         watchDevices();
         rebuildChoices();
     }
-    if (!m_rig) {
+    if (!m_running) {
         rebuildTools();  // the tool table may have changed on the Tools page
+        syncFaultSwitch();
         retranslate();
     }
 }
@@ -278,9 +270,11 @@ void BoringPanel::showEvent(QShowEvent* event) {
 void BoringPanel::watchDevices() {
     if (m_devices) disconnect(m_devices, nullptr, this, nullptr);
     m_devices = m_context.devices;
+    delete m_link;
+    m_link = new BoringLink(m_devices, this);
     if (!m_devices) return;
     connect(m_devices, &devices::DeviceManager::devicesChanged, this, [this] {
-        if (m_rig && !station()) {
+        if (m_running) {
             // The run's devices may be gone or replaced: stop before anything touches them.
             stop();
             showProblem(
@@ -288,6 +282,11 @@ void BoringPanel::watchDevices() {
                    "holds."));
         }
         rebuildChoices();
+    });
+    // The source's fault switch may be set on the Devices page too: the check box follows it.
+    connect(m_devices, &devices::DeviceManager::deviceChanged, this, [this](const QString& id) {
+        if (const std::optional<SourceChoice> source = currentSource(); source && source->deviceId == id)
+            syncFaultSwitch();
     });
 }
 
@@ -300,10 +299,6 @@ void BoringPanel::rebuildChoices() {
     {
         const QSignalBlocker block(m_source);
         m_source->clear();
-        if (m_scenarioProblem.isEmpty()) {
-            m_source->addItem(QString(), kSimCurrent);
-            m_source->addItem(QString(), kSimProbe);
-        }
         if (m_devices) {
             for (const QString& id : m_devices->devicesOfKind(devices::DeviceKind::DriveCurrent))
                 m_source->addItem(QString(), QStringLiteral("dev:%1:current").arg(id));
@@ -313,8 +308,9 @@ void BoringPanel::rebuildChoices() {
         const int at = m_source->findData(previous);
         m_source->setCurrentIndex(at >= 0 ? at : 0);
     }
-    rebuildTools();
     rebuildOutputs();
+    rebuildTools();
+    syncFaultSwitch();
     retranslate();
 }
 
@@ -329,10 +325,10 @@ void BoringPanel::rebuildTools() {
         m_toolProblem = QString::fromStdString(e.what());
     }
     const QString previous = m_tool->currentData().toString();
-    const std::optional<SourceChoice> source = currentSource();
     const QSignalBlocker block(m_tool);
     m_tool->clear();
-    if (source && source->simulated) m_tool->addItem(QString(), kStationTool);
+    // On a source's own simulated pass the pass's boring bar comes first.
+    if (onSourcesPass()) m_tool->addItem(QString(), kPassTool);
     for (const core::ToolRecord& t : m_tools)
         m_tool->addItem(QString::fromStdString(t.id + " — " + t.name),
                         QStringLiteral("tool:%1").arg(QString::fromStdString(t.id)));
@@ -342,35 +338,44 @@ void BoringPanel::rebuildTools() {
 
 void BoringPanel::rebuildOutputs() {
     const QString previous = m_output->currentData().toString();
-    const std::optional<SourceChoice> source = currentSource();
+    devices::Device* source = sourceDevice();
     const QSignalBlocker block(m_output);
     m_output->clear();
-    if (source && source->simulated) {
-        m_output->addItem(QString(), kStationOutput);
-    } else if (m_devices) {
+    // A source with a simulated pass of its own offers the pass's PLC, first.
+    if (source && source->boringTruth() && m_scenarioProblem.isEmpty()) m_output->addItem(QString(), kOwnPass);
+    if (m_devices)
         for (const QString& id : m_devices->devicesOfKind(devices::DeviceKind::CorrectionOutput))
             if (const devices::DeviceEntry* e = m_devices->entry(id))
                 m_output->addItem(e->name, QStringLiteral("dev:%1").arg(id));
-    }
     const int at = m_output->findData(previous);
     m_output->setCurrentIndex(at >= 0 ? at : 0);
 }
 
+void BoringPanel::syncFaultSwitch() {
+    devices::Device* source = sourceDevice();
+    const devices::FaultSwitches* faults = source ? source->faultSwitches() : nullptr;
+    const QSignalBlocker block(m_silent);
+    m_silent->setChecked(faults && faults->silent);
+}
+
 std::optional<BoringPanel::SourceChoice> BoringPanel::currentSource() const {
     const QString key = m_source->currentData().toString();
-    if (key.isEmpty()) return std::nullopt;
-    SourceChoice c;
-    c.key = key;
-    if (key == kSimCurrent || key == kSimProbe) {
-        c.simulated = true;
-        c.source = key == kSimCurrent ? BoringSource::Current : BoringSource::Probe;
-        return c;
-    }
     const QStringList parts = key.split(QLatin1Char(':'));
     if (parts.size() != 3) return std::nullopt;
+    SourceChoice c;
+    c.key = key;
     c.deviceId = parts[1];
-    c.source = parts[2] == QStringLiteral("probe") ? BoringSource::Probe : BoringSource::Current;
+    c.method = parts[2] == QStringLiteral("probe") ? core::BoringMethod::Probe : core::BoringMethod::Current;
     return c;
+}
+
+devices::Device* BoringPanel::sourceDevice() const {
+    const std::optional<SourceChoice> source = currentSource();
+    return source && m_devices ? m_devices->device(source->deviceId) : nullptr;
+}
+
+bool BoringPanel::onSourcesPass() const {
+    return m_output->currentData().toString() == kOwnPass;
 }
 
 bool BoringPanel::selectSource(const QString& key) {
@@ -380,60 +385,71 @@ bool BoringPanel::selectSource(const QString& key) {
     return true;
 }
 
+bool BoringPanel::selectOutput(const QString& key) {
+    const int at = m_output->findData(key);
+    if (at < 0) return false;
+    m_output->setCurrentIndex(at);
+    return true;
+}
+
 std::optional<core::ToolRecord> BoringPanel::currentTool() const {
     const QString key = m_tool->currentData().toString();
-    if (key == kStationTool && m_scenarioProblem.isEmpty()) return m_scenario.tool;
+    if (key == kPassTool && m_scenarioProblem.isEmpty()) return m_scenario.tool;
     for (const core::ToolRecord& t : m_tools)
         if (QStringLiteral("tool:%1").arg(QString::fromStdString(t.id)) == key) return t;
     return std::nullopt;
 }
 
-SimulatedBoringStation* BoringPanel::station() const {
-    return dynamic_cast<SimulatedBoringStation*>(m_rig.get());
+core::BoringRunChoices BoringPanel::choicesFromForm(const SourceChoice& source, const core::ToolRecord& tool) const {
+    core::BoringRunChoices c;
+    c.method = source.method;
+    c.plane = m_plane->currentData().toInt();
+    c.stiffnessNPerMm = core::effectiveStiffnessNPerMm(tool);
+    c.currentToForceNPerA = tool.currentToForceGainNPerA;
+    c.limits.maxOffsetMm = m_maxOffset->value();
+    c.limits.maxRateMmPerS = m_maxRate->value();
+    c.plcCycleS = m_plcCycle->value() / 1000.0;
+    // The estimator's thresholds of the preset (docs/boring-compensation.md), the engine's
+    // defaults when it cannot be read.
+    if (m_scenarioProblem.isEmpty()) c.estimator = m_scenario.estimator;
+    return c;
 }
 
-BoringRunSettings BoringPanel::settingsFromForm() const {
-    BoringRunSettings s;
-    const std::optional<SourceChoice> source = currentSource();
-    s.source = source ? source->source : BoringSource::Current;
-    s.plane = m_plane->currentData().toInt();
-    if (const std::optional<core::ToolRecord> tool = currentTool()) {
-        s.stiffnessNPerMm = core::effectiveStiffnessNPerMm(*tool);
-        s.currentToForceNPerA = tool->currentToForceGainNPerA;
+std::shared_ptr<core::BoringStation> BoringPanel::makeStation(const SourceChoice& source,
+                                                              core::BoringRunChoices& choices) {
+    devices::Device* device = sourceDevice();
+    if (!device) throw std::invalid_argument(tr("The chosen source device is gone.").toStdString());
+    const QString outputKey = m_output->currentData().toString();
+    if (outputKey == kOwnPass) {
+        devices::BoringTruth* truth = device->boringTruth();
+        if (!truth) throw std::invalid_argument(tr("The chosen source has no simulated pass.").toStdString());
+        core::BoringScenario scenario = m_scenario;
+        scenario.plcCycleS = choices.plcCycleS;
+        choices.plane = 0;           // the pass's mandrel is calibrated with plane 1 along X
+        choices.heldOffsetMm = 0.0;  // a new pass starts with the offset at 0
+        try {
+            return truth->beginPass(scenario);
+        } catch (const std::exception&) {
+            throw std::invalid_argument(
+                tr("The simulated pass cannot begin: its scenario or its mandrel's calibration is refused.")
+                    .toStdString());
+        }
     }
-    s.limits.maxOffsetMm = m_maxOffset->value();
-    s.limits.maxRateMmPerS = m_maxRate->value();
-    s.plcCycleS = m_plcCycle->value() / 1000.0;
-    // The simulated station's estimator thresholds come with its preset; on a machine the
-    // engine's defaults (docs/boring-compensation.md) apply.
-    if (source && source->simulated) s.estimator = m_scenario.estimator;
-    return s;
-}
-
-std::unique_ptr<BoringRig> BoringPanel::makeRig(const SourceChoice& source, const BoringRunSettings& settings,
-                                                QString& outputKey) {
-    outputKey = m_output->currentData().toString();
-    if (source.simulated) return std::make_unique<SimulatedBoringStation>(m_scenario, settings);
-    if (!m_devices) throw std::invalid_argument(tr("No devices are configured.").toStdString());
-    devices::Device* sourceDevice = m_devices->device(source.deviceId);
-    if (!sourceDevice) throw std::invalid_argument(tr("The chosen source device is gone.").toStdString());
     if (outputKey.isEmpty())
         throw std::invalid_argument(
             tr("No CNC output for the dynamic X offset: add one on the Devices page.").toStdString());
-    devices::Device* outputDevice = m_devices->device(outputKey.mid(4));
-    if (!outputDevice) throw std::invalid_argument(tr("The chosen CNC output is gone.").toStdString());
-    const double held = m_heldOffsetMm.value(outputKey, 0.0);
-    if (std::abs(held) > settings.limits.maxOffsetMm)
-        throw std::invalid_argument(tr("The CNC holds an offset of %1 mm, more than the limit of %2 mm: zero the "
-                                       "offset first (tool out of the bore).")
-                                        .arg(mm(held), mm(settings.limits.maxOffsetMm))
-                                        .toStdString());
-    m_runDevices = {source.deviceId, outputKey.mid(4)};
-    return std::make_unique<DeviceBoringRig>(*sourceDevice, *outputDevice, m_devices->clock(), settings, held);
+    devices::Device* output = m_devices ? m_devices->device(outputKey.mid(4)) : nullptr;
+    if (!output || !output->correctionOutput())
+        throw std::invalid_argument(tr("The chosen CNC output is gone.").toStdString());
+    choices.heldOffsetMm = m_heldOffsetMm.value(outputKey, 0.0);
+    std::shared_ptr<core::BoringStation> station =
+        m_link->connectDevices(source.deviceId, source.method, outputKey.mid(4), choices.plcCycleS);
+    if (!station) throw std::invalid_argument(tr("No devices are configured.").toStdString());
+    return station;
 }
 
 bool BoringPanel::start() {
-    if (m_rig) return false;
+    if (m_running) return false;
     m_problem.clear();
     m_result.clear();
     const std::optional<SourceChoice> source = currentSource();
@@ -441,33 +457,38 @@ bool BoringPanel::start() {
         showProblem(tr("Choose where the deflection comes from."));
         return false;
     }
-    if (!currentTool()) {
+    const std::optional<core::ToolRecord> tool = currentTool();
+    if (!tool) {
         showProblem(m_tools.empty() ? tr("No tool: add the boring bar to the tool table on the Tools page.")
                                     : tr("Choose the tool."));
         return false;
     }
-    const BoringRunSettings settings = settingsFromForm();
+    core::BoringRunChoices choices = choicesFromForm(*source, *tool);
+    std::shared_ptr<core::BoringStation> station;
+    std::unique_ptr<core::BoringRun> run;
     try {
-        m_rig = makeRig(*source, settings, m_runOutputKey);
-    } catch (const std::exception& e) {
-        m_rig.reset();
+        station = makeStation(*source, choices);
+        run = core::buildBoringRun(choices, *station);
+    } catch (const core::BoringRunRefused& e) {
+        m_link->disconnectDevices();
+        showProblem(tr("Cannot start: %1").arg(describeRefusal(e)));
+        return false;
+    } catch (const std::invalid_argument& e) {
+        m_link->disconnectDevices();
         showProblem(tr("Cannot start: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
-    m_runSource = settings.source;
-    m_rig->setSegment(static_cast<core::SegmentKind>(m_segment->currentData().toInt()));
-    if (SimulatedBoringStation* s = station()) s->setSourceSilent(m_silent->isChecked());
-    m_stats = BoringRunStats{};
-    m_stats.offsetMm = m_rig->offsetMm();
-    for (auto* v : {&m_timeS, &m_measuredMm, &m_offsetMm, &m_trueMm, &m_zMm, &m_errorMm, &m_twinErrorMm})
-        v->clear();
-    m_lastBoreZ = -1e9;
+    run->setSegment(static_cast<core::SegmentKind>(m_segment->currentData().toInt()));
+    m_runMethod = choices.method;
+    m_runOutputKey = m_output->currentData().toString();
+    m_trace.reset(run->offsetMm(), m_scenario.cut.boreLengthMm, m_scenario.cut.gaugeMarginMm);
     m_headline = tr("Starting");
     m_reason.clear();
     m_detail.clear();
     m_holding = false;
+    m_running = true;
     saveSettings();
-    m_timer->start(static_cast<int>(std::lround(m_rig->plcCycleS() * 1000.0)));
+    m_session->start(std::move(station), std::move(run), speed());
     updateEnabled();
     showWords();
     refreshPlots();
@@ -476,11 +497,16 @@ bool BoringPanel::start() {
 }
 
 void BoringPanel::stop() {
-    if (!m_rig) return;
-    m_timer->stop();
-    m_heldOffsetMm[m_runOutputKey] = station() ? 0.0 : m_rig->offsetMm();
-    m_rig.reset();
-    m_runDevices.clear();
+    if (!m_running) return;
+    m_session->stop();
+    if (m_link->isConnected()) {
+        m_link->disconnectDevices();
+        if (const std::optional<double> held = m_link->confirmedOffsetMm()) {
+            m_heldOffsetMm[m_runOutputKey] = *held;
+            m_trace.setOffsetMm(*held);
+        }
+    }
+    m_running = false;
     m_headline = tr("Stopped");
     m_holding = false;
     updateEnabled();
@@ -490,7 +516,7 @@ void BoringPanel::stop() {
 }
 
 bool BoringPanel::zeroOffset() {
-    if (m_rig || !m_devices) return false;
+    if (m_running || !m_devices) return false;
     const QString key = m_output->currentData().toString();
     const double held = m_heldOffsetMm.value(key, 0.0);
     devices::Device* device = key.startsWith(QStringLiteral("dev:")) ? m_devices->device(key.mid(4)) : nullptr;
@@ -507,75 +533,39 @@ bool BoringPanel::zeroOffset() {
         return false;
     }
     m_heldOffsetMm[key] = 0.0;
-    m_stats.offsetMm = 0.0;
+    m_trace.setOffsetMm(0.0);
     m_problem.clear();
     updateEnabled();
     showWords();
     return true;
 }
 
-void BoringPanel::runCycles(int cycles) {
-    for (int i = 0; i < cycles && m_rig; ++i) {
-        record(m_rig->cycle());
-        if (m_rig->finished()) finishPass();
+void BoringPanel::onCycles(const QVector<core::BoringRunCycle>& batch) {
+    if (!m_running) return;
+    for (const core::BoringRunCycle& cycle : batch) {
+        bool holding = false;
+        if (cycle.compensation) {
+            const CycleWords words = describeCycle(*cycle.compensation, m_runMethod);
+            m_headline = words.headline;
+            m_reason = words.reason;
+            m_detail = words.holding ? words.detail : QString();
+            m_holding = holding = words.holding;
+        }
+        m_trace.record(cycle, holding);
     }
-    showWords();
-    refreshPlots();
-}
-
-void BoringPanel::record(const BoringCycleView& view) {
-    const core::CompensationCycle& c = view.cycle;
-    const CycleWords words = describeCycle(c, m_runSource);
-    m_headline = words.headline;
-    m_reason = words.reason;
-    m_detail = words.holding ? words.detail : QString();
-    m_holding = words.holding;
-    const double previous = m_stats.offsetMm;
-    ++m_stats.cycles;
-    if (words.holding) ++m_stats.holdingCycles;
-    if (c.sent) ++m_stats.sentCycles;
-    m_stats.offsetMm = c.step.offsetMm;
-    m_stats.largestOffsetMm = std::max(m_stats.largestOffsetMm, std::abs(c.step.offsetMm));
-    m_stats.largestStepMm = std::max(m_stats.largestStepMm, std::abs(c.step.offsetMm - previous));
-    m_stats.deflectionMm = c.reading.deflectionMm;
-    m_stats.forceN = c.reading.forceN;
-
-    if (m_timeS.size() > 1 && m_timeS.back() - m_timeS.front() > kWindowS) {
-        const auto drop = static_cast<std::ptrdiff_t>(m_timeS.size() / 10 + 1);
-        for (auto* v : {&m_timeS, &m_measuredMm, &m_offsetMm, &m_trueMm})
-            v->erase(v->begin(), v->begin() + std::min<std::ptrdiff_t>(drop, static_cast<std::ptrdiff_t>(v->size())));
-    }
-    if (m_stats.cycles == 1) m_runStartS = c.timeS;
-    m_timeS.push_back(c.timeS);
-    m_measuredMm.push_back(c.reading.deflectionMm.value_or(nan()));
-    m_offsetMm.push_back(c.step.offsetMm);
-    m_trueMm.push_back(view.truth ? view.truth->deflectionMm : nan());
-
-    if (!view.truth) return;
-    const StationTruth& t = *view.truth;
-    m_stats.zMm = t.zMm;
-    if (!t.cutting) return;
-    if (t.zMm - m_lastBoreZ >= kBoreStepMm) {
-        m_lastBoreZ = t.zMm;
-        m_zMm.push_back(t.zMm);
-        m_errorMm.push_back(t.diameterErrorMm);
-        m_twinErrorMm.push_back(t.uncompensatedErrorMm);
-    }
-    // Gauged as `trueturn boring` does: from the margin inside each end of the bore.
-    const double margin = m_scenario.cut.gaugeMarginMm;
-    if (t.zMm >= margin && t.zMm <= m_scenario.cut.boreLengthMm - margin) {
-        m_stats.boreErrorMaxMm = std::max(m_stats.boreErrorMaxMm.value_or(0.0), std::abs(t.diameterErrorMm));
-        m_stats.uncompensatedMaxMm =
-            std::max(m_stats.uncompensatedMaxMm.value_or(0.0), std::abs(t.uncompensatedErrorMm));
+    if (m_sinceRefresh.elapsed() >= kRefreshMs) {
+        m_sinceRefresh.restart();
+        showWords();
+        refreshPlots();
     }
 }
 
 void BoringPanel::finishPass() {
-    if (m_stats.boreErrorMaxMm && m_stats.uncompensatedMaxMm && *m_stats.uncompensatedMaxMm > 0.0)
-        m_result =
-            tr("The bore is finished: largest diameter error %1 mm with compensation, %2 mm without (%3 %).")
-                .arg(mm(*m_stats.boreErrorMaxMm), mm(*m_stats.uncompensatedMaxMm))
-                .arg(QString::number(100.0 * (*m_stats.boreErrorMaxMm / *m_stats.uncompensatedMaxMm - 1.0), 'f', 0));
+    const BoringRunStats& s = m_trace.stats();
+    if (s.boreErrorMaxMm && s.uncompensatedMaxMm && *s.uncompensatedMaxMm > 0.0)
+        m_result = tr("The bore is finished: largest diameter error %1 mm with compensation, %2 mm without (%3 %).")
+                       .arg(mm(*s.boreErrorMaxMm), mm(*s.uncompensatedMaxMm))
+                       .arg(QString::number(100.0 * (*s.boreErrorMaxMm / *s.uncompensatedMaxMm - 1.0), 'f', 0));
     stop();
 }
 
@@ -592,8 +582,13 @@ QString BoringPanel::reason() const {
     return m_reasonLabel->text();
 }
 
+QString BoringPanel::detail() const {
+    return m_detailLabel->text();
+}
+
 void BoringPanel::showWords() {
-    const bool run = m_rig != nullptr;
+    const bool run = m_running;
+    const BoringRunStats& s = m_trace.stats();
     const QString tone = !run        ? QStringLiteral("#6b7785")
                          : m_holding ? QStringLiteral("#b26a00")
                                      : QStringLiteral("#2e7d32");
@@ -601,11 +596,9 @@ void BoringPanel::showWords() {
     m_state->setStyleSheet(QStringLiteral("font-size: 16pt; font-weight: bold; color: white; background: %1; "
                                           "border-radius: 6px; padding: 6px 14px;")
                                .arg(tone));
-    m_offsetValue->setText(tr("Offset %1 mm").arg(mm(m_stats.offsetMm)));
-    m_deflectionValue->setText(m_stats.deflectionMm ? tr("Deflection %1 mm").arg(mm(*m_stats.deflectionMm))
-                                                    : tr("Deflection —"));
-    m_forceValue->setText(m_stats.forceN ? tr("Force %1 N").arg(QString::number(*m_stats.forceN, 'f', 0))
-                                         : tr("Force —"));
+    m_offsetValue->setText(tr("Offset %1 mm").arg(mm(s.offsetMm)));
+    m_deflectionValue->setText(s.deflectionMm ? tr("Deflection %1 mm").arg(mm(*s.deflectionMm)) : tr("Deflection —"));
+    m_forceValue->setText(s.forceN ? tr("Force %1 N").arg(QString::number(*s.forceN, 'f', 0)) : tr("Force —"));
     QString reason;
     QString colour = QStringLiteral("#1f2a36");
     if (!m_problem.isEmpty()) {
@@ -626,51 +619,50 @@ void BoringPanel::showWords() {
     }
     m_reasonLabel->setText(reason);
     m_reasonLabel->setStyleSheet(QStringLiteral("font-size: 14pt; font-weight: bold; color: %1;").arg(colour));
-    m_detailLabel->setText(
-        run && m_holding && !m_detail.isEmpty() && m_detail != m_reason ? tr("Engine: %1").arg(m_detail) : QString());
+    m_detailLabel->setText(run && m_holding ? m_detail : QString());
     m_detailLabel->setVisible(!m_detailLabel->text().isEmpty());
-    const std::optional<SourceChoice> source = currentSource();
-    const bool simulated = source && source->simulated;
-    m_boreValue->setVisible(simulated);
-    m_boreChart->setVisible(simulated);
-    m_progress->setVisible(simulated);
-    if (simulated) {
-        m_boreValue->setText(m_stats.boreErrorMaxMm && m_stats.uncompensatedMaxMm
+    const bool pass = onSourcesPass();
+    m_boreValue->setVisible(pass);
+    m_boreChart->setVisible(pass);
+    m_progress->setVisible(pass);
+    if (pass) {
+        const QString margin = QString::number(m_scenario.cut.gaugeMarginMm, 'f', 0);
+        m_boreValue->setText(s.boreErrorMaxMm && s.uncompensatedMaxMm
                                  ? tr("Bore diameter error from %1 mm in: %2 mm with compensation, %3 mm without")
-                                       .arg(QString::number(m_scenario.cut.gaugeMarginMm, 'f', 0),
-                                            mm(*m_stats.boreErrorMaxMm), mm(*m_stats.uncompensatedMaxMm))
-                                 : tr("Bore diameter error: shown from %1 mm into the bore")
-                                       .arg(QString::number(m_scenario.cut.gaugeMarginMm, 'f', 0)));
+                                       .arg(margin, mm(*s.boreErrorMaxMm), mm(*s.uncompensatedMaxMm))
+                                 : tr("Bore diameter error: shown from %1 mm into the bore").arg(margin));
         const double length = m_scenario.cut.boreLengthMm;
-        m_progress->setValue(static_cast<int>(std::lround(1000.0 * std::clamp(m_stats.zMm / length, 0.0, 1.0))));
-        m_progress->setFormat(
-            tr("Tool at %1 of %2 mm")
-                .arg(QString::number(std::max(0.0, m_stats.zMm), 'f', 1), QString::number(length, 'f', 0)));
+        m_progress->setValue(static_cast<int>(std::lround(1000.0 * std::clamp(s.zMm / length, 0.0, 1.0))));
+        m_progress->setFormat(tr("Tool at %1 of %2 mm")
+                                  .arg(QString::number(std::max(0.0, s.zMm), 'f', 1), QString::number(length, 'f', 0)));
     }
 }
 
 void BoringPanel::refreshPlots() {
-    if (m_timeS.empty()) {
+    const std::vector<double>& time = m_trace.timeS();
+    if (time.empty()) {
         m_chart->clear();
         m_boreChart->clear();
     } else {
-        const double t0 = m_runStartS;  // seconds since the run started
-        std::vector<double> t(m_timeS.size());
-        std::transform(m_timeS.begin(), m_timeS.end(), t.begin(), [t0](double v) { return v - t0; });
-        m_chart->setSeries(QStringLiteral("measured"), tr("Deflection measured"), t, m_measuredMm, kMeasured);
-        m_chart->setSeries(QStringLiteral("offset"), tr("Offset applied"), t, m_offsetMm, kOffset, Chart::Style::Steps);
-        if (station() || std::any_of(m_trueMm.begin(), m_trueMm.end(), [](double v) { return std::isfinite(v); }))
-            m_chart->setSeries(QStringLiteral("true"), tr("Real deflection (simulator)"), t, m_trueMm, kTrue);
+        const double t0 = m_trace.startS();  // seconds since the run started
+        std::vector<double> t(time.size());
+        std::transform(time.begin(), time.end(), t.begin(), [t0](double v) { return v - t0; });
+        m_chart->setSeries(QStringLiteral("measured"), tr("Measured"), t, m_trace.measuredMm(), kMeasured);
+        m_chart->setSeries(QStringLiteral("offset"), tr("Offset applied"), t, m_trace.offsetMm(), kOffset,
+                           Chart::Style::Steps);
+        if (m_trace.hasTruth())
+            m_chart->setSeries(QStringLiteral("true"), tr("Real (simulator)"), t, m_trace.trueMm(), kTrue);
         else
             m_chart->removeSeries(QStringLiteral("true"));
         m_chart->rescale();
-        m_chart->setXRange(std::max(0.0, t.back() - kWindowS), std::max(t.back(), 5.0));
-        if (!m_zMm.empty()) {
-            m_boreChart->setSeries(QStringLiteral("without"), tr("Without compensation"), m_zMm, m_twinErrorMm,
+        m_chart->setXRange(std::max(0.0, t.back() - 30.0), std::max(t.back(), 5.0));
+        const std::vector<double>& z = m_trace.boreZMm();
+        if (!z.empty()) {
+            m_boreChart->setSeries(QStringLiteral("without"), tr("Without compensation"), z, m_trace.boreTwinErrorMm(),
                                    kWithout);
-            m_boreChart->setSeries(QStringLiteral("with"), tr("With compensation"), m_zMm, m_errorMm, kWith);
+            m_boreChart->setSeries(QStringLiteral("with"), tr("With compensation"), z, m_trace.boreErrorMm(), kWith);
             m_boreChart->rescale();
-            m_boreChart->setXRange(0.0, std::max(m_zMm.back(), 10.0));
+            m_boreChart->setXRange(0.0, std::max(z.back(), 10.0));
         }
     }
     m_chart->refresh();
@@ -678,22 +670,23 @@ void BoringPanel::refreshPlots() {
 }
 
 void BoringPanel::updateEnabled() {
-    const bool run = m_rig != nullptr;
+    const bool run = m_running;
     const std::optional<SourceChoice> source = currentSource();
-    const bool simulated = source && source->simulated;
-    const bool probe = source && source->source == BoringSource::Probe;
+    devices::Device* device = sourceDevice();
+    const bool pass = onSourcesPass();
+    const bool probe = source && source->method == core::BoringMethod::Probe;
     for (QWidget* w : std::initializer_list<QWidget*>{m_source, m_tool, m_output, m_maxOffset, m_maxRate, m_plcCycle,
                                                       m_plane, m_speed})
         w->setEnabled(!run);
     m_start->setEnabled(!run && source.has_value());
     m_stop->setEnabled(run);
     const QString outputKey = m_output->currentData().toString();
-    m_zero->setEnabled(!run && !simulated && std::abs(m_heldOffsetMm.value(outputKey, 0.0)) > 0.0);
-    m_form->setRowVisible(m_plane, probe && !simulated);
+    m_zero->setEnabled(!run && !pass && std::abs(m_heldOffsetMm.value(outputKey, 0.0)) > 0.0);
+    m_form->setRowVisible(m_plane, probe && !pass);
     m_form->setRowVisible(m_segment, !probe);
-    m_form->setRowVisible(m_speed, simulated);
-    m_form->setRowVisible(m_silent, simulated);
-    m_zero->setVisible(!simulated);
+    m_form->setRowVisible(m_speed, pass);
+    m_form->setRowVisible(m_silent, device && device->faultSwitches());
+    m_zero->setVisible(!pass);
 }
 
 void BoringPanel::loadSettings() {
@@ -752,25 +745,17 @@ void BoringPanel::retranslate() {
     m_segment->setItemText(1, tr("Taper"));
     m_segment->setItemText(2, tr("Contour"));
     for (int i = 0; i < m_source->count(); ++i) {
-        const QString key = m_source->itemData(i).toString();
-        QString text;
-        if (key == kSimCurrent) {
-            text = tr("Station: current + dither");
-        } else if (key == kSimProbe) {
-            text = tr("Station: probe mandrel");
-        } else {
-            const QStringList parts = key.split(QLatin1Char(':'));
-            const devices::DeviceEntry* e = m_devices && parts.size() == 3 ? m_devices->entry(parts[1]) : nullptr;
-            const QString name = e ? e->name : key;
-            text = parts.value(2) == QStringLiteral("probe") ? tr("%1: probe mandrel").arg(name)
-                                                             : tr("%1: current + dither").arg(name);
-        }
-        m_source->setItemText(i, text);
+        const QStringList parts = m_source->itemData(i).toString().split(QLatin1Char(':'));
+        const devices::DeviceEntry* e = m_devices && parts.size() == 3 ? m_devices->entry(parts[1]) : nullptr;
+        const QString name = e ? e->name : parts.value(1);
+        m_source->setItemText(i, parts.value(2) == QStringLiteral("probe") ? tr("%1: probe mandrel").arg(name)
+                                                                           : tr("%1: current + dither").arg(name));
     }
-    const int station = m_tool->findData(kStationTool);
-    if (station >= 0) m_tool->setItemText(station, tr("Station: %1").arg(QString::fromStdString(m_scenario.tool.name)));
-    const int stationOutput = m_output->findData(kStationOutput);
-    if (stationOutput >= 0) m_output->setItemText(stationOutput, tr("Station's PLC"));
+    const int passTool = m_tool->findData(kPassTool);
+    if (passTool >= 0)
+        m_tool->setItemText(passTool, tr("Station: %1").arg(QString::fromStdString(m_scenario.tool.name)));
+    const int passOutput = m_output->findData(kOwnPass);
+    if (passOutput >= 0) m_output->setItemText(passOutput, tr("Station's PLC"));
     if (const std::optional<core::ToolRecord> tool = currentTool()) {
         const double k = core::effectiveStiffnessNPerMm(*tool);
         m_toolInfo->setText(tr("k %1 N/mm%2 · k_p %3 N/A\nL/d %4")
@@ -787,7 +772,7 @@ void BoringPanel::retranslate() {
     m_chart->setAxisTitles(tr("Time, s"), tr("mm"));
     m_boreChart->setTitle(tr("Bore diameter error along the bore (simulated station)"));
     m_boreChart->setAxisTitles(tr("Position in the bore, mm"), tr("Diameter error, mm"));
-    if (!m_rig && m_headline.isEmpty()) m_headline = tr("Stopped");
+    if (!m_running && m_headline.isEmpty()) m_headline = tr("Stopped");
     updateEnabled();
     showWords();
     refreshPlots();

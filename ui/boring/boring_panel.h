@@ -4,15 +4,16 @@
 #include <QMap>
 #include <QPointer>
 #include <QString>
+#include <QVector>
 #include <QWidget>
 #include <memory>
 #include <optional>
 #include <vector>
 
 #include "core/model/tool_stiffness.h"
-#include "core/sim/boring/boring_machine.h"
+#include "core/run/boring_run.h"
 #include "ui/app_context.h"
-#include "ui/boring/boring_rig.h"
+#include "ui/boring/boring_trace.h"
 
 class QCheckBox;
 class QComboBox;
@@ -23,40 +24,29 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
-class QTimer;
 
 namespace tt::devices {
+class Device;
 class DeviceManager;
-}
+}  // namespace tt::devices
 
 namespace tt::ui {
 
+class BoringLink;
 class Chart;
-class SimulatedBoringStation;
-
-/// What a run has done so far, for the operator's numbers and for tests.
-struct BoringRunStats {
-    int cycles = 0;
-    int holdingCycles = 0;
-    int sentCycles = 0;                        ///< cycles whose offset the CNC took
-    double offsetMm = 0.0;                     ///< the offset the CNC holds now, mm
-    double largestOffsetMm = 0.0;              ///< largest |offset| sent, mm
-    double largestStepMm = 0.0;                ///< largest change of the offset in one cycle, mm
-    std::optional<double> deflectionMm;        ///< the source's latest deflection, mm
-    std::optional<double> forceN;              ///< the source's latest force, N
-    std::optional<double> boreErrorMaxMm;      ///< simulated station: max |diameter error| gauged so far
-    std::optional<double> uncompensatedMaxMm;  ///< the same on the twin pass without compensation
-    double zMm = 0.0;                          ///< simulated station: where the tool is
-};
+class CompensationSession;
 
 /// The in-process compensation for the operator (issue 6, item 6; paper 001): choose the source
-/// (the cross-feed current with dither, or the probe mandrel and its plane), the tool (its
+/// (a device's cross-feed current with dither, or its probe mandrel and plane), the tool (its
 /// stiffness and k_p from the tool table), the CNC output for the dynamic X offset, and the rate
-/// and range limits; Start and Stop. Each PLC cycle (a timer in the GUI thread, where the devices
-/// live) the compensator reads the source and writes the offset; the plots show the deflection
-/// and the offset, and why the offset is held (taper, slide not moving, window too short, device
-/// silent) in plain words. Without devices (or by choice) it runs the built-in simulated boring
-/// station, whose plot of the bore error with and without compensation shows it working.
+/// and range limits; Start and Stop. The run is built by the one run builder (core::buildBoringRun)
+/// and runs in its own thread (CompensationSession), one cycle per PLC period, reaching the devices
+/// through relays (BoringLink), so a busy window never delays the offset; the plots show the
+/// deflection and the offset, and why the offset is held (taper, slide not moving, window too short,
+/// device silent) in plain words. A source that offers a simulated boring pass of its own
+/// (devices::BoringTruth) can run the compensation on the pass's own PLC instead of a CNC output,
+/// faster than real time, and then the bore error with and without compensation is plotted along
+/// the bore. The panel asks the devices for capabilities only, never what they are.
 class BoringPanel : public QWidget {
     Q_OBJECT
 public:
@@ -73,10 +63,7 @@ public:
     /// Writes an offset of 0 to the CNC after asking (only while stopped; the tool must be out of
     /// the bore); false when refused or not confirmed.
     bool zeroOffset();
-    /// Runs `cycles` PLC cycles now (the timer runs one per PLC cycle, or `speed` of them on the
-    /// simulated station). Stops by itself when the simulated bore is finished.
-    void runCycles(int cycles);
-    bool running() const { return m_rig != nullptr; }
+    bool running() const { return m_running; }
 
     // For tests and the Run page.
     QComboBox* sourceBox() const { return m_source; }
@@ -94,15 +81,20 @@ public:
     QPushButton* zeroButton() const { return m_zero; }
     Chart* offsetChart() const { return m_chart; }
     Chart* boreChart() const { return m_boreChart; }
-    const BoringRunStats& stats() const { return m_stats; }
+    const BoringRunStats& stats() const { return m_trace.stats(); }
     /// The headline ("Compensating", "Holding the offset at …") and the reason shown.
     QString headline() const;
     QString reason() const;
-    /// The simulated station of the current run; null otherwise.
-    SimulatedBoringStation* station() const;
-    /// Selects the source entry whose key is `key` ("sim:current", "sim:probe", "dev:<id>:current",
-    /// "dev:<id>:probe"); false when there is none.
+    /// The detail line (what the device itself reports while the offset is held); empty if none.
+    QString detail() const;
+    /// Selects the source entry whose key is `key` ("dev:<id>:current", "dev:<id>:probe"); false
+    /// when there is none.
     bool selectSource(const QString& key);
+    /// Selects the CNC output entry whose key is `key` ("dev:<id>", or "station": the source's own
+    /// simulated pass); false when there is none.
+    bool selectOutput(const QString& key);
+    /// The compensation's session (its thread, its cycle schedule), for tests.
+    CompensationSession& session() const { return *m_session; }
 
 signals:
     void runningChanged(bool running);
@@ -113,23 +105,25 @@ protected:
 private:
     struct SourceChoice {
         QString key;
-        bool simulated = false;
-        BoringSource source = BoringSource::Current;
         QString deviceId;
+        core::BoringMethod method = core::BoringMethod::Current;
     };
 
     void buildLayout();
+    void connectControls();
     void watchDevices();
     void rebuildChoices();
     void rebuildTools();
     void rebuildOutputs();
     void updateEnabled();
+    void syncFaultSwitch();
     std::optional<SourceChoice> currentSource() const;
+    devices::Device* sourceDevice() const;
     std::optional<core::ToolRecord> currentTool() const;
-    BoringRunSettings settingsFromForm() const;
-    std::unique_ptr<BoringRig> makeRig(const SourceChoice& source, const BoringRunSettings& settings,
-                                       QString& outputKey);
-    void record(const BoringCycleView& view);
+    bool onSourcesPass() const;
+    core::BoringRunChoices choicesFromForm(const SourceChoice& source, const core::ToolRecord& tool) const;
+    std::shared_ptr<core::BoringStation> makeStation(const SourceChoice& source, core::BoringRunChoices& choices);
+    void onCycles(const QVector<core::BoringRunCycle>& batch);
     void refreshPlots();
     void showWords();
     void showProblem(const QString& text);
@@ -140,30 +134,24 @@ private:
 
     AppContext& m_context;
     QPointer<devices::DeviceManager> m_devices;
-    core::BoringScenario m_scenario;
+    core::BoringScenario m_scenario;  ///< the heavy-boring preset: defaults, and what a source's own pass bores
     QString m_scenarioProblem;
     std::vector<core::ToolRecord> m_tools;
     QString m_toolProblem;
 
-    std::unique_ptr<BoringRig> m_rig;
-    BoringSource m_runSource = BoringSource::Current;
+    CompensationSession* m_session;
+    BoringLink* m_link = nullptr;
+    bool m_running = false;
+    core::BoringMethod m_runMethod = core::BoringMethod::Current;
     QString m_runOutputKey;
-    QStringList m_runDevices;              ///< device ids the run uses
-    QMap<QString, double> m_heldOffsetMm;  ///< per output: what the CNC holds after a run
-    QTimer* m_timer;
-    BoringRunStats m_stats;
+    QMap<QString, double> m_heldOffsetMm;  ///< per output device: what the CNC holds after a run
+    BoringTrace m_trace;
     QString m_headline;
     QString m_reason;
     QString m_detail;
     bool m_holding = false;
     QString m_problem;  ///< why Start was refused, or the run stopped
     QString m_result;   ///< the simulated pass's result when it finished
-
-    // Plot data.
-    std::vector<double> m_timeS, m_measuredMm, m_offsetMm, m_trueMm;
-    double m_runStartS = 0.0;
-    std::vector<double> m_zMm, m_errorMm, m_twinErrorMm;
-    double m_lastBoreZ = -1e9;
     QElapsedTimer m_sinceRefresh;
 
     // Widgets.

@@ -6,6 +6,7 @@
 
 #include "core/control/in_process_compensation.h"
 #include "core/run/boring_run.h"
+#include "core/run/boring_simulation.h"
 #include "core/sim/boring/cross_feed_drive.h"
 #include "core/sim/boring/dither_profile.h"
 #include "core/sim/boring/inductive_probe.h"
@@ -100,33 +101,28 @@ TEST(ProbeCalibrationRig, LinearisesTheSimulatedMandrelWithDegreeThree) {
 
 TEST(InProcessCompensation, HoldsTheLastOffsetWhileTheDriveReadoutIsDownAndResumes) {
     const BoringScenario s = test::heavyBoring();
-    BoringMachine machine(s, true);
-    DitherEstimatorConfig config = s.estimator;
-    config.currentToForceNPerA = s.tool.currentToForceGainNPerA;
-    config.stiffnessNPerMm = effectiveStiffnessNPerMm(s.tool);
-    CurrentDeflectionSource source(machine.driveReadout(), config);
-    InProcessCompensator compensator(source, machine.output(), s.limits, s.plcCycleS);
-    auto run = [&](double seconds) {
+    SimulatedBoringPass pass(s, BoringMethod::Current, false);
+    const std::unique_ptr<BoringRun> run = buildBoringRun(boringChoices(s, BoringMethod::Current), pass);
+    auto runFor = [&](double seconds) {
         CompensationCycle last;
-        for (int i = 0; i < static_cast<int>(seconds / s.plcCycleS); ++i) {
-            machine.advanceCycle();
-            last = compensator.cycle(machine.state().timeS);
-        }
+        for (int i = 0; i < static_cast<int>(seconds / s.plcCycleS); ++i)
+            last = *run->cycle().compensation;
         return last;
     };
-    run(30.0);  // into the bore, compensating
-    const double before = compensator.offsetMm();
+    runFor(30.0);  // into the bore, compensating
+    const double before = run->offsetMm();
     ASSERT_GT(before, 0.08);
-    machine.setDriveHealth({DeviceState::Error, "no answer from the drive for 0.5 s"});
-    const CompensationCycle silent = run(5.0);
+    pass.overrideSourceHealth(DeviceHealth{DeviceState::Error, "no answer from the drive for 0.5 s"});
+    const CompensationCycle silent = runFor(5.0);
     EXPECT_TRUE(silent.step.holding);
-    EXPECT_NE(silent.step.reason.find("no answer from the drive"), std::string::npos) << silent.step.reason;
-    EXPECT_DOUBLE_EQ(compensator.offsetMm(), before);
-    machine.setDriveHealth({DeviceState::Ready, {}});
-    const CompensationCycle back = run(5.0);
-    EXPECT_FALSE(back.step.holding) << back.step.reason;
+    EXPECT_EQ(silent.reading.problem, ReadingProblem::SourceNotReady);
+    EXPECT_EQ(silent.reading.sourceHealth.message, "no answer from the drive for 0.5 s");
+    EXPECT_DOUBLE_EQ(run->offsetMm(), before);
+    pass.overrideSourceHealth(std::nullopt);
+    const CompensationCycle back = runFor(5.0);
+    EXPECT_FALSE(back.step.holding) << toString(back.reading.problem);
     // Meanwhile the force grew along the bore; the offset follows it again.
-    EXPECT_NEAR(compensator.offsetMm(), -machine.state().tipDeflectionXmm, 0.01);
+    EXPECT_NEAR(run->offsetMm(), -pass.machine().state().tipDeflectionXmm, 0.01);
 }
 
 class HeavyBoring : public ::testing::Test {

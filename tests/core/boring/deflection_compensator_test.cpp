@@ -37,9 +37,9 @@ TEST(DeflectionCompensator, ClampsToTheRange) {
 TEST(DeflectionCompensator, HoldsTheLastOffsetWithoutAValidDeflection) {
     DeflectionCompensator c({0.5, 100.0});
     c.step(0.02, -0.12);
-    CompensationStep s = c.step(0.02, std::nullopt, "slide not moving");
+    CompensationStep s = c.step(0.02, std::nullopt);
     EXPECT_TRUE(s.holding);
-    EXPECT_EQ(s.reason, "slide not moving");
+    EXPECT_DOUBLE_EQ(s.targetMm, 0.12);  // no new target: the last offset
     EXPECT_DOUBLE_EQ(s.offsetMm, 0.12);
     s = c.step(0.02, std::nan(""));
     EXPECT_TRUE(s.holding);
@@ -105,13 +105,17 @@ TEST(InProcessCompensator, HoldsWhatTheCncHasWhenAWriteFailsOrTheOutputIsDown) {
     output.refuse = true;
     CompensationCycle c = comp.cycle(0.02);
     EXPECT_FALSE(c.sent);
-    EXPECT_EQ(c.outputError, "PLC register write not acknowledged");
+    EXPECT_EQ(c.outputProblem, OutputProblem::Refused);
+    EXPECT_EQ(c.outputMessage, "PLC register write not acknowledged");  // the output's own words, passed on
     EXPECT_TRUE(c.step.holding);
     EXPECT_NEAR(comp.offsetMm(), 0.02, 1e-12);
     output.refuse = false;
     output.status = {DeviceState::Error, "no answer from the PLC for 0.5 s"};
     c = comp.cycle(0.04);
-    EXPECT_EQ(c.outputError, "no answer from the PLC for 0.5 s");
+    EXPECT_EQ(c.outputProblem, OutputProblem::NotReady);
+    EXPECT_EQ(c.outputHealth.state, DeviceState::Error);
+    EXPECT_EQ(c.outputHealth.message, "no answer from the PLC for 0.5 s");
+    EXPECT_TRUE(c.step.holding);
     EXPECT_NEAR(comp.offsetMm(), 0.02, 1e-12);
     output.status = {DeviceState::Ready, {}};
     EXPECT_NEAR(comp.cycle(0.06).step.offsetMm, 0.04, 1e-12);  // resumes from what the CNC holds

@@ -2,61 +2,28 @@
 // deflection names its problem as a kind, and a new run continues from the offset the CNC holds.
 #include <gtest/gtest.h>
 
-#include <deque>
-
+#include "../boring/fake_boring_ports.h"
 #include "core/control/in_process_compensation.h"
 
 namespace tt::core {
 namespace {
 
-struct FakeProbe final : DeflectionProbe {
-    DeviceHealth status{DeviceState::Ready, {}};
-    std::deque<ProbeSample> queue;
-    DeviceHealth health() const override { return status; }
-    std::optional<ProbeSample> takeSample() override {
-        if (queue.empty()) return std::nullopt;
-        const ProbeSample s = queue.front();
-        queue.pop_front();
-        return s;
-    }
-};
-
-struct FakeDrive final : DriveCurrentReadout {
-    DeviceHealth status{DeviceState::Ready, {}};
-    std::deque<DriveSample> queue;
-    DeviceHealth health() const override { return status; }
-    std::optional<DriveSample> takeSample() override {
-        if (queue.empty()) return std::nullopt;
-        const DriveSample s = queue.front();
-        queue.pop_front();
-        return s;
-    }
-};
-
-struct FakeOutput final : CorrectionOutput {
-    std::vector<double> sent;
-    DeviceHealth health() const override { return {DeviceState::Ready, {}}; }
-    OutputResult sendPartCorrection(const PartCorrection&) override { return {true, {}}; }
-    OutputResult sendDynamicOffset(double mm) override {
-        sent.push_back(mm);
-        return {true, {}};
-    }
-};
+using test::FakeDrive;
+using test::FakeOutput;
+using test::FakeProbe;
 
 ProbeSample sample(double t, double deflectionMm, bool linearised = true) {
-    ProbeSample s;
-    s.timeS = t;
-    s.deflectionMm = {deflectionMm, 0.0};
-    s.adcCode = {2048, 2048};
-    s.linearised = linearised;
-    return s;
+    return test::probeSample(t, deflectionMm, linearised);
 }
 
 TEST(ReadingProblem, TheProbeSourceNamesWhyItHasNoDeflection) {
     FakeProbe probe;
     ProbeDeflectionSource source(probe, 0, std::nullopt, 2000.0, 0.5);
     probe.status = {DeviceState::Error, "no data"};
-    EXPECT_EQ(source.poll(0.0).problem, ReadingProblem::SourceNotReady);
+    const DeflectionReading silent = source.poll(0.0);
+    EXPECT_EQ(silent.problem, ReadingProblem::SourceNotReady);
+    EXPECT_EQ(silent.sourceHealth.state, DeviceState::Error);  // the device's own state and words, as data
+    EXPECT_EQ(silent.sourceHealth.message, "no data");
     probe.status = {DeviceState::Ready, {}};
     probe.queue.push_back(sample(0.1, 0.05, false));  // a raw code and no table on the host
     EXPECT_EQ(source.poll(0.1).problem, ReadingProblem::NoTable);
@@ -64,7 +31,9 @@ TEST(ReadingProblem, TheProbeSourceNamesWhyItHasNoDeflection) {
     const DeflectionReading valid = source.poll(0.2);
     EXPECT_EQ(valid.problem, ReadingProblem::None);
     ASSERT_TRUE(valid.deflectionMm.has_value());
-    EXPECT_EQ(source.poll(0.9).problem, ReadingProblem::NoRecentSample);  // 0.7 s without a sample
+    const DeflectionReading quiet = source.poll(0.9);  // 0.7 s without a sample
+    EXPECT_EQ(quiet.problem, ReadingProblem::NoRecentSample);
+    EXPECT_DOUBLE_EQ(quiet.silenceLimitS, 0.5);  // the limit it passed, for the operator's words
 }
 
 TEST(ReadingProblem, TheCurrentSourceNamesTheEstimatorsRefusal) {
@@ -79,6 +48,15 @@ TEST(ReadingProblem, TheCurrentSourceNamesTheEstimatorsRefusal) {
     EXPECT_EQ(source.poll(0.02).problem, ReadingProblem::NotCylindrical);
     drive.status = {DeviceState::Disconnected, {}};
     EXPECT_EQ(source.poll(0.04).problem, ReadingProblem::SourceNotReady);
+}
+
+TEST(ReadingProblem, EveryKindHasAStableNameForTheCommandLine) {
+    // `trueturn boring --json` prints last_hold_reason with these names.
+    EXPECT_STREQ(toString(ReadingProblem::WindowTooShort), "window too short");
+    EXPECT_STREQ(toString(ReadingProblem::SourceNotReady), "source not ready");
+    EXPECT_STREQ(toString(OutputProblem::Refused), "refused");
+    EXPECT_EQ(boringMethodFromString("probe"), BoringMethod::Probe);
+    EXPECT_THROW(boringMethodFromString("laser"), std::invalid_argument);
 }
 
 TEST(InProcessCompensator, ResumesFromTheOffsetTheCncHolds) {

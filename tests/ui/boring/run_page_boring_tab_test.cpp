@@ -1,11 +1,13 @@
 // The in-process compensation as the second tab of the Run page, in the 1280 × 800 main window the
-// operator sees: the simulated station compensating, readable from a metre.
+// operator sees: the simulator drive's own boring pass compensating, readable from a metre.
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QSettings>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTest>
 
 #include "devices/api/device_manager.h"
 #include "screenshots.h"
@@ -19,13 +21,16 @@
 namespace tt::ui {
 namespace {
 
-TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatedStationInTheMainWindow) {
+TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatorsOwnPassInTheMainWindow) {
     QSettings().remove(QStringLiteral("boringPanel"));
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
     devices::DeviceManager devices;
+    const QString drive = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
+                                            QStringLiteral("Cross feed (simulator)"), {});
+    devices.openAll();
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
     MainWindow window(context);
     window.resize(1280, 800);
@@ -43,9 +48,12 @@ TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatedStationInTheMainWindow) {
     // The panel fits the tab: no control is cut off at 1280 × 800.
     EXPECT_LE(panel->minimumSizeHint().width(), panel->width());
     EXPECT_LE(panel->minimumSizeHint().height(), panel->height());
-    ASSERT_TRUE(panel->selectSource(QStringLiteral("sim:current")));
+    ASSERT_TRUE(panel->selectSource(QStringLiteral("dev:%1:current").arg(drive)));
+    EXPECT_EQ(panel->outputBox()->currentData().toString(), QStringLiteral("station"));  // the drive's own pass
+    panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
-    panel->runCycles(1500);  // 30 s of the pass: the tool 25 mm into the bore
+    // 30 s of the pass: the tool 25 mm into the bore.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, 20000)) << panel->stats().cycles;
     EXPECT_EQ(panel->headline(), QStringLiteral("Compensating"));
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("boring_run_page_tab")));
     panel->stop();

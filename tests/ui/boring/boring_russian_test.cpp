@@ -1,0 +1,120 @@
+// The Boring tab in Russian during a run whose source goes silent (issue 11, "Engine events as
+// kinds"): the hold reason, the device's state and every other text of the tab are Russian; the
+// engine sends kinds with data, the tab words them. Screenshot: screenshots/boring_tab_ru_silent.png.
+#include <gtest/gtest.h>
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QProgressBar>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "boring_tab.h"
+#include "devices/api/device_manager.h"
+#include "screenshots.h"
+#include "scripted_prompt.h"
+#include "ui/app_state.h"
+#include "ui/language.h"
+
+namespace tt::ui {
+namespace {
+
+/// Texts `root` shows that hold an English word (two Latin letters in a row), each with where it is.
+/// `data` are names the operator or the preset gave (a tool's name), not texts of the terminal.
+QStringList englishIn(QWidget* root, const QStringList& data) {
+    static const QRegularExpression latinWord(QStringLiteral("[A-Za-z]{2,}"));
+    QStringList found;
+    auto check = [&](const QWidget* w, QString text) {
+        for (const QString& name : data)
+            text.remove(name);
+        if (text.contains(latinWord))
+            found << QStringLiteral("\"%1\" in %2 '%3'")
+                         .arg(text, QString::fromLatin1(w->metaObject()->className()), w->objectName());
+    };
+    for (QWidget* w : root->findChildren<QWidget*>()) {
+        if (!w->isVisibleTo(root)) continue;
+        if (auto* label = qobject_cast<QLabel*>(w)) check(w, label->text());
+        if (auto* button = qobject_cast<QAbstractButton*>(w)) check(w, button->text());
+        if (auto* group = qobject_cast<QGroupBox*>(w)) check(w, group->title());
+        if (auto* progress = qobject_cast<QProgressBar*>(w)) check(w, progress->text());
+        if (auto* combo = qobject_cast<QComboBox*>(w))
+            for (int i = 0; i < combo->count(); ++i)
+                check(w, combo->itemText(i));
+    }
+    return found;
+}
+
+/// The tab of a 1280 × 800 main window in Russian, with the simulator's drive read-out and probe
+/// mandrel (named in Russian, as the operator would) and their own simulated passes.
+class BoringTabInRussian : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().remove(QStringLiteral("boringPanel"));
+        ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+        drive = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
+                                  QStringLiteral("Поперечная подача"), {});
+        probe = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::Probe,
+                                  QStringLiteral("Оправка-датчик"), {});
+        devices.openAll();
+    }
+    void TearDown() override { language.apply(QStringLiteral("en")); }
+
+    /// Runs the pass of `sourceKey` until the tool is 13 mm in, silences `device`, and returns the
+    /// English the tab shows then (empty: none), after saving the screenshot `shot`.
+    QStringList silenceDuringARun(const QString& sourceKey, const QString& device, const QString& reasonWords,
+                                  const QString& shot) {
+        MainWindow window(context);
+        BoringPanel* panel = test::showBoringTab(window);
+        EXPECT_NE(panel, nullptr);
+        if (!panel || !panel->selectSource(sourceKey)) return {QStringLiteral("no source ") + sourceKey};
+        panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
+        EXPECT_TRUE(panel->start()) << panel->reason().toStdString();
+        EXPECT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 900; }, 20000));
+        EXPECT_EQ(panel->headline(), QStringLiteral("Компенсация")) << panel->reason().toStdString();
+        // The source goes silent (its fault switch): the offset is held, and the tab says why, with
+        // the device's own words underneath.
+        devices.device(device)->faultSwitches()->silent = true;
+        EXPECT_TRUE(QTest::qWaitFor(
+            [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); }, 5000))
+            << panel->reason().toStdString();
+        QTest::qWait(150);  // the plots and numbers of the last cycles
+        EXPECT_TRUE(panel->reason().contains(reasonWords)) << panel->reason().toStdString();
+        EXPECT_TRUE(test::saveScreenshot(window, shot));
+        QStringList english = englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        panel->stop();
+        english << englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        devices.device(device)->faultSwitches()->silent = false;
+        return english;
+    }
+
+    QTemporaryDir dir;
+    test::ScriptedPrompt prompt;
+    AppState state;
+    LanguageSwitcher language;
+    devices::DeviceManager devices;
+    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
+    QString drive;
+    QString probe;
+};
+
+TEST_F(BoringTabInRussian, ARunWhoseDriveReadOutGoesSilentShowsNoEnglish) {
+    const QStringList english = silenceDuringARun(QStringLiteral("dev:%1:current").arg(drive), drive,
+                                                  QStringLiteral("Датчик тока привода не отвечает или отключён"),
+                                                  QStringLiteral("boring_tab_ru_silent"));
+    EXPECT_TRUE(english.isEmpty()) << english.join(QStringLiteral("\n  ")).toStdString();
+}
+
+TEST_F(BoringTabInRussian, ARunWhoseMandrelGoesSilentShowsNoEnglish) {
+    const QStringList english = silenceDuringARun(QStringLiteral("dev:%1:probe").arg(probe), probe,
+                                                  QStringLiteral("Оправка-датчик не отвечает или отключена"),
+                                                  QStringLiteral("boring_tab_ru_probe_silent"));
+    EXPECT_TRUE(english.isEmpty()) << english.join(QStringLiteral("\n  ")).toStdString();
+}
+
+}  // namespace
+}  // namespace tt::ui
