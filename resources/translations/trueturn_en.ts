@@ -926,6 +926,13 @@
     </message>
 </context>
 <context>
+    <name>Notice</name>
+    <message>
+        <source>Part %1, point %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ProbeMandrel</name>
     <message>
         <source>Sample rate</source>
@@ -1402,6 +1409,14 @@
         <source>no data from %1 (silent)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Simulated lathe (built in)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts of the set-up are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1466,6 +1481,165 @@
     </message>
     <message>
         <source>device %1: the saved entry is incomplete</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui</name>
+    <message>
+        <source>Starting part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing run %1 with part %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paused by the operator; the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machining part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge answers again; continuing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring the last parts (part %1 next)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for the diameters of part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run complete: part %1 was the last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The end of the run could not be stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine did not start part %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not measured: skipped by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the reading is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every control point already has a reading; re-take a point to replace it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the point was already measured for part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 has not been machined yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 was not machined under this controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 is too late: the controller keeps the last %2 parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller could not use it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2118,6 +2292,69 @@ L/d %4</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::DeformationModelPanel</name>
+    <message>
+        <source>Terms of the next fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cubic in z (a, f quadratic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>full quadratic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linear with interactions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove insignificant terms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Term (coded)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coefficient, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Std. error, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t-value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>significant at 95 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NOT significant at 95 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 points, %2 terms.&lt;/b&gt; R² %3, adjusted R² %4. F %5 against the table value F(0.95; %6, %7) = %8: %9. Residual 2σ %10 µm. t-values below %11 are not significant.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Removed as insignificant: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -2620,6 +2857,268 @@ overshoot, %</source>
     </message>
     <message>
         <source>F = %1 cm², k₀ = %2 m⁻², T_c = %3 ms, pump %4 cm³/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedScheduleTool</name>
+    <message>
+        <source>Feed schedule</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The built-in set-up cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiments on the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Experiment to fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fitting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machining on the simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Deformation Y; the tool travels z %1 → %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scheduled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>scheduled feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fmin</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fmax</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the CNC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC programs (*.nc *.txt)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The program was written to %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated experiments (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y1 %1 µm
+quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y2 %1 µm
+output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>– µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y1
+quality</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y2
+output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%n segment(s)&lt;/b&gt;, feeds %1 → %2 mm/rev.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%n segment&lt;/b&gt;, feeds %1 → %2 mm/rev.</numerusform>
+            <numerusform>&lt;b&gt;%n segments&lt;/b&gt;, feeds %1 → %2 mm/rev.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time %1 min against %2 min at fmin: &lt;b&gt;%3 % saved&lt;/b&gt; (fmax %4 min).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model names no machine job (spindle speed): no times, no program.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator: within &lt;b&gt;%1 %&lt;/b&gt; of Yc (worst at z %2 mm); constant fmax exceeds Yc by %3 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No simulator for this model&apos;s set-up: the check is not available.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force-deformation model Y(a, f, z)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the experiments on the simulator and fit the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load a model file written by &apos;trueturn fit-deformation --json&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth of cut a</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feeds, mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pass z, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shortest segment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC dialect</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fanuc-style</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check on simulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>f, mm/rev</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Curves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Model statistics</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3192,14 +3691,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::LoopWorker</name>
     <message>
-        <source>the real lathe&apos;s devices are not connected</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>A run is already going; stop it first.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3226,15 +3717,15 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::MainWindow</name>
     <message>
         <source>About TrueTurn</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3299,6 +3790,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>History: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Log file: %3&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not written</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4042,15 +4541,15 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>simulated</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>x = %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>true profile</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4174,10 +4673,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simulated lathe (built in)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Real lathe (Devices page)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4215,14 +4710,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>The run cannot start</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>real lathe</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>simulated lathe</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4266,10 +4753,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Gauge: %1 · CNC: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4298,11 +4781,19 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
+        <source>Parts done: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Parts done: %1</source>
+        <source>The machine chosen is no longer offered; choose another.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine: %1 (its own CNC, gauge and part cycle)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Press Start: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -928,6 +928,13 @@
     </message>
 </context>
 <context>
+    <name>Notice</name>
+    <message>
+        <source>Part %1, point %2: %3</source>
+        <translation>Деталь %1, точка %2: %3</translation>
+    </message>
+</context>
+<context>
     <name>ProbeMandrel</name>
     <message>
         <source>Sample rate</source>
@@ -1404,6 +1411,14 @@
         <source>no data from %1 (silent)</source>
         <translation>нет данных: %1 молчит</translation>
     </message>
+    <message>
+        <source>Simulated lathe (built in)</source>
+        <translation>Симулятор станка</translation>
+    </message>
+    <message>
+        <source>Parts of the set-up are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
+        <translation>детали наладки обтачиваются на симуляторе станка и измеряются в контрольных точках, а следующая деталь корректируется.</translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1470,6 +1485,165 @@
     <message>
         <source>device %1: the saved entry is incomplete</source>
         <translation>устройство %1: сохранённая запись неполна</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui</name>
+    <message>
+        <source>Starting part %1</source>
+        <translation>Запуск детали %1</translation>
+    </message>
+    <message>
+        <source>Continuing run %1 with part %2</source>
+        <translation>Продолжение цикла %1 с детали %2</translation>
+    </message>
+    <message>
+        <source>Paused by the operator; the CNC keeps the last correction</source>
+        <translation>Пауза по команде оператора; ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Machining part %1</source>
+        <translation>Обработка детали %1</translation>
+    </message>
+    <message>
+        <source>Continuing</source>
+        <translation>Продолжение</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Остановлено</translation>
+    </message>
+    <message>
+        <source>The gauge answers again; continuing</source>
+        <translation>Измерительный прибор снова отвечает; продолжение</translation>
+    </message>
+    <message>
+        <source>Measuring the last parts (part %1 next)</source>
+        <translation>Измерение последних деталей (следующая — деталь %1)</translation>
+    </message>
+    <message>
+        <source>Waiting for the diameters of part %1</source>
+        <translation>Ожидание диаметров детали %1</translation>
+    </message>
+    <message>
+        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
+        <translation>Измерительный прибор не готов (%1); для детали %2 нужны диаметры детали %3. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
+        <translation>Нет диаметров детали %1 уже %2 мин. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Run complete: part %1 was the last</source>
+        <translation>Цикл завершён: деталь %1 была последней</translation>
+    </message>
+    <message>
+        <source>Part %1 finished</source>
+        <translation>Деталь %1 готова</translation>
+    </message>
+    <message>
+        <source>Part %1 measured</source>
+        <translation>Деталь %1 измерена</translation>
+    </message>
+    <message>
+        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
+        <translation>Деталь %1 была на станке при остановке цикла; она не записана</translation>
+    </message>
+    <message>
+        <source>The end of the run could not be stored: %1</source>
+        <translation>Не удалось записать завершение цикла: %1</translation>
+    </message>
+    <message>
+        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
+        <translation>Станок сообщил о готовности детали %1, которую контур не запускал; сообщение пропущено</translation>
+    </message>
+    <message>
+        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось записать историю, деталь %1 не сохранена (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
+        <translation>Пришло показание %1 мм, но ни одна деталь не ждёт измерения; оно пропущено</translation>
+    </message>
+    <message>
+        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось сохранить диаметры детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось вычислить коррекции для детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
+        <translation>Деталь %1: регулятор не дал пригодной коррекции в точке %2 (x = %3 мм); сохраняется %4 мм</translation>
+    </message>
+    <message>
+        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
+        <translation>Деталь %1: коррекция в точке %2 (x = %3 мм) ограничена с %4 до %5 мм</translation>
+    </message>
+    <message>
+        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
+        <translation>ЧПУ не приняло коррекции для детали %1: %2; сохраняется последняя коррекция</translation>
+    </message>
+    <message>
+        <source>The machine did not start part %1: %2</source>
+        <translation>Станок не запустил деталь %1: %2</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>не измерено</translation>
+    </message>
+    <message>
+        <source>not measured: skipped by the operator</source>
+        <translation>не измерено: пропущено оператором</translation>
+    </message>
+    <message>
+        <source>the reading is not a number</source>
+        <translation>показание не является числом</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>не конечное число</translation>
+    </message>
+    <message>
+        <source>every control point already has a reading; re-take a point to replace it</source>
+        <translation>во всех контрольных точках уже есть показания; чтобы заменить показание, измерьте точку заново</translation>
+    </message>
+    <message>
+        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
+        <translation>показание %1 мм отличается от номинала %3 мм больше чем на %2 мм; проверьте точку (x = %4 мм) и измерьте снова</translation>
+    </message>
+    <message>
+        <source>the point was already measured for part %1</source>
+        <translation>точка уже измерена для детали %1</translation>
+    </message>
+    <message>
+        <source>part %1 has not been machined yet</source>
+        <translation>деталь %1 ещё не обработана</translation>
+    </message>
+    <message>
+        <source>part %1 was not machined under this controller</source>
+        <translation>деталь %1 обработана не под этим регулятором</translation>
+    </message>
+    <message>
+        <source>part %1 is too late: the controller keeps the last %2 parts</source>
+        <translation>деталь %1 опоздала: регулятор хранит последние %2 деталей</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
+        <translation>отклонено регулятором: %1 σ от прогноза (порог %2 σ)</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
+        <translation>отклонено регулятором: отклонение %1 мм достигает аварийной границы %2 мм; проверьте деталь</translation>
+    </message>
+    <message>
+        <source>the controller could not use it: %1</source>
+        <translation>регулятор не смог его использовать: %1</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1</source>
+        <translation>отклонено регулятором: %1</translation>
     </message>
 </context>
 <context>
@@ -2125,6 +2299,69 @@ L/d %4</translation>
     </message>
 </context>
 <context>
+    <name>tt::ui::DeformationModelPanel</name>
+    <message>
+        <source>Terms of the next fit</source>
+        <translation>Члены следующей модели</translation>
+    </message>
+    <message>
+        <source>cubic in z (a, f quadratic)</source>
+        <translation>кубическая по z (по a, f квадратичная)</translation>
+    </message>
+    <message>
+        <source>full quadratic</source>
+        <translation>полная квадратичная</translation>
+    </message>
+    <message>
+        <source>linear with interactions</source>
+        <translation>линейная с взаимодействиями</translation>
+    </message>
+    <message>
+        <source>linear</source>
+        <translation>линейная</translation>
+    </message>
+    <message>
+        <source>Remove insignificant terms</source>
+        <translation>Исключать незначимые члены</translation>
+    </message>
+    <message>
+        <source>Term (coded)</source>
+        <translation>Член (кодир.)</translation>
+    </message>
+    <message>
+        <source>Coefficient, µm</source>
+        <translation>Коэффициент, мкм</translation>
+    </message>
+    <message>
+        <source>Std. error, µm</source>
+        <translation>Ст. ошибка, мкм</translation>
+    </message>
+    <message>
+        <source>t-value</source>
+        <translation>Критерий t</translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation>Модели пока нет.</translation>
+    </message>
+    <message>
+        <source>significant at 95 %</source>
+        <translation>значима при 95 %</translation>
+    </message>
+    <message>
+        <source>NOT significant at 95 %</source>
+        <translation>НЕ значима при 95 %</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;%1 points, %2 terms.&lt;/b&gt; R² %3, adjusted R² %4. F %5 against the table value F(0.95; %6, %7) = %8: %9. Residual 2σ %10 µm. t-values below %11 are not significant.</source>
+        <translation>&lt;b&gt;Точек: %1, членов: %2.&lt;/b&gt; R² %3, скорректированный R² %4. F %5 при табличном F(0,95; %6, %7) = %8: %9. Остаточное 2σ %10 мкм. Члены с t ниже %11 незначимы.</translation>
+    </message>
+    <message>
+        <source>Removed as insignificant: %1</source>
+        <translation>Исключены как незначимые: %1</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::DevicesPage</name>
     <message>
         <source>%1 — %2</source>
@@ -2633,6 +2870,273 @@ overshoot, %</source>
     <message>
         <source>F = %1 cm², k₀ = %2 m⁻², T_c = %3 ms, pump %4 cm³/s</source>
         <translation>F = %1 см², k₀ = %2 м⁻², T_c = %3 мс, насос %4 см³/с</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::FeedScheduleTool</name>
+    <message>
+        <source>Feed schedule</source>
+        <translation>Программа подачи</translation>
+    </message>
+    <message>
+        <source>The built-in set-up cannot be read: %1</source>
+        <translation>Встроенную наладку не удаётся прочитать: %1</translation>
+    </message>
+    <message>
+        <source>Experiments on the simulator</source>
+        <translation>Эксперименты на симуляторе</translation>
+    </message>
+    <message>
+        <source>Experiment to fit</source>
+        <translation>Эксперимент для модели</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Fitting</source>
+        <translation>Построение модели</translation>
+    </message>
+    <message>
+        <source>Model file</source>
+        <translation>Файл модели</translation>
+    </message>
+    <message>
+        <source>Model files (*.json)</source>
+        <translation>Файлы моделей (*.json)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be used: %2</source>
+        <translation>%1 нельзя использовать: %2</translation>
+    </message>
+    <message>
+        <source>Machining on the simulator</source>
+        <translation>Обработка на симуляторе</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Остановлено.</translation>
+    </message>
+    <message>
+        <source>Deformation Y; the tool travels z %1 → %2 mm</source>
+        <translation>Деформация Y; резец идёт по z %1 → %2 мм</translation>
+    </message>
+    <message>
+        <source>%1 mm/rev</source>
+        <translation>%1 мм/об</translation>
+    </message>
+    <message>
+        <source>Yc</source>
+        <translation>Yc</translation>
+    </message>
+    <message>
+        <source>scheduled</source>
+        <translation>по программе</translation>
+    </message>
+    <message>
+        <source>scheduled feed</source>
+        <translation>подача по программе</translation>
+    </message>
+    <message>
+        <source>fmin</source>
+        <translation>fmin</translation>
+    </message>
+    <message>
+        <source>fmax</source>
+        <translation>fmax</translation>
+    </message>
+    <message>
+        <source>Save the CNC program</source>
+        <translation>Сохранить программу ЧПУ</translation>
+    </message>
+    <message>
+        <source>CNC programs (*.nc *.txt)</source>
+        <translation>Программы ЧПУ (*.nc *.txt)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written: %2</source>
+        <translation>%1 не удаётся записать: %2</translation>
+    </message>
+    <message>
+        <source>The program was written to %1.</source>
+        <translation>Программа записана в %1.</translation>
+    </message>
+    <message>
+        <source>No model yet.</source>
+        <translation>Модели пока нет.</translation>
+    </message>
+    <message>
+        <source>Simulated experiments (%1)</source>
+        <translation>Эксперименты на симуляторе (%1)</translation>
+    </message>
+    <message>
+        <source>%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.</source>
+        <translation>%1: точек %2, членов %3. R² %4, F %5 (табл. %6), 2σ %7 мкм.</translation>
+    </message>
+    <message>
+        <source>%1 µm</source>
+        <translation>%1 мкм</translation>
+    </message>
+    <message>
+        <source>Y1 %1 µm
+quality</source>
+        <translation>Y1 %1 мкм
+точность</translation>
+    </message>
+    <message>
+        <source>Y2 %1 µm
+output</source>
+        <translation>Y2 %1 мкм
+скорость</translation>
+    </message>
+    <message>
+        <source>– µm</source>
+        <translation>– мкм</translation>
+    </message>
+    <message>
+        <source>Y1
+quality</source>
+        <translation>Y1
+точность</translation>
+    </message>
+    <message>
+        <source>Y2
+output</source>
+        <translation>Y2
+скорость</translation>
+    </message>
+    <message numerus="yes">
+        <source>&lt;b&gt;%n segment(s)&lt;/b&gt;, feeds %1 → %2 mm/rev.</source>
+        <translation>
+            <numerusform>&lt;b&gt;%n участок&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+            <numerusform>&lt;b&gt;%n участка&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+            <numerusform>&lt;b&gt;%n участков&lt;/b&gt;, подачи %1 → %2 мм/об.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Time %1 min against %2 min at fmin: &lt;b&gt;%3 % saved&lt;/b&gt; (fmax %4 min).</source>
+        <translation>Время %1 мин против %2 мин при fmin: &lt;b&gt;экономия %3 %&lt;/b&gt; (fmax %4 мин).</translation>
+    </message>
+    <message>
+        <source>The model names no machine job (spindle speed): no times, no program.</source>
+        <translation>В модели нет наладки станка (частоты вращения): нет времени и программы.</translation>
+    </message>
+    <message>
+        <source>Simulator: within &lt;b&gt;%1 %&lt;/b&gt; of Yc (worst at z %2 mm); constant fmax exceeds Yc by %3 %.</source>
+        <translation>Симулятор: в пределах &lt;b&gt;%1 %&lt;/b&gt; от Yc (хуже всего при z %2 мм); постоянная fmax превышает Yc на %3 %.</translation>
+    </message>
+    <message>
+        <source>No simulator for this model&apos;s set-up: the check is not available.</source>
+        <translation>Для наладки этой модели нет симулятора: проверка недоступна.</translation>
+    </message>
+    <message>
+        <source>Force-deformation model Y(a, f, z)</source>
+        <translation>Модель силовой деформации Y(a, f, z)</translation>
+    </message>
+    <message>
+        <source>Simulate</source>
+        <translation>Симуляция</translation>
+    </message>
+    <message>
+        <source>Run the experiments on the simulator and fit the model</source>
+        <translation>Провести эксперименты на симуляторе и построить модель</translation>
+    </message>
+    <message>
+        <source>Fit CSV…</source>
+        <translation>Из CSV…</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Файл…</translation>
+    </message>
+    <message>
+        <source>Load a model file written by &apos;trueturn fit-deformation --json&apos;</source>
+        <translation>Загрузить файл модели, записанный командой «trueturn fit-deformation --json»</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Pass</source>
+        <translation>Проход</translation>
+    </message>
+    <message>
+        <source>Depth of cut a</source>
+        <translation>Глубина резания a</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> мм</translation>
+    </message>
+    <message>
+        <source> mm/rev</source>
+        <translation> мм/об</translation>
+    </message>
+    <message>
+        <source>Feeds, mm/rev</source>
+        <translation>Подачи, мм/об</translation>
+    </message>
+    <message>
+        <source>Feed step</source>
+        <translation>Шаг подачи</translation>
+    </message>
+    <message>
+        <source>Pass z, mm</source>
+        <translation>Проход по z, мм</translation>
+    </message>
+    <message>
+        <source>Shortest segment</source>
+        <translation>Мин. участок</translation>
+    </message>
+    <message>
+        <source>CNC dialect</source>
+        <translation>Диалект ЧПУ</translation>
+    </message>
+    <message>
+        <source>Fanuc-style</source>
+        <translation>в стиле Fanuc</translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation>LinuxCNC</translation>
+    </message>
+    <message>
+        <source>Check on simulator</source>
+        <translation>Проверить на симуляторе</translation>
+    </message>
+    <message>
+        <source>Save program…</source>
+        <translation>Сохранить программу…</translation>
+    </message>
+    <message>
+        <source>Level Yc</source>
+        <translation>Уровень Yc</translation>
+    </message>
+    <message>
+        <source>z, mm</source>
+        <translation>z, мм</translation>
+    </message>
+    <message>
+        <source>Y, µm</source>
+        <translation>Y, мкм</translation>
+    </message>
+    <message>
+        <source>f, mm/rev</source>
+        <translation>f, мм/об</translation>
+    </message>
+    <message>
+        <source>Curves</source>
+        <translation>Кривые</translation>
+    </message>
+    <message>
+        <source>CNC program</source>
+        <translation>Программа ЧПУ</translation>
+    </message>
+    <message>
+        <source>Model statistics</source>
+        <translation>Статистика модели</translation>
     </message>
 </context>
 <context>
@@ -3209,14 +3713,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::LoopWorker</name>
     <message>
-        <source>the real lathe&apos;s devices are not connected</source>
-        <translation>устройства реального станка не подключены</translation>
-    </message>
-    <message>
-        <source>the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
-        <translation>выход в ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 — для %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
-    </message>
-    <message>
         <source>A run is already going; stop it first.</source>
         <translation>Серия уже выполняется; сначала остановите её.</translation>
     </message>
@@ -3244,16 +3740,16 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
         <translation>Деталь %1 не ожидает ввода диаметров; ничего не принято.</translation>
     </message>
+    <message>
+        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation>Запуск невозможен: выход ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 обтачивает %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::MainWindow</name>
     <message>
         <source>About TrueTurn</source>
         <translation>О программе TrueTurn</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Адаптивное управление точностью токарной обработки: управление профилем вала от детали к детали, компенсация прогиба расточной оправки в процессе обработки, программирование подач и коррекция приводов.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;</translation>
     </message>
     <message>
         <source>TrueTurn — adaptive lathe control</source>
@@ -3318,6 +3814,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>History: %1</source>
         <translation>История: %1</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Log file: %3&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Адаптивное управление точностью токарной обработки: управление продольным профилем вала от детали к детали, компенсация прогиба расточной оправки в процессе обработки, программирование подачи и коррекция приводов.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Файл журнала: %3&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>не ведётся</translation>
     </message>
 </context>
 <context>
@@ -4062,16 +4566,16 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>между точками</translation>
     </message>
     <message>
-        <source>simulated</source>
-        <translation>симуляция</translation>
-    </message>
-    <message>
         <source>x = %1</source>
         <translation>x = %1</translation>
     </message>
     <message>
         <source>tolerance</source>
         <translation>допуск</translation>
+    </message>
+    <message>
+        <source>true profile</source>
+        <translation>истинный профиль</translation>
     </message>
 </context>
 <context>
@@ -4194,10 +4698,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Станок</translation>
     </message>
     <message>
-        <source>Simulated lathe (built in)</source>
-        <translation>Симулятор станка</translation>
-    </message>
-    <message>
         <source>Real lathe (Devices page)</source>
         <translation>Реальный станок</translation>
     </message>
@@ -4236,14 +4736,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>The run cannot start</source>
         <translation>Серию невозможно запустить</translation>
-    </message>
-    <message>
-        <source>real lathe</source>
-        <translation>реальный станок</translation>
-    </message>
-    <message>
-        <source>simulated lathe</source>
-        <translation>симулятор станка</translation>
     </message>
     <message>
         <source>Run started: %1, %2, z = %3, %4</source>
@@ -4286,10 +4778,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Авария — ЧПУ сохраняет последнюю коррекцию</translation>
     </message>
     <message>
-        <source>Devices: the built-in lathe simulator (its own CNC, gauge and part cycle)</source>
-        <translation>Устройства: встроенный симулятор станка (свои ЧПУ, микрометр и цикл обработки деталей)</translation>
-    </message>
-    <message>
         <source>Gauge: %1 · CNC: %2</source>
         <translation>Микрометр: %1 · ЧПУ: %2</translation>
     </message>
@@ -4318,12 +4806,20 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Нажмите «Пуск»: коррекции каждой детали передаются в ЧПУ; обработайте деталь и нажмите «Деталь готова».</translation>
     </message>
     <message>
-        <source>Press Start: parts of 325 mm shafts are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
-        <translation>Нажмите «Пуск»: валы длиной 325 мм обтачиваются на симуляторе станка и измеряются в контрольных точках, а следующая деталь корректируется.</translation>
-    </message>
-    <message>
         <source>Parts done: %1</source>
         <translation>Готово деталей: %1</translation>
+    </message>
+    <message>
+        <source>The machine chosen is no longer offered; choose another.</source>
+        <translation>Выбранный станок больше не предлагается; выберите другой.</translation>
+    </message>
+    <message>
+        <source>Machine: %1 (its own CNC, gauge and part cycle)</source>
+        <translation>Станок: %1 (свои ЧПУ, измерительный прибор и цикл детали)</translation>
+    </message>
+    <message>
+        <source>Press Start: %1</source>
+        <translation>Нажмите «Пуск»: %1</translation>
     </message>
 </context>
 <context>

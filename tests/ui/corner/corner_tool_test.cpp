@@ -152,6 +152,7 @@ TEST_F(CornerToolTest, IsATabOfTheProcessPage) {
     ProcessTool* tool = page.tool(QStringLiteral("corner"));
     ASSERT_NE(tool, nullptr);
     EXPECT_EQ(tool->title(), QStringLiteral("Corner pulse"));
+    page.tabs()->setCurrentWidget(tool);
     EXPECT_TRUE(tool->isVisible());
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("corner_5_process_page")));
 }
