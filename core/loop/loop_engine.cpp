@@ -168,9 +168,12 @@ void LoopEngine::step() {
     if (m_state == LoopState::Fault) return;
     collectReadings();
     if (m_state == LoopState::Fault) return;
-    if (m_state == LoopState::Paused && m_pauseCause == PauseCause::Gauge) {
+    if (m_state == LoopState::Paused &&
+        (m_pauseCause == PauseCause::Gauge || m_pauseCause == PauseCause::GaugeSilent)) {
         const std::int64_t due = m_nextPart - m_config.delayParts;
-        if (m_measured.count(due) || m_ports.gauge.health().ready()) {
+        const bool back =
+            m_pauseCause == PauseCause::Gauge ? m_ports.gauge.health().ready() : m_ports.gauge.handEntry();
+        if (m_measured.count(due) || back) {
             m_pauseCause = PauseCause::None;
             m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
             setState(LoopState::Running, notice(NoticeKind::GaugeBack));
@@ -361,8 +364,8 @@ void LoopEngine::startNextPart() {
                 silent.otherPart = due;
                 setState(LoopState::Paused, silent);
                 alarm("gauge-silent", silent, due);
-            } else if (now - m_waitingSinceS >= m_config.gaugeTimeoutS) {
-                m_pauseCause = PauseCause::Gauge;
+            } else if (!m_ports.gauge.handEntry() && now - m_waitingSinceS >= m_config.gaugeTimeoutS) {
+                m_pauseCause = PauseCause::GaugeSilent;
                 Notice late = notice(NoticeKind::NoDiameters, n, due);
                 late.value = (now - m_waitingSinceS) / 60.0;
                 setState(LoopState::Paused, late);

@@ -115,7 +115,10 @@ private:
         std::optional<PartMeasurementRecord> usedMeasurement;
         ControllerState controllerState;
     };
-    enum class PauseCause { None, Operator, Gauge };
+    /// Why the loop paused: the operator; a gauge that is not ready (continues when it is); diameters
+    /// that did not come from a gauge that says it is ready (continues when they come, or when they are
+    /// typed by hand).
+    enum class PauseCause { None, Operator, Gauge, GaugeSilent };
 
     void collectFinishedParts();
     void collectReadings();

@@ -14,6 +14,7 @@ namespace tt::core {
 class ManualGauge final : public DiameterGauge {
 public:
     DeviceHealth health() const override { return {DeviceState::Ready, "diameters are entered by hand"}; }
+    bool handEntry() const override { return true; }
     void requestReading() override {}
     std::optional<GaugeReading> takeReading() override;
     /// Queues one reading (diameter, mm; time, s).
@@ -36,6 +37,7 @@ public:
     std::optional<GaugeReading> takeReading() override;
     /// true: diameters come by hand; false: from the automatic gauge.
     void setManual(bool manual) { m_isManual = manual; }
+    bool handEntry() const override { return m_isManual; }
     /// Whether diameters come by hand.
     bool manual() const { return m_isManual; }
 

@@ -25,6 +25,9 @@ public:
     virtual void requestReading() = 0;
     /// The oldest reading not yet taken, if any (never blocks).
     virtual std::optional<GaugeReading> takeReading() = 0;
+    /// The readings come from a person typing them in: the loop waits for them as long as it takes,
+    /// without the gauge timeout.
+    virtual bool handEntry() const { return false; }
 };
 
 }  // namespace tt::core

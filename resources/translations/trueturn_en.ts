@@ -931,6 +931,162 @@
         <source>Part %1, point %2: %3</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Starting part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing run %1 with part %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paused by the operator; the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machining part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge answers again; continuing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring the last parts (part %1 next)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for the diameters of part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run complete: part %1 was the last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The end of the run could not be stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine did not start part %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not measured: skipped by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the reading is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>every control point already has a reading; re-take a point to replace it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the point was already measured for part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 has not been machined yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 was not machined under this controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1 is too late: the controller keeps the last %2 parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the controller could not use it: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -1417,6 +1573,30 @@
         <source>Parts of the set-up are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>simulated CNC ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machining</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waiting for the next part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the simulated gauge does not answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>automatic measuring is off: diameters are entered by hand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated micrometer ready</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1481,165 +1661,6 @@
     </message>
     <message>
         <source>device %1: the saved entry is incomplete</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui</name>
-    <message>
-        <source>Starting part %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Continuing run %1 with part %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Paused by the operator; the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Machining part %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Continuing</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The gauge answers again; continuing</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Measuring the last parts (part %1 next)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Waiting for the diameters of part %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run complete: part %1 was the last</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1 finished</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1 measured</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The end of the run could not be stored: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The machine did not start part %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not measured</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not measured: skipped by the operator</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the reading is not a number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not a finite number</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>every control point already has a reading; re-take a point to replace it</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the point was already measured for part %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>part %1 has not been machined yet</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>part %1 was not machined under this controller</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>part %1 is too late: the controller keeps the last %2 parts</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the controller could not use it: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rejected by the controller: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4753,10 +4774,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Gauge: %1 · CNC: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1: “%2” — %3</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4794,6 +4811,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Press Start: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gauge: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · CNC: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

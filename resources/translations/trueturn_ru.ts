@@ -933,6 +933,162 @@
         <source>Part %1, point %2: %3</source>
         <translation>Деталь %1, точка %2: %3</translation>
     </message>
+    <message>
+        <source>Starting part %1</source>
+        <translation>Запуск детали %1</translation>
+    </message>
+    <message>
+        <source>Continuing run %1 with part %2</source>
+        <translation>Продолжение цикла %1 с детали %2</translation>
+    </message>
+    <message>
+        <source>Paused by the operator; the CNC keeps the last correction</source>
+        <translation>Пауза по команде оператора; ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Machining part %1</source>
+        <translation>Обработка детали %1</translation>
+    </message>
+    <message>
+        <source>Continuing</source>
+        <translation>Продолжение</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Остановлено</translation>
+    </message>
+    <message>
+        <source>The gauge answers again; continuing</source>
+        <translation>Измерительный прибор снова отвечает; продолжение</translation>
+    </message>
+    <message>
+        <source>Measuring the last parts (part %1 next)</source>
+        <translation>Измерение последних деталей (следующая — деталь %1)</translation>
+    </message>
+    <message>
+        <source>Waiting for the diameters of part %1</source>
+        <translation>Ожидание диаметров детали %1</translation>
+    </message>
+    <message>
+        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
+        <translation>Измерительный прибор не готов (%1); для детали %2 нужны диаметры детали %3. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
+        <translation>Нет диаметров детали %1 уже %2 мин. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Run complete: part %1 was the last</source>
+        <translation>Цикл завершён: деталь %1 была последней</translation>
+    </message>
+    <message>
+        <source>Part %1 finished</source>
+        <translation>Деталь %1 готова</translation>
+    </message>
+    <message>
+        <source>Part %1 measured</source>
+        <translation>Деталь %1 измерена</translation>
+    </message>
+    <message>
+        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
+        <translation>Деталь %1 была на станке при остановке цикла; она не записана</translation>
+    </message>
+    <message>
+        <source>The end of the run could not be stored: %1</source>
+        <translation>Не удалось записать завершение цикла: %1</translation>
+    </message>
+    <message>
+        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
+        <translation>Станок сообщил о готовности детали %1, которую контур не запускал; сообщение пропущено</translation>
+    </message>
+    <message>
+        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось записать историю, деталь %1 не сохранена (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
+        <translation>Пришло показание %1 мм, но ни одна деталь не ждёт измерения; оно пропущено</translation>
+    </message>
+    <message>
+        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось сохранить диаметры детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
+        <translation>Не удалось вычислить коррекции для детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
+        <translation>Деталь %1: регулятор не дал пригодной коррекции в точке %2 (x = %3 мм); сохраняется %4 мм</translation>
+    </message>
+    <message>
+        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
+        <translation>Деталь %1: коррекция в точке %2 (x = %3 мм) ограничена с %4 до %5 мм</translation>
+    </message>
+    <message>
+        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
+        <translation>ЧПУ не приняло коррекции для детали %1: %2; сохраняется последняя коррекция</translation>
+    </message>
+    <message>
+        <source>The machine did not start part %1: %2</source>
+        <translation>Станок не запустил деталь %1: %2</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>не измерено</translation>
+    </message>
+    <message>
+        <source>not measured: skipped by the operator</source>
+        <translation>не измерено: пропущено оператором</translation>
+    </message>
+    <message>
+        <source>the reading is not a number</source>
+        <translation>показание не является числом</translation>
+    </message>
+    <message>
+        <source>not a finite number</source>
+        <translation>не конечное число</translation>
+    </message>
+    <message>
+        <source>every control point already has a reading; re-take a point to replace it</source>
+        <translation>во всех контрольных точках уже есть показания; чтобы заменить показание, измерьте точку заново</translation>
+    </message>
+    <message>
+        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
+        <translation>показание %1 мм отличается от номинала %3 мм больше чем на %2 мм; проверьте точку (x = %4 мм) и измерьте снова</translation>
+    </message>
+    <message>
+        <source>the point was already measured for part %1</source>
+        <translation>точка уже измерена для детали %1</translation>
+    </message>
+    <message>
+        <source>part %1 has not been machined yet</source>
+        <translation>деталь %1 ещё не обработана</translation>
+    </message>
+    <message>
+        <source>part %1 was not machined under this controller</source>
+        <translation>деталь %1 обработана не под этим регулятором</translation>
+    </message>
+    <message>
+        <source>part %1 is too late: the controller keeps the last %2 parts</source>
+        <translation>деталь %1 опоздала: регулятор хранит последние %2 деталей</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
+        <translation>отклонено регулятором: %1 σ от прогноза (порог %2 σ)</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
+        <translation>отклонено регулятором: отклонение %1 мм достигает аварийной границы %2 мм; проверьте деталь</translation>
+    </message>
+    <message>
+        <source>the controller could not use it: %1</source>
+        <translation>регулятор не смог его использовать: %1</translation>
+    </message>
+    <message>
+        <source>rejected by the controller: %1</source>
+        <translation>отклонено регулятором: %1</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -1419,6 +1575,30 @@
         <source>Parts of the set-up are turned on the simulated lathe, measured at the control points and the next part is corrected.</source>
         <translation>детали наладки обтачиваются на симуляторе станка и измеряются в контрольных точках, а следующая деталь корректируется.</translation>
     </message>
+    <message>
+        <source>simulated CNC ready</source>
+        <translation>симулятор ЧПУ готов</translation>
+    </message>
+    <message>
+        <source>machining</source>
+        <translation>идёт обработка</translation>
+    </message>
+    <message>
+        <source>waiting for the next part</source>
+        <translation>ожидание следующей детали</translation>
+    </message>
+    <message>
+        <source>the simulated gauge does not answer</source>
+        <translation>симулятор микрометра не отвечает</translation>
+    </message>
+    <message>
+        <source>automatic measuring is off: diameters are entered by hand</source>
+        <translation>автоматическое измерение выключено: диаметры вводятся вручную</translation>
+    </message>
+    <message>
+        <source>simulated micrometer ready</source>
+        <translation>симулятор микрометра готов</translation>
+    </message>
 </context>
 <context>
     <name>tt::devices::DeviceManager</name>
@@ -1485,165 +1665,6 @@
     <message>
         <source>device %1: the saved entry is incomplete</source>
         <translation>устройство %1: сохранённая запись неполна</translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui</name>
-    <message>
-        <source>Starting part %1</source>
-        <translation>Запуск детали %1</translation>
-    </message>
-    <message>
-        <source>Continuing run %1 with part %2</source>
-        <translation>Продолжение цикла %1 с детали %2</translation>
-    </message>
-    <message>
-        <source>Paused by the operator; the CNC keeps the last correction</source>
-        <translation>Пауза по команде оператора; ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>Machining part %1</source>
-        <translation>Обработка детали %1</translation>
-    </message>
-    <message>
-        <source>Continuing</source>
-        <translation>Продолжение</translation>
-    </message>
-    <message>
-        <source>Stopped</source>
-        <translation>Остановлено</translation>
-    </message>
-    <message>
-        <source>The gauge answers again; continuing</source>
-        <translation>Измерительный прибор снова отвечает; продолжение</translation>
-    </message>
-    <message>
-        <source>Measuring the last parts (part %1 next)</source>
-        <translation>Измерение последних деталей (следующая — деталь %1)</translation>
-    </message>
-    <message>
-        <source>Waiting for the diameters of part %1</source>
-        <translation>Ожидание диаметров детали %1</translation>
-    </message>
-    <message>
-        <source>The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps the last correction</source>
-        <translation>Измерительный прибор не готов (%1); для детали %2 нужны диаметры детали %3. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction</source>
-        <translation>Нет диаметров детали %1 уже %2 мин. Пауза, ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>Run complete: part %1 was the last</source>
-        <translation>Цикл завершён: деталь %1 была последней</translation>
-    </message>
-    <message>
-        <source>Part %1 finished</source>
-        <translation>Деталь %1 готова</translation>
-    </message>
-    <message>
-        <source>Part %1 measured</source>
-        <translation>Деталь %1 измерена</translation>
-    </message>
-    <message>
-        <source>Part %1 was on the machine when the run was stopped; it is not recorded</source>
-        <translation>Деталь %1 была на станке при остановке цикла; она не записана</translation>
-    </message>
-    <message>
-        <source>The end of the run could not be stored: %1</source>
-        <translation>Не удалось записать завершение цикла: %1</translation>
-    </message>
-    <message>
-        <source>The machine reported part %1 finished, which the loop did not start; ignored</source>
-        <translation>Станок сообщил о готовности детали %1, которую контур не запускал; сообщение пропущено</translation>
-    </message>
-    <message>
-        <source>The history could not be written, part %1 is not stored (%2); the CNC keeps the last correction</source>
-        <translation>Не удалось записать историю, деталь %1 не сохранена (%2); ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>A reading of %1 mm arrived but no part is waiting to be measured; it was ignored</source>
-        <translation>Пришло показание %1 мм, но ни одна деталь не ждёт измерения; оно пропущено</translation>
-    </message>
-    <message>
-        <source>The diameters of part %1 could not be stored (%2); the CNC keeps the last correction</source>
-        <translation>Не удалось сохранить диаметры детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>The corrections for part %1 could not be computed (%2); the CNC keeps the last correction</source>
-        <translation>Не удалось вычислить коррекции для детали %1 (%2); ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm</source>
-        <translation>Деталь %1: регулятор не дал пригодной коррекции в точке %2 (x = %3 мм); сохраняется %4 мм</translation>
-    </message>
-    <message>
-        <source>Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm</source>
-        <translation>Деталь %1: коррекция в точке %2 (x = %3 мм) ограничена с %4 до %5 мм</translation>
-    </message>
-    <message>
-        <source>The CNC refused the corrections for part %1: %2; it keeps the last correction</source>
-        <translation>ЧПУ не приняло коррекции для детали %1: %2; сохраняется последняя коррекция</translation>
-    </message>
-    <message>
-        <source>The machine did not start part %1: %2</source>
-        <translation>Станок не запустил деталь %1: %2</translation>
-    </message>
-    <message>
-        <source>not measured</source>
-        <translation>не измерено</translation>
-    </message>
-    <message>
-        <source>not measured: skipped by the operator</source>
-        <translation>не измерено: пропущено оператором</translation>
-    </message>
-    <message>
-        <source>the reading is not a number</source>
-        <translation>показание не является числом</translation>
-    </message>
-    <message>
-        <source>not a finite number</source>
-        <translation>не конечное число</translation>
-    </message>
-    <message>
-        <source>every control point already has a reading; re-take a point to replace it</source>
-        <translation>во всех контрольных точках уже есть показания; чтобы заменить показание, измерьте точку заново</translation>
-    </message>
-    <message>
-        <source>reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and measure again</source>
-        <translation>показание %1 мм отличается от номинала %3 мм больше чем на %2 мм; проверьте точку (x = %4 мм) и измерьте снова</translation>
-    </message>
-    <message>
-        <source>the point was already measured for part %1</source>
-        <translation>точка уже измерена для детали %1</translation>
-    </message>
-    <message>
-        <source>part %1 has not been machined yet</source>
-        <translation>деталь %1 ещё не обработана</translation>
-    </message>
-    <message>
-        <source>part %1 was not machined under this controller</source>
-        <translation>деталь %1 обработана не под этим регулятором</translation>
-    </message>
-    <message>
-        <source>part %1 is too late: the controller keeps the last %2 parts</source>
-        <translation>деталь %1 опоздала: регулятор хранит последние %2 деталей</translation>
-    </message>
-    <message>
-        <source>rejected by the controller: %1 σ from the prediction (gate %2 σ)</source>
-        <translation>отклонено регулятором: %1 σ от прогноза (порог %2 σ)</translation>
-    </message>
-    <message>
-        <source>rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part</source>
-        <translation>отклонено регулятором: отклонение %1 мм достигает аварийной границы %2 мм; проверьте деталь</translation>
-    </message>
-    <message>
-        <source>the controller could not use it: %1</source>
-        <translation>регулятор не смог его использовать: %1</translation>
-    </message>
-    <message>
-        <source>rejected by the controller: %1</source>
-        <translation>отклонено регулятором: %1</translation>
     </message>
 </context>
 <context>
@@ -4778,10 +4799,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Авария — ЧПУ сохраняет последнюю коррекцию</translation>
     </message>
     <message>
-        <source>Gauge: %1 · CNC: %2</source>
-        <translation>Микрометр: %1 · ЧПУ: %2</translation>
-    </message>
-    <message>
         <source>%1: “%2” — %3</source>
         <translation>%1: «%2» — %3</translation>
     </message>
@@ -4820,6 +4837,14 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Press Start: %1</source>
         <translation>Нажмите «Пуск»: %1</translation>
+    </message>
+    <message>
+        <source>Gauge: %1</source>
+        <translation>Микрометр: %1</translation>
+    </message>
+    <message>
+        <source>%1 · CNC: %2</source>
+        <translation>%1 · ЧПУ: %2</translation>
     </message>
 </context>
 <context>

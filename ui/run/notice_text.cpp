@@ -6,10 +6,6 @@ namespace tt::ui {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("Notice", text);
-}
-
 QString mm(double value, int decimals = 3) {
     return QString::number(value, 'f', decimals);
 }
@@ -22,39 +18,42 @@ QString stateText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {
         case K::Starting:
-            return tr("Starting part %1").arg(n.part);
+            return QCoreApplication::translate("Notice", "Starting part %1").arg(n.part);
         case K::ContinuingRun:
-            return tr("Continuing run %1 with part %2").arg(n.otherPart).arg(n.part);
+            return QCoreApplication::translate("Notice", "Continuing run %1 with part %2").arg(n.otherPart).arg(n.part);
         case K::PausedByOperator:
-            return tr("Paused by the operator; the CNC keeps the last correction");
+            return QCoreApplication::translate("Notice", "Paused by the operator; the CNC keeps the last correction");
         case K::Machining:
-            return tr("Machining part %1").arg(n.part);
+            return QCoreApplication::translate("Notice", "Machining part %1").arg(n.part);
         case K::Continuing:
-            return tr("Continuing");
+            return QCoreApplication::translate("Notice", "Continuing");
         case K::Stopped:
-            return tr("Stopped");
+            return QCoreApplication::translate("Notice", "Stopped");
         case K::GaugeBack:
-            return tr("The gauge answers again; continuing");
+            return QCoreApplication::translate("Notice", "The gauge answers again; continuing");
         case K::MeasuringLastParts:
-            return tr("Measuring the last parts (part %1 next)").arg(n.part);
+            return QCoreApplication::translate("Notice", "Measuring the last parts (part %1 next)").arg(n.part);
         case K::WaitingForDiameters:
-            return tr("Waiting for the diameters of part %1").arg(n.otherPart);
+            return QCoreApplication::translate("Notice", "Waiting for the diameters of part %1").arg(n.otherPart);
         case K::GaugeNotReady:
-            return tr("The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps "
-                      "the last correction")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "The gauge is not ready (%1); part %2 needs the diameters of part %3. Paused, the CNC keeps "
+                       "the last correction")
                 .arg(cause(n))
                 .arg(n.part)
                 .arg(n.otherPart);
         case K::NoDiameters:
-            return tr("No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction")
+            return QCoreApplication::translate(
+                       "Notice", "No diameters of part %1 for %2 min. Paused, the CNC keeps the last correction")
                 .arg(n.otherPart)
                 .arg(n.value, 0, 'f', 1);
         case K::RunComplete:
-            return tr("Run complete: part %1 was the last").arg(n.part);
+            return QCoreApplication::translate("Notice", "Run complete: part %1 was the last").arg(n.part);
         case K::PartFinished:
-            return tr("Part %1 finished").arg(n.part);
+            return QCoreApplication::translate("Notice", "Part %1 finished").arg(n.part);
         case K::PartMeasured:
-            return tr("Part %1 measured").arg(n.part);
+            return QCoreApplication::translate("Notice", "Part %1 measured").arg(n.part);
         default:
             return {};
     }
@@ -64,43 +63,59 @@ QString faultText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {
         case K::PartAbandoned:
-            return tr("Part %1 was on the machine when the run was stopped; it is not recorded").arg(n.part);
+            return QCoreApplication::translate(
+                       "Notice", "Part %1 was on the machine when the run was stopped; it is not recorded")
+                .arg(n.part);
         case K::HistoryEndFailed:
-            return tr("The end of the run could not be stored: %1").arg(cause(n));
+            return QCoreApplication::translate("Notice", "The end of the run could not be stored: %1").arg(cause(n));
         case K::UnexpectedPartFinished:
-            return tr("The machine reported part %1 finished, which the loop did not start; ignored").arg(n.part);
+            return QCoreApplication::translate(
+                       "Notice", "The machine reported part %1 finished, which the loop did not start; ignored")
+                .arg(n.part);
         case K::HistoryPartFailed:
-            return tr("The history could not be written, part %1 is not stored (%2); the CNC keeps the last "
-                      "correction")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "The history could not be written, part %1 is not stored (%2); the CNC keeps the last "
+                       "correction")
                 .arg(n.part)
                 .arg(cause(n));
         case K::ReadingUnexpected:
-            return tr("A reading of %1 mm arrived but no part is waiting to be measured; it was ignored")
+            return QCoreApplication::translate(
+                       "Notice", "A reading of %1 mm arrived but no part is waiting to be measured; it was ignored")
                 .arg(mm(n.value));
         case K::HistoryMeasurementFailed:
-            return tr("The diameters of part %1 could not be stored (%2); the CNC keeps the last correction")
+            return QCoreApplication::translate(
+                       "Notice", "The diameters of part %1 could not be stored (%2); the CNC keeps the last correction")
                 .arg(n.part)
                 .arg(cause(n));
         case K::CorrectionsFailed:
-            return tr("The corrections for part %1 could not be computed (%2); the CNC keeps the last correction")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "The corrections for part %1 could not be computed (%2); the CNC keeps the last correction")
                 .arg(n.part)
                 .arg(cause(n));
         case K::CorrectionHeld:
-            return tr("Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Part %1: the controller gave no usable correction at point %2 (x = %3 mm); holding %4 mm")
                 .arg(n.part)
                 .arg(n.point)
                 .arg(mm(n.zMm, 1), mm(n.reference));
         case K::CorrectionLimited:
-            return tr("Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm")
+            return QCoreApplication::translate("Notice",
+                                               "Part %1: correction at point %2 (x = %3 mm) limited from %4 to %5 mm")
                 .arg(n.part)
                 .arg(n.point)
                 .arg(mm(n.zMm, 1), mm(n.value), mm(n.reference));
         case K::CncRefused:
-            return tr("The CNC refused the corrections for part %1: %2; it keeps the last correction")
+            return QCoreApplication::translate(
+                       "Notice", "The CNC refused the corrections for part %1: %2; it keeps the last correction")
                 .arg(n.part)
                 .arg(cause(n));
         case K::MachineRefused:
-            return tr("The machine did not start part %1: %2").arg(n.part).arg(cause(n));
+            return QCoreApplication::translate("Notice", "The machine did not start part %1: %2")
+                .arg(n.part)
+                .arg(cause(n));
         default:
             return {};
     }
@@ -110,41 +125,47 @@ QString rejectionText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {
         case K::NotMeasured:
-            return tr("not measured");
+            return QCoreApplication::translate("Notice", "not measured");
         case K::SkippedByOperator:
-            return tr("not measured: skipped by the operator");
+            return QCoreApplication::translate("Notice", "not measured: skipped by the operator");
         case K::NotANumber:
-            return tr("the reading is not a number");
+            return QCoreApplication::translate("Notice", "the reading is not a number");
         case K::NotFinite:
-            return tr("not a finite number");
+            return QCoreApplication::translate("Notice", "not a finite number");
         case K::AllPointsRead:
-            return tr("every control point already has a reading; re-take a point to replace it");
+            return QCoreApplication::translate(
+                "Notice", "every control point already has a reading; re-take a point to replace it");
         case K::Implausible:
-            return tr("reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and "
-                      "measure again")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "reading %1 mm is more than %2 mm from the nominal %3 mm; check the point (x = %4 mm) and "
+                       "measure again")
                 .arg(mm(n.value), mm(n.limit), mm(n.reference), mm(n.zMm, 1));
         case K::AlreadyMeasured:
-            return tr("the point was already measured for part %1").arg(n.part);
+            return QCoreApplication::translate("Notice", "the point was already measured for part %1").arg(n.part);
         case K::NotMachinedYet:
-            return tr("part %1 has not been machined yet").arg(n.part);
+            return QCoreApplication::translate("Notice", "part %1 has not been machined yet").arg(n.part);
         case K::NotUnderController:
-            return tr("part %1 was not machined under this controller").arg(n.part);
+            return QCoreApplication::translate("Notice", "part %1 was not machined under this controller").arg(n.part);
         case K::TooLate:
-            return tr("part %1 is too late: the controller keeps the last %2 parts")
+            return QCoreApplication::translate("Notice", "part %1 is too late: the controller keeps the last %2 parts")
                 .arg(n.part)
                 .arg(static_cast<long long>(n.limit));
         case K::Outlier:
-            return tr("rejected by the controller: %1 σ from the prediction (gate %2 σ)")
+            return QCoreApplication::translate("Notice",
+                                               "rejected by the controller: %1 σ from the prediction (gate %2 σ)")
                 .arg(n.value, 0, 'g', 3)
                 .arg(n.limit, 0, 'g', 3);
         case K::AlarmBand:
-            return tr("rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part")
+            return QCoreApplication::translate(
+                       "Notice",
+                       "rejected by the controller: the deviation %1 mm reaches the alarm band %2 mm; check the part")
                 .arg(n.value, 0, 'g', 4)
                 .arg(n.limit, 0, 'g', 4);
         case K::ControllerFailed:
-            return tr("the controller could not use it: %1").arg(cause(n));
+            return QCoreApplication::translate("Notice", "the controller could not use it: %1").arg(cause(n));
         case K::ControllerRejected:
-            return tr("rejected by the controller: %1").arg(cause(n));
+            return QCoreApplication::translate("Notice", "rejected by the controller: %1").arg(cause(n));
         default:
             return {};
     }

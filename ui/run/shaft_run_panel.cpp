@@ -476,7 +476,7 @@ void ShaftRunPanel::onStarted(const RunLayout& layout) {
     m_profile->setRun(layout);
     m_manual->setPoints(layout.pointZMm, layout.nominalDiameterMm, layout.plausibleRangeMm);
     addAlarm(tr("Run started: %1, %2, z = %3, %4")
-                 .arg(layout.preset, layout.controller.toUpper())
+                 .arg(layout.preset, m_controller->itemText(m_controller->findData(layout.controller)))
                  .arg(layout.delay)
                  .arg(layout.machineName),
              false);
@@ -578,7 +578,9 @@ QString ShaftRunPanel::deviceText() const {
     if (!real) {
         if (!m_haveRun || idle)
             return tr("Machine: %1 (its own CNC, gauge and part cycle)").arg(m_machine->currentText());
-        return tr("Gauge: %1 · CNC: %2").arg(healthText(m_snapshot.gauge), healthWord(m_snapshot.cnc.state));
+        const QString gauge = m_snapshot.manualEntry ? tr("Diameters: typed in by hand")
+                                                     : tr("Gauge: %1").arg(healthText(m_snapshot.gauge));
+        return tr("%1 · CNC: %2").arg(gauge, healthWord(m_snapshot.cnc.state));
     }
     // The real lathe: which devices, and their state in a word (with the reason when not ready).
     // While idle the reason of a device that is not ready is shown; during a run the loop's own words and the

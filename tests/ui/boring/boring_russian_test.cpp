@@ -3,18 +3,15 @@
 // engine sends kinds with data, the tab words them. Screenshot: screenshots/boring_tab_ru_silent.png.
 #include <gtest/gtest.h>
 
-#include <QAbstractButton>
 #include <QApplication>
 #include <QComboBox>
-#include <QGroupBox>
 #include <QLabel>
-#include <QProgressBar>
-#include <QRegularExpression>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include "boring_tab.h"
+#include "english_words.h"
 #include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -23,31 +20,6 @@
 
 namespace tt::ui {
 namespace {
-
-/// Texts `root` shows that hold an English word (two Latin letters in a row), each with where it is.
-/// `data` are names the operator or the preset gave (a tool's name), not texts of the terminal.
-QStringList englishIn(QWidget* root, const QStringList& data) {
-    static const QRegularExpression latinWord(QStringLiteral("[A-Za-z]{2,}"));
-    QStringList found;
-    auto check = [&](const QWidget* w, QString text) {
-        for (const QString& name : data)
-            text.remove(name);
-        if (text.contains(latinWord))
-            found << QStringLiteral("\"%1\" in %2 '%3'")
-                         .arg(text, QString::fromLatin1(w->metaObject()->className()), w->objectName());
-    };
-    for (QWidget* w : root->findChildren<QWidget*>()) {
-        if (!w->isVisibleTo(root)) continue;
-        if (auto* label = qobject_cast<QLabel*>(w)) check(w, label->text());
-        if (auto* button = qobject_cast<QAbstractButton*>(w)) check(w, button->text());
-        if (auto* group = qobject_cast<QGroupBox*>(w)) check(w, group->title());
-        if (auto* progress = qobject_cast<QProgressBar*>(w)) check(w, progress->text());
-        if (auto* combo = qobject_cast<QComboBox*>(w))
-            for (int i = 0; i < combo->count(); ++i)
-                check(w, combo->itemText(i));
-    }
-    return found;
-}
 
 /// The tab of a 1280 × 800 main window in Russian, with the simulator's drive read-out and probe
 /// mandrel (named in Russian, as the operator would) and their own simulated passes.
@@ -85,9 +57,9 @@ protected:
         QTest::qWait(150);  // the plots and numbers of the last cycles
         EXPECT_TRUE(panel->reason().contains(reasonWords)) << panel->reason().toStdString();
         EXPECT_TRUE(test::saveScreenshot(window, shot));
-        QStringList english = englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        QStringList english = test::englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
         panel->stop();
-        english << englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
+        english << test::englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
         devices.device(device)->faultSwitches()->silent = false;
         return english;
     }
