@@ -13,6 +13,7 @@
 #include "core/ports/device_health.h"
 #include "core/ports/diameter_gauge.h"
 #include "core/ports/drive_current.h"
+#include "devices/api/calibration_stand.h"
 #include "devices/api/device_kind.h"
 
 namespace tt::core {
@@ -137,6 +138,8 @@ public:
     virtual FaultSwitches* faultSwitches() { return nullptr; }
     /// Inputs of the simulator's devices only.
     virtual SimulationInputs* simulationInputs() { return nullptr; }
+    /// The calibration stand (screw jack, hydraulic jack), for the simulator's devices only.
+    virtual CalibrationStand* calibrationStand() { return nullptr; }
 
     /// Called (in the device's thread) whenever state, live value or last error change.
     void setChangeListener(std::function<void()> listener) { m_listener = std::move(listener); }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QVariantMap>
+#include <optional>
 
 #include "devices/api/probe_status.h"
 #include "devices/simulator/mandrel_emulator.h"
@@ -13,7 +14,9 @@ namespace tt::devices {
 /// silence and table uploads behave as on the machine. True deflections come from the
 /// injectable source (setDeflectionSource) or, stand-alone, the constant deflections set.
 /// Settings: rateHz, deflection1Mm, deflection2Mm, silenceTimeoutMs.
-class SimulatedProbe final : public SimulatedDevice, public ProbeSessionPorts {
+/// On its calibration stand (CalibrationStand) a screw jack bends the bar to a tip deflection in
+/// one plane; while it is engaged the mandrel measures the jack instead of the deflection source.
+class SimulatedProbe final : public SimulatedDevice, public ProbeSessionPorts, public CalibrationStand {
 public:
     SimulatedProbe(const QVariantMap& settings, const DeviceContext& context);
 
@@ -24,9 +27,18 @@ public:
     TableUploadTarget* tableUploadTarget() override { return this; }
     QList<DeviceStatistic> statistics() const override { return sessionStatistics(); }
     void setDeflectionSource(std::function<std::array<double, 2>(double)> source) override;
+    CalibrationStand* calibrationStand() override { return this; }
 
-    /// The emulated microcontroller (tests inspect the stored table).
+    bool bendsBar() const override { return true; }
+    void bendBar(int plane, double tipDeflectionMm) override;
+    bool appliesLoad() const override { return false; }
+    void applyLoadN(double loadN) override;
+    bool engaged() const override { return m_jack.has_value(); }
+    void release() override { m_jack.reset(); }
+
+    /// The emulated microcontroller (tests inspect the stored table and set its faults).
     const MandrelEmulator& emulator() const { return m_emulator; }
+    MandrelEmulator& emulator() { return m_emulator; }
 
 protected:
     void tick() override;
@@ -37,6 +49,7 @@ private:
 
     MandrelEmulator m_emulator;
     std::function<std::array<double, 2>(double)> m_source;
+    std::optional<std::array<double, 2>> m_jack;  ///< the stand's screw jack, when engaged
     double m_lastTickS = 0.0;
 };
 
