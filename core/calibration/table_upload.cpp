@@ -29,6 +29,7 @@ void TableUploadProcedure::start(TableUploadPort& port, std::vector<std::uint8_t
     m_waitedS = 0.0;
     m_readback.reset();
     m_deviceMessage.clear();
+    m_linkFailed = false;
     m_problem = Problem::None;
     try {
         port.startUpload(m_image, version, m_crc32c);
@@ -46,13 +47,9 @@ void TableUploadProcedure::pump(TableUploadPort& port, double elapsedS) {
         const UploadLinkStatus s = port.uploadStatus();
         m_progress = std::isfinite(s.progress) ? std::clamp(s.progress, 0.0, 1.0) : m_progress;
         m_deviceMessage = s.message;
-        if (s.phase == UploadLinkStatus::Phase::Failed) {
-            m_phase = Phase::Failed;
-            m_problem = Problem::LinkFailed;
-            return;
-        }
-        if (s.phase != UploadLinkStatus::Phase::Done) return;
-        m_progress = 1.0;
+        m_linkFailed = s.phase == UploadLinkStatus::Phase::Failed;
+        if (s.phase != UploadLinkStatus::Phase::Done && !m_linkFailed) return;
+        if (!m_linkFailed) m_progress = 1.0;
         m_phase = Phase::ReadingBack;
         m_waitedS = 0.0;
         port.requestReadback();
@@ -71,6 +68,11 @@ void TableUploadProcedure::readBack(TableUploadPort& port, double elapsedS) {
     if (std::isfinite(elapsedS) && elapsedS > 0.0) m_waitedS += elapsedS;
     if (m_waitedS < m_timeoutS) {
         port.requestReadback();
+        return;
+    }
+    if (m_linkFailed) {
+        m_phase = Phase::Failed;
+        m_problem = Problem::LinkFailed;
         return;
     }
     m_phase = Phase::Mismatch;

@@ -48,7 +48,9 @@ public:
 
 /// Upload with read-back (issue 6, item 5; probe protocol 2): send the image, wait for the
 /// mandrel to store it, ask which table it holds and compare version, size and CRC with the image
-/// sent. A state machine driven by pump(); its outcome is a kind with data, worded by the UI.
+/// sent. When the link reports a failure the mandrel is still asked, so the outcome says what it
+/// holds (a failure after the image was stored, in its read-back check, shows the CRC it reports).
+/// A state machine driven by pump(); its outcome is a kind with data, worded by the UI.
 class TableUploadProcedure {
 public:
     enum class Phase { Idle, Sending, ReadingBack, Verified, Mismatch, Failed };
@@ -93,6 +95,7 @@ private:
     double m_progress = 0.0;
     double m_waitedS = 0.0;
     std::string m_deviceMessage;
+    bool m_linkFailed = false;  ///< the link reported a failure; reading back what the mandrel holds
     std::optional<TableReadback> m_readback;
 };
 

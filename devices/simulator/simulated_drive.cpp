@@ -40,7 +40,8 @@ core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double 
 
 SimulatedDrive::SimulatedDrive(const QVariantMap& settings, const DeviceContext& context)
     : SimulatedDevice(DeviceKind::DriveCurrent, context, settings.value(QStringLiteral("pollMs"), 20).toInt()),
-      m_cycleS(settings.value(QStringLiteral("pollMs"), 20).toInt() / 1000.0) {
+      m_cycleS(settings.value(QStringLiteral("pollMs"), 20).toInt() / 1000.0),
+      m_onStand(settings.value(QStringLiteral("stand"), true).toBool()) {
     const double amplitude = settings.value(QStringLiteral("amplitudeMm"), 0.02).toDouble();
     const double period = settings.value(QStringLiteral("periodS"), 1.0).toDouble();
     const double friction = settings.value(QStringLiteral("frictionCurrentA"), 2.0).toDouble();

@@ -22,12 +22,11 @@ core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double 
 /// sample travels as registers (current int16 0.01 A, velocity float32 mm/s, position int32
 /// 0.1 um) and is decoded back, so a malformed register value is refused as on the machine.
 /// The drive state comes from the injectable source (setDriveSource) or the oscillation above.
-/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA.
-/// On its calibration stand (CalibrationStand) a hydraulic jack pushes the tool holder with a
-/// known load while the cross feed dithers: from the first load on, the read-out measures
-/// core::KnownLoadRig (the heavy-boring cross feed: true k_p 150 N/A, Coulomb friction 975 N,
-/// current noise 0.3 A; dither 0.01 mm, 0.5 s; one sample per poll period as the PLC cycle) until
-/// the jack is released.
+/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA, stand.
+/// On its calibration stand (CalibrationStand; setting "stand", default on) a hydraulic jack pushes the tool holder
+/// with a known load while the cross feed dithers: from the first load on, the read-out measures core::KnownLoadRig
+/// (the heavy-boring cross feed: true k_p 150 N/A, Coulomb friction 975 N, current noise 0.3 A; dither 0.01 mm, 0.5 s;
+/// one sample per poll period as the PLC cycle) until the jack is released.
 class SimulatedDrive final : public SimulatedDevice, public core::DriveCurrentReadout, public CalibrationStand {
 public:
     SimulatedDrive(const QVariantMap& settings, const DeviceContext& context);
@@ -38,7 +37,7 @@ public:
     core::DriveCurrentReadout* driveCurrentReadout() override { return this; }
     QList<DeviceStatistic> statistics() const override;
     void setDriveSource(std::function<core::DriveSample(double)> source) override;
-    CalibrationStand* calibrationStand() override { return this; }
+    CalibrationStand* calibrationStand() override { return m_onStand ? this : nullptr; }
 
     bool bendsBar() const override { return false; }
     void bendBar(int plane, double tipDeflectionMm) override;
@@ -61,6 +60,7 @@ private:
     std::unique_ptr<core::KnownLoadRig> m_stand;  ///< the stand's hydraulic jack, when engaged
     double m_standOriginS = 0.0;                  ///< device time of the stand's time 0
     double m_cycleS;
+    bool m_onStand;
     std::deque<core::DriveSample> m_samples;
     std::optional<core::DriveSample> m_last;
     int m_missedPolls = 0;

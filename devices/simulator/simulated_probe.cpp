@@ -17,7 +17,9 @@ constexpr double kJackTravelMm = 2.0;
 }  // namespace
 
 SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext& context)
-    : SimulatedDevice(DeviceKind::Probe, context, 10), ProbeSessionPorts(settings) {
+    : SimulatedDevice(DeviceKind::Probe, context, 10),
+      ProbeSessionPorts(settings),
+      m_onStand(settings.value(QStringLiteral("stand"), true).toBool()) {
     const std::array<double, 2> constant{settings.value(QStringLiteral("deflection1Mm"), 0.02).toDouble(),
                                          settings.value(QStringLiteral("deflection2Mm"), -0.005).toDouble()};
     m_source = [constant](double) { return constant; };

@@ -13,9 +13,9 @@ namespace tt::devices {
 /// in-memory wire, driven by the same protocol session as the serial plugin, so corrupt frames,
 /// silence and table uploads behave as on the machine. True deflections come from the
 /// injectable source (setDeflectionSource) or, stand-alone, the constant deflections set.
-/// Settings: rateHz, deflection1Mm, deflection2Mm, silenceTimeoutMs.
-/// On its calibration stand (CalibrationStand) a screw jack bends the bar to a tip deflection in
-/// one plane; while it is engaged the mandrel measures the jack instead of the deflection source.
+/// Settings: rateHz, deflection1Mm, deflection2Mm, silenceTimeoutMs, stand.
+/// On its calibration stand (CalibrationStand; setting "stand", default on) a screw jack bends the bar to a tip
+/// deflection in one plane; while it is engaged the mandrel measures the jack instead of the deflection source.
 class SimulatedProbe final : public SimulatedDevice, public ProbeSessionPorts, public CalibrationStand {
 public:
     SimulatedProbe(const QVariantMap& settings, const DeviceContext& context);
@@ -27,7 +27,7 @@ public:
     TableUploadTarget* tableUploadTarget() override { return this; }
     QList<DeviceStatistic> statistics() const override { return sessionStatistics(); }
     void setDeflectionSource(std::function<std::array<double, 2>(double)> source) override;
-    CalibrationStand* calibrationStand() override { return this; }
+    CalibrationStand* calibrationStand() override { return m_onStand ? this : nullptr; }
 
     bool bendsBar() const override { return true; }
     void bendBar(int plane, double tipDeflectionMm) override;
@@ -49,6 +49,7 @@ private:
 
     MandrelEmulator m_emulator;
     std::function<std::array<double, 2>(double)> m_source;
+    bool m_onStand;
     std::optional<std::array<double, 2>> m_jack;  ///< the stand's screw jack, when engaged
     double m_lastTickS = 0.0;
 };

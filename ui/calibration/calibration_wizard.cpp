@@ -50,4 +50,9 @@ void markProblem(QLabel* label, bool problem) {
     label->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
 }
 
+void markVerdict(QLabel* label, bool passed) {
+    label->setStyleSheet(passed ? QStringLiteral("color: #1b5e20; font-weight: bold;")
+                                : QStringLiteral("color: #b71c1c; font-weight: bold;"));
+}
+
 }  // namespace tt::ui

@@ -40,5 +40,7 @@ void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWi
 QLabel* wrappedLabel(QWidget* parent);
 /// Shows `label` in the problem colour (bold dark red) or in the normal one.
 void markProblem(QLabel* label, bool problem);
+/// Shows a verdict in `label`: bold dark green when it passed, bold dark red when not.
+void markVerdict(QLabel* label, bool passed);
 
 }  // namespace tt::ui

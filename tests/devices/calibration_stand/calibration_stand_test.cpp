@@ -104,7 +104,7 @@ TEST_F(CalibrationStandTest, TheCrossFeedsHydraulicJackGivesTheTrueKpThroughTheR
     EXPECT_NEAR(std::abs(last->currentA - 0.6), 2.0, 0.006);  // the stand-alone oscillation again
 }
 
-TEST(CalibrationStand, OnlyTheSimulatorsProbeAndDriveHaveOne) {
+TEST(CalibrationStand, OnlyTheSimulatorsProbeAndDriveHaveOneUnlessSetOff) {
     SimulatorPlugin plugin;
     core::ManualClock clock;
     for (DeviceKind kind : allDeviceKinds()) {
@@ -112,6 +112,10 @@ TEST(CalibrationStand, OnlyTheSimulatorsProbeAndDriveHaveOne) {
         const bool expected = kind == DeviceKind::Probe || kind == DeviceKind::DriveCurrent;
         EXPECT_EQ(d->calibrationStand() != nullptr, expected) << kindKey(kind).toStdString();
     }
+    // "On a calibration stand" off: a simulated machine, where the operator loads the bar.
+    for (DeviceKind kind : {DeviceKind::Probe, DeviceKind::DriveCurrent})
+        EXPECT_EQ(plugin.create(kind, {{QStringLiteral("stand"), false}}, DeviceContext{&clock})->calibrationStand(),
+                  nullptr);
 }
 
 }  // namespace
