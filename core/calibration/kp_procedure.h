@@ -93,7 +93,8 @@ public:
                                     const KpProcedureConfig& config = {});
 
     // --- the operator's actions ---
-    /// Capture: measures at the load applied now, N.
+    /// Capture: measures at the load applied now, N. The samples the read-out holds from before
+    /// the load was applied belong to the old one: take them first (pump).
     void measure(double loadN);
     /// Capture: measures point `index` (from 0) again at its load; the new value replaces it.
     void repeatPoint(int index);

@@ -101,7 +101,9 @@ public:
     void configure(int plane, int adcBits, double referenceDivisionUm);
 
     // --- the operator's actions ---
-    /// Capture: reads a new point at `referenceUm` (hold still, then average).
+    /// Capture: reads a new point at `referenceUm` (hold still, then average). The samples the
+    /// port holds from before the command were read under the old load: take them first
+    /// (pumpProbe), so the settling starts at the command.
     void capture(double referenceUm);
     /// Capture: reads point `index` (from 0) again at `referenceUm`; the new reading replaces it.
     void repeatPoint(int index, double referenceUm);

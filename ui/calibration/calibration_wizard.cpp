@@ -28,10 +28,13 @@ void CalibrationWizard::changeEvent(QEvent* event) {
     QWizard::changeEvent(event);
 }
 
-void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWidget* remove, QWidget* chart,
-                       QWidget* message) {
+void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, const QList<QWidget*>& rowButtons,
+                       QWidget* chart, QWidget* message) {
     left->addWidget(table, 1);
-    left->addWidget(remove);
+    auto* buttons = new QHBoxLayout;
+    for (QWidget* b : rowButtons)
+        buttons->addWidget(b);
+    left->addLayout(buttons);
     auto* body = new QHBoxLayout;
     body->addLayout(left, 2);
     body->addWidget(chart, 3);

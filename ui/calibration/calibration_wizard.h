@@ -33,9 +33,10 @@ protected:
 };
 
 /// The layout of a capture page: `left` (filled by the caller with what goes above the points)
-/// then the points table and its Remove button, the chart to the right, the message below both.
-void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWidget* remove, QWidget* chart,
-                       QWidget* message);
+/// then the points table and the buttons that act on its selected row side by side, the chart to
+/// the right, the message below both.
+void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, const QList<QWidget*>& rowButtons,
+                       QWidget* chart, QWidget* message);
 /// A label that wraps its text (instructions, results).
 QLabel* wrappedLabel(QWidget* parent);
 /// Shows `label` in the problem colour (bold dark red) or in the normal one.

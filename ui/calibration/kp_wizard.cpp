@@ -141,7 +141,7 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     m_typed->setRange(-500.0, 500.0);
     m_typed->setDecimals(3);
     for (QDoubleSpinBox* s : {m_load, m_typed})
-        s->setMinimumWidth(170);
+        s->setMinimumWidth(150);
     m_progress->setRange(0, 100);
     m_table->verticalHeader()->setDefaultSectionSize(40);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -149,12 +149,12 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
-    m_chart->setMinimumSize(440, 300);
+    m_chart->setMinimumSize(340, 300);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // ΔI rises with the load
     auto* entry = new QGridLayout;
     entry->addWidget(m_loadLabel, 0, 0);
     entry->addWidget(m_load, 0, 1);
     entry->addWidget(m_measure, 0, 2);
-    entry->addWidget(m_repeat, 0, 3);
     entry->addWidget(m_typedLabel, 1, 0);
     entry->addWidget(m_typed, 1, 1);
     entry->addWidget(m_addTyped, 1, 2);
@@ -162,7 +162,7 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     left->addWidget(m_live);
     left->addLayout(entry);
     left->addWidget(m_progress);
-    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
+    layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
     m_timer->setInterval(100);
     connect(m_timer, &QTimer::timeout, this, [this] { step(); });
     connect(m_measure, &QPushButton::clicked, this, [this] {
@@ -232,6 +232,7 @@ void KpLoadsPage::applyLoad(double loadN) {
 
 bool KpLoadsPage::startMeasurement() {
     if (!m_ctx.drive() || measuring()) return false;
+    step(0.0);  // the samples queued so far were taken under the old load
     try {
         applyLoad(m_load->value());
         m_ctx.procedure().measure(m_load->value());
@@ -247,6 +248,7 @@ bool KpLoadsPage::startMeasurement() {
 bool KpLoadsPage::repeatMeasurement() {
     const int row = selectedRow();
     if (!m_ctx.drive() || measuring() || row < 0) return false;
+    step(0.0);
     applyLoad(m_ctx.procedure().points()[static_cast<std::size_t>(row)].loadN);
     m_ctx.procedure().repeatPoint(row);
     refreshState();
@@ -388,6 +390,7 @@ KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
     m_checkLoad->setMinimumWidth(170);
     m_chart->setMinimumSize(420, 260);
     m_residuals->setMinimumSize(420, 260);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the load rises with ΔI
     auto* check = new QHBoxLayout;
     check->addWidget(m_checkLabel);
     check->addWidget(m_checkLoad);
@@ -468,6 +471,7 @@ bool KpFitPage::checkLoad() {
         m_checkResult->clear();
         return false;
     }
+    step(0.0);  // the samples queued so far were taken under the old load
     try {
         if (d->hasJack()) d->applyLoadN(m_checkLoad->value());
         proc.check(m_checkLoad->value());

@@ -58,12 +58,12 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     for (QDoubleSpinBox* s : {m_jack, m_reference}) {
         s->setRange(-2000.0, 2000.0);
         s->setDecimals(1);
-        s->setMinimumWidth(170);
+        s->setMinimumWidth(150);
     }
     m_jack->setSingleStep(50.0);
     m_code->setRange(0.0, 65535.0);
     m_code->setDecimals(1);
-    m_code->setMinimumWidth(170);
+    m_code->setMinimumWidth(150);
     m_progress->setRange(0, 100);
     m_progress->setTextVisible(false);
     m_progress->setMaximumHeight(14);
@@ -74,7 +74,8 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
     m_table->setMinimumWidth(420);
-    m_chart->setMinimumSize(440, 300);
+    m_chart->setMinimumSize(340, 300);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the curve rises to the top right
 
     auto* entry = new QGridLayout;
     entry->addWidget(m_jackLabel, 0, 0);
@@ -83,7 +84,6 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     entry->addWidget(m_referenceLabel, 1, 0);
     entry->addWidget(m_reference, 1, 1);
     entry->addWidget(m_capture, 1, 2);
-    entry->addWidget(m_repeat, 1, 3);
     entry->addWidget(m_codeLabel, 2, 0);
     entry->addWidget(m_code, 2, 1);
     entry->addWidget(m_typed, 2, 2);
@@ -91,7 +91,7 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     left->addWidget(m_live);
     left->addLayout(entry);
     left->addWidget(m_progress);
-    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
+    layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
 
     m_timer->setInterval(kPollMs);
     connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(); });
@@ -211,6 +211,7 @@ void ProbeCapturePage::setJack(double um) {
     DeviceCalibrationProbe* p = m_ctx.probe();
     if (!p || !p->hasJack() || capturing()) return;
     m_jack->setValue(um);
+    pollProbe(0.0);  // the samples queued so far were read under the old load
     try {
         p->bendBar(m_ctx.procedure().config().plane, um / 1000.0);
     } catch (const std::invalid_argument&) {
@@ -249,6 +250,7 @@ bool ProbeCapturePage::capturePoint() {
         showMessage(tr("No probe mandrel to read: type the point instead."), true);
         return false;
     }
+    pollProbe(0.0);  // samples queued before the press are not the point's
     m_ctx.procedure().capture(m_reference->value());
     refreshState();
     emit completeChanged();
@@ -258,6 +260,7 @@ bool ProbeCapturePage::capturePoint() {
 bool ProbeCapturePage::repeatPoint() {
     const int row = selectedRow();
     if (!m_ctx.probe() || capturing() || row < 0) return false;
+    pollProbe(0.0);
     m_ctx.procedure().repeatPoint(row, m_reference->value());
     refreshState();
     emit completeChanged();
@@ -325,7 +328,7 @@ void ProbeCapturePage::refreshPoints() {
     std::vector<double> allX = xs, allY = ys;
     allX.insert(allX.end(), sx.begin(), sx.end());
     allY.insert(allY.end(), sy.begin(), sy.end());
-    showAllWithMargin(*m_chart, allX, allY, false, 0.7);  // room for the legend above a rising curve
+    showAllWithMargin(*m_chart, allX, allY, false, 0.3);
     m_table->resizeColumnsToContents();
     refreshState();
     emit completeChanged();

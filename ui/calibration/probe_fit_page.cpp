@@ -18,16 +18,20 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
       m_ctx(context),
       m_degreeLabel(new QLabel(this)),
       m_degree(new QComboBox(this)),
+      m_choice(wrappedLabel(this)),
       m_explanation(wrappedLabel(this)),
       m_characteristic(new Chart(this)),
       m_residuals(new Chart(this)) {
     m_degree->setObjectName(QStringLiteral("degreeCombo"));
     m_explanation->setObjectName(QStringLiteral("fitExplanation"));
     m_explanation->setTextFormat(Qt::RichText);
+    m_choice->setObjectName(QStringLiteral("degreeChoice"));
+    m_choice->setStyleSheet(QStringLiteral("font-weight: bold;"));
     for (int d : {core::kAutoDegree, 2, 3, 4})
         m_degree->addItem(QString(), d);
-    m_characteristic->setMinimumSize(420, 300);
-    m_residuals->setMinimumSize(420, 300);
+    m_characteristic->setMinimumSize(400, 230);
+    m_residuals->setMinimumSize(400, 230);
+    m_characteristic->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the curve rises to the top right
     auto* top = new QHBoxLayout;
     top->addWidget(m_degreeLabel);
     top->addWidget(m_degree);
@@ -37,6 +41,7 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
     charts->addWidget(m_residuals);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
+    layout->addWidget(m_choice);
     layout->addWidget(m_explanation);
     layout->addLayout(charts, 1);
     connect(m_degree, &QComboBox::currentIndexChanged, this, [this] {
@@ -65,7 +70,7 @@ void ProbeFitPage::setDegree(int degree) {
 }
 
 QString ProbeFitPage::explanation() const {
-    return m_explanation->text();
+    return m_choice->text() + QLatin1Char('\n') + m_explanation->text();
 }
 
 bool ProbeFitPage::isComplete() const {
@@ -78,9 +83,9 @@ void ProbeFitPage::showFit() {
     const int adcBits = proc.config().adcBits;
     const int used = static_cast<int>(proc.points().size() - outcome.leftOut.size());
     QString text;
+    m_choice->setText(outcome.fit ? ProcedureWords::degreeChoice(*outcome.fit, used) + QLatin1Char('.') : QString());
     if (outcome.fit) {
         const core::CharacteristicFit& fit = *outcome.fit;
-        text += QStringLiteral("<p><b>%1</b>.</p>").arg(ProcedureWords::degreeChoice(fit, used).toHtmlEscaped());
         QStringList rows;
         for (const core::DegreeScore& s : fit.scores)
             rows << tr("degree %1: leave-one-out %2 µm, in-sample %3 µm%4")
@@ -89,9 +94,6 @@ void ProbeFitPage::showFit() {
                         .arg(s.rmsResidualUm, 0, 'f', 2)
                         .arg(s.degree == fit.degree ? tr(" — chosen") : QString());
         text += QStringLiteral("<p>") + rows.join(QStringLiteral("<br>")) + QStringLiteral("</p>");
-        text +=
-            tr("<p>Each point is predicted from a fit to the others (leave-one-out); a higher degree always "
-               "fits the points themselves better, so it is kept only when it predicts them better.</p>");
     }
     if (!outcome.leftOut.empty())
         text += QStringLiteral("<p style='color:#b71c1c'>%1</p>")
@@ -125,7 +127,7 @@ void ProbeFitPage::showFit() {
         }
         m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(fit.degree), cx, cy,
                                     QColor(0xc6, 0x28, 0x28), Chart::Style::Line);
-        showAllWithMargin(*m_characteristic, xs, ys, false, 0.6);  // the legend above a rising curve
+        showAllWithMargin(*m_characteristic, xs, ys, false, 0.3);
         m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, fit.residualsUm,
                                QColor(0x2e, 0x7d, 0x32), Chart::Style::Points);
         m_residuals->setSeries(QStringLiteral("zero"), tr("zero"), {lo, hi}, {0.0, 0.0}, QColor(0x6b, 0x77, 0x85),
@@ -141,6 +143,12 @@ void ProbeFitPage::retranslate() {
     setTitle(tr("Fit the characteristic"));
     setSubTitle(tr("The inductive sensor's characteristic is a polynomial of degree 2 to 4; the table inverts it."));
     m_degreeLabel->setText(tr("Degree"));
+    // How the choice works, for whoever points at it (the page has no room for it at 1280 × 800).
+    const QString how =
+        tr("Each point is predicted from a fit to the others (leave-one-out); a higher degree always "
+           "fits the points themselves better, so it is kept only when it predicts them better.");
+    for (QWidget* w : std::initializer_list<QWidget*>{m_degree, m_choice, m_explanation})
+        w->setToolTip(how);
     m_degree->setItemText(0, tr("Automatic (cross-validation)"));
     m_degree->setItemText(1, tr("2"));
     m_degree->setItemText(2, tr("3"));

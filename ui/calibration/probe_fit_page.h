@@ -26,7 +26,7 @@ public:
 
     /// 0 = auto, else 2..4; refits.
     void setDegree(int degree);
-    /// The explanation shown (degree choice and problems).
+    /// The explanation shown (degree choice, scores and problems).
     QString explanation() const;
 
 private:
@@ -35,6 +35,7 @@ private:
     ProbeWizardContext& m_ctx;
     QLabel* m_degreeLabel;
     QComboBox* m_degree;
+    QLabel* m_choice;
     QLabel* m_explanation;
     Chart* m_characteristic;
     Chart* m_residuals;

@@ -254,6 +254,10 @@ void ProbeAcceptPage::cleanupPage() {
     m_ctx.procedure().takeEvents();
 }
 
+bool ProbeAcceptPage::validatePage() {
+    return m_ctx.procedure().accepted();
+}
+
 bool ProbeAcceptPage::isComplete() const {
     return m_ctx.procedure().accepted();
 }
@@ -262,6 +266,7 @@ void ProbeAcceptPage::setJack(double um) {
     DeviceCalibrationProbe* p = m_ctx.probe();
     if (!p || !p->hasJack() || m_ctx.procedure().capturing()) return;
     m_jack->setValue(um);
+    pollProbe(0.0);  // the samples queued so far were read under the old load
     try {
         p->bendBar(m_ctx.procedure().config().plane, um / 1000.0);
     } catch (const std::invalid_argument&) {
@@ -287,6 +292,7 @@ bool ProbeAcceptPage::checkPoint() {
         return false;
     }
     proc.withdrawAcceptance();  // a new check may change the verdict
+    pollProbe(0.0);             // samples queued before the press are not the check's
     try {
         proc.check(m_reference->value());
     } catch (const std::logic_error&) {
@@ -361,8 +367,8 @@ void ProbeAcceptPage::refresh() {
     for (const core::ProbeCheck& c : proc.checks())
         passed += c.passed ? 1 : 0;
     const QString checks = proc.checks().empty()
-                               ? tr("No verification point yet.")
-                               : tr("%1 of %2 verification points passed.").arg(passed).arg(proc.checks().size());
+                               ? tr("no verification point yet")
+                               : tr("%1 of %2 verification points passed").arg(passed).arg(proc.checks().size());
     const int used = static_cast<int>(proc.points().size() - proc.fitOutcome().leftOut.size());
     m_summary->setText(
         tr("<p>Characteristic of degree %1 from %2 points, residual RMS %3 µm.</p>"
@@ -477,7 +483,7 @@ void ProbeSavePage::showResult(const QString& text, bool problem) {
 
 bool ProbeSavePage::save() {
     const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
-    if (!proc.fitOutcome().usable() || m_ctx.session->saved) return m_ctx.session->saved.has_value();
+    if (!proc.accepted() || m_ctx.session->saved) return m_ctx.session->saved.has_value();
     if (!m_ctx.store) {
         showResult(tr("The calibration database is not open; export the table instead."), true);
         return false;
@@ -541,7 +547,9 @@ bool ProbeSavePage::save() {
 bool ProbeSavePage::upload() {
     DeviceCalibrationProbe* p = m_ctx.probe();
     core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
-    if (!p || !m_ctx.session->saved || proc.upload().running()) return false;
+    if (!p || !m_ctx.session->saved || proc.upload().running() ||
+        proc.step() != core::ProbeLinearisationProcedure::Step::Upload)
+        return false;
     const storage::ProbeTableRecord& s = *m_ctx.session->saved;
     proc.startUpload(*p, std::vector<std::uint8_t>(s.image.begin(), s.image.end()),
                      static_cast<std::uint16_t>(s.version));

@@ -90,6 +90,7 @@ public:
     ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
     void cleanupPage() override;
+    bool validatePage() override;
     bool isComplete() const override;
     void retranslate() override;
 

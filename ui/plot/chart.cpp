@@ -60,6 +60,11 @@ void Chart::setYTickCount(int count) {
     m_plot->yAxis->ticker()->setTickCount(std::max(2, count));
 }
 
+void Chart::setLegendCorner(Qt::Alignment corner) {
+    if (m_plot->legend->layout() == m_plot->axisRect()->insetLayout())
+        m_plot->axisRect()->insetLayout()->setInsetAlignment(0, corner);
+}
+
 void Chart::setLegendBelow(int columns) {
     QCPLayoutGrid* layout = m_plot->plotLayout();
     if (m_plot->legend->layout() != layout) {

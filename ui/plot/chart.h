@@ -39,6 +39,9 @@ public:
     void setYRange(double lower, double upper);
     /// About how many ticks the y axis shows (fewer for a short strip chart).
     void setYTickCount(int count);
+    /// Puts the legend in a corner inside the plot (top right by default): top left for a rising
+    /// curve, whose top right holds its last points.
+    void setLegendCorner(Qt::Alignment corner);
     /// Puts the legend under the plot in `columns` columns, so it never covers the data.
     void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).

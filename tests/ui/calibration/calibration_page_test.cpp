@@ -52,7 +52,16 @@ protected:
         manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
                           QStringLiteral("Simulated drive-current readout"), {});
         manager.openAll();
-        step(0.2);
+        // Until the mandrel has said what it is (its 16-bit ADC) and the drive answers.
+        auto ready = [this] {
+            devices::Device* probe = manager.device(manager.devicesOfKind(devices::DeviceKind::Probe).value(0));
+            devices::Device* drive = manager.device(manager.devicesOfKind(devices::DeviceKind::DriveCurrent).value(0));
+            const auto info = probe->tableUploadTarget()->mandrelInfo();
+            return probe->health().ready() && drive->health().ready() && info && info->adcBits;
+        };
+        for (int i = 0; i < 200 && !ready(); ++i)
+            step(0.05);
+        ASSERT_TRUE(ready());
     }
     /// Moves simulated time on by `seconds` in 50 ms steps, letting the devices' timers tick.
     void step(double seconds) {
