@@ -29,19 +29,6 @@ KpCalibrationProcedure::KpCalibrationProcedure(std::unique_ptr<CurrentDifference
         throw std::invalid_argument("the sample timeout must be within 0 .. 600 s");
 }
 
-KpCalibrationProcedure::Phase KpCalibrationProcedure::phase() const {
-    switch (m_average.phase()) {
-        case SettledAverage::Phase::HoldStill:
-            return Phase::HoldStill;
-        case SettledAverage::Phase::Averaging:
-            return Phase::Averaging;
-        case SettledAverage::Phase::Idle:
-        case SettledAverage::Phase::Done:
-            break;
-    }
-    return Phase::Idle;
-}
-
 void KpCalibrationProcedure::requireStep(Step step, const char* action) const {
     if (m_step != step) throw std::logic_error(std::string(action) + " is not possible at this step");
 }

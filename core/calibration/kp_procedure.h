@@ -86,7 +86,7 @@ struct KpProcedureConfig {
 class KpCalibrationProcedure {
 public:
     enum class Step { Capture, Fit, Accepted };
-    enum class Phase { Idle, HoldStill, Averaging };
+    using Phase = HoldPhase;
 
     /// Takes the meter (not null); throws std::invalid_argument for timing out of range.
     explicit KpCalibrationProcedure(std::unique_ptr<CurrentDifferenceMeter> meter,
@@ -119,7 +119,7 @@ public:
     // --- outputs ---
     std::vector<KpEvent> takeEvents();
     Step step() const { return m_step; }
-    Phase phase() const;
+    Phase phase() const { return m_average.holdPhase(); }
     bool measuring() const { return phase() != Phase::Idle; }
     /// 0..1 of the running measurement.
     double progress() const { return m_average.progress(); }

@@ -25,19 +25,6 @@ ProbeCapture::ProbeCapture(const ProbeCaptureConfig& config, int plane, int adcB
         throw std::invalid_argument("the sample timeout must be within 0 .. 600 s");
 }
 
-ProbeCapture::Phase ProbeCapture::phase() const {
-    switch (m_average.phase()) {
-        case SettledAverage::Phase::HoldStill:
-            return Phase::HoldStill;
-        case SettledAverage::Phase::Averaging:
-            return Phase::Averaging;
-        case SettledAverage::Phase::Idle:
-        case SettledAverage::Phase::Done:
-            break;
-    }
-    return Phase::Idle;
-}
-
 void ProbeCapture::start(double referenceUm) {
     if (running()) throw std::logic_error("a capture is already running");
     if (!std::isfinite(referenceUm)) throw std::invalid_argument("the reference reading must be a number");

@@ -56,7 +56,7 @@ struct ProbeCaptureResult {
 /// → Idle with a result. Samples arrive through the engine's port (core::DeflectionProbe).
 class ProbeCapture {
 public:
-    enum class Phase { Idle, HoldStill, Averaging };
+    using Phase = HoldPhase;
 
     /// Throws std::invalid_argument for a plane other than 0/1, bits outside 10..16 or timing out of range.
     ProbeCapture(const ProbeCaptureConfig& config, int plane, int adcBits);
@@ -71,7 +71,7 @@ public:
     /// timeout); returns the result when a capture ended.
     std::optional<ProbeCaptureResult> pump(DeflectionProbe& port, double elapsedS);
 
-    Phase phase() const;
+    Phase phase() const { return m_average.holdPhase(); }
     bool running() const { return phase() != Phase::Idle; }
     /// 0..1 of the running capture.
     double progress() const { return m_average.progress(); }

@@ -44,6 +44,19 @@ void SettledAverage::add(double timeS, double value) {
     if (++m_count >= m_target) m_phase = Phase::Done;
 }
 
+HoldPhase SettledAverage::holdPhase() const {
+    switch (m_phase) {
+        case Phase::HoldStill:
+            return HoldPhase::HoldStill;
+        case Phase::Averaging:
+            return HoldPhase::Averaging;
+        case Phase::Idle:
+        case Phase::Done:
+            break;
+    }
+    return HoldPhase::Idle;
+}
+
 double SettledAverage::progress() const {
     if (m_phase == Phase::Done) return 1.0;
     if (!running() || !m_started) return 0.0;

@@ -4,6 +4,9 @@
 
 namespace tt::core {
 
+/// Where a capture that holds still and then averages stands.
+enum class HoldPhase { Idle, HoldStill, Averaging };
+
 /// "Hold still, then average" of a calibration step, on the time stamps of the samples (the device
 /// clock, not the caller's): values that arrive within `settleS` of the first sample after start()
 /// are not used (the load, the filter and the slide settle), then values are averaged until
@@ -27,6 +30,8 @@ public:
     void add(double timeS, double value);
 
     Phase phase() const { return m_phase; }
+    /// The phase as a capture shows it: Done counts as Idle.
+    HoldPhase holdPhase() const;
     bool running() const { return m_phase == Phase::HoldStill || m_phase == Phase::Averaging; }
     /// Values averaged so far.
     int count() const { return m_count; }

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace tt::ui {
@@ -41,6 +42,12 @@ void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, con
     auto* layout = new QVBoxLayout(page);
     layout->addLayout(body, 1);
     layout->addWidget(message);
+}
+
+int selectedRowOrLast(const QTableWidget* table, int count) {
+    const QList<QTableWidgetItem*> selected = table->selectedItems();
+    const int row = selected.isEmpty() ? -1 : selected.front()->row();
+    return row >= 0 && row < count ? row : count - 1;
 }
 
 QLabel* wrappedLabel(QWidget* parent) {

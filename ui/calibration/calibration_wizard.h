@@ -4,6 +4,7 @@
 #include <QWizardPage>
 
 class QLabel;
+class QTableWidget;
 class QVBoxLayout;
 
 namespace tt::ui {
@@ -37,6 +38,8 @@ protected:
 /// the right, the message below both.
 void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, const QList<QWidget*>& rowButtons,
                        QWidget* chart, QWidget* message);
+/// The row selected in a points table of `count` rows, or the last row when none is (−1: empty).
+int selectedRowOrLast(const QTableWidget* table, int count);
 /// A label that wraps its text (instructions, results).
 QLabel* wrappedLabel(QWidget* parent);
 /// Shows `label` in the problem colour (bold dark red) or in the normal one.

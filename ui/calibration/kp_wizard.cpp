@@ -219,13 +219,6 @@ void KpLoadsPage::showMessage(const QString& text, bool problem) {
     markProblem(m_message, problem);
 }
 
-int KpLoadsPage::selectedRow() const {
-    const int count = static_cast<int>(m_ctx.procedure().points().size());
-    const QList<QTableWidgetItem*> selected = m_table->selectedItems();
-    const int row = selected.isEmpty() ? -1 : selected.front()->row();
-    return row >= 0 && row < count ? row : count - 1;
-}
-
 void KpLoadsPage::applyLoad(double loadN) {
     if (DeviceKpDrive* d = m_ctx.drive(); d && d->hasJack()) d->applyLoadN(loadN);
 }
@@ -246,7 +239,7 @@ bool KpLoadsPage::startMeasurement() {
 }
 
 bool KpLoadsPage::repeatMeasurement() {
-    const int row = selectedRow();
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
     if (!m_ctx.drive() || measuring() || row < 0) return false;
     step(0.0);
     applyLoad(m_ctx.procedure().points()[static_cast<std::size_t>(row)].loadN);
@@ -315,7 +308,7 @@ bool KpLoadsPage::addTypedPoint() {
 }
 
 void KpLoadsPage::removePoint() {
-    const int row = selectedRow();
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
     if (measuring() || row < 0) return;
     m_ctx.procedure().removePoint(row);
     handleEvents();

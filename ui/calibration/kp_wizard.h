@@ -104,7 +104,6 @@ private:
     void handleEvents();
     void refresh();
     void refreshState();
-    int selectedRow() const;
     void applyLoad(double loadN);
     void showMessage(const QString& text, bool problem);
 

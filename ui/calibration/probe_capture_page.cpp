@@ -238,13 +238,6 @@ void ProbeCapturePage::selectPoint(int row) {
     m_table->selectRow(row);
 }
 
-int ProbeCapturePage::selectedRow() const {
-    const int count = static_cast<int>(m_ctx.procedure().points().size());
-    const QList<QTableWidgetItem*> selected = m_table->selectedItems();
-    const int row = selected.isEmpty() ? -1 : selected.front()->row();
-    return row >= 0 && row < count ? row : count - 1;
-}
-
 bool ProbeCapturePage::capturePoint() {
     if (!m_ctx.probe() || capturing()) {
         showMessage(tr("No probe mandrel to read: type the point instead."), true);
@@ -258,7 +251,7 @@ bool ProbeCapturePage::capturePoint() {
 }
 
 bool ProbeCapturePage::repeatPoint() {
-    const int row = selectedRow();
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
     if (!m_ctx.probe() || capturing() || row < 0) return false;
     pollProbe(0.0);
     m_ctx.procedure().repeatPoint(row, m_reference->value());
@@ -287,7 +280,7 @@ bool ProbeCapturePage::addTypedPoint() {
 }
 
 void ProbeCapturePage::removePoint() {
-    const int row = selectedRow();
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
     if (capturing() || row < 0) return;
     m_ctx.procedure().removePoint(row);
     handleEvents();

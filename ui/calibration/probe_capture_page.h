@@ -61,7 +61,6 @@ private:
     void handleEvents();
     void refreshPoints();
     void refreshState();
-    int selectedRow() const;
     void showMessage(const QString& text, bool problem);
 
     ProbeWizardContext& m_ctx;

@@ -19,7 +19,6 @@
 #include <QTest>
 
 #include "core/calibration/linearisation_image.h"
-#include "core/loop/loop_clock.h"
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
@@ -30,6 +29,7 @@
 #include "devices/simulator/simulator_plugin.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "stand_devices.h"
 #include "ui/app_state.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/kp_wizard.h"
@@ -46,30 +46,10 @@ protected:
         QSettings().clear();
         state.setOperatorName(QStringLiteral("Anna Test"));
         context.databasePath = dir.filePath(QStringLiteral("history.sqlite"));
-        context.devices = &manager;
-        probeId = manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::Probe,
-                                    QStringLiteral("Simulated probe mandrel"), {});
-        manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
-                          QStringLiteral("Simulated drive-current readout"), {});
-        manager.openAll();
-        // Until the mandrel has said what it is (its 16-bit ADC) and the drive answers.
-        auto ready = [this] {
-            devices::Device* probe = manager.device(manager.devicesOfKind(devices::DeviceKind::Probe).value(0));
-            devices::Device* drive = manager.device(manager.devicesOfKind(devices::DeviceKind::DriveCurrent).value(0));
-            const auto info = probe->tableUploadTarget()->mandrelInfo();
-            return probe->health().ready() && drive->health().ready() && info && info->adcBits;
-        };
-        for (int i = 0; i < 200 && !ready(); ++i)
-            step(0.05);
-        ASSERT_TRUE(ready());
+        context.devices = &stand.manager;
+        ASSERT_TRUE(stand.waitReady());
     }
-    /// Moves simulated time on by `seconds` in 50 ms steps, letting the devices' timers tick.
-    void step(double seconds) {
-        for (double t = 0.0; t < seconds - 1e-9; t += 0.05) {
-            clock.advanceBy(0.05);
-            QTest::qWait(12);
-        }
-    }
+    void step(double seconds) { stand.step(seconds); }
     static bool nextEnabled(QWizard* w) { return w->button(QWizard::NextButton)->isEnabled(); }
     /// Bends the bar to `um` on the stand and captures: hold still, then 50 samples averaged.
     void capture(ProbeCapturePage* page, double um) {
@@ -96,6 +76,16 @@ protected:
             page->addTypedPoint();
         }
     }
+    /// Measures a verification load on the fit page; the result as worded.
+    QString check(KpFitPage* fit, double loadN) {
+        fit->setCheckLoadN(loadN);
+        if (!fit->checkLoad()) return {};
+        for (int i = 0; i < 400 && fit->checking(); ++i) {
+            step(0.05);
+            fit->step(0.05);
+        }
+        return fit->checkResult();
+    }
     bool measure(KpLoadsPage* loads, double loadN) {
         loads->setLoadN(loadN);
         if (!loads->startMeasurement()) return false;
@@ -109,9 +99,10 @@ protected:
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
-    core::ManualClock clock;
-    devices::DeviceManager manager{&clock};
-    QString probeId;
+    test::StandDevices stand{QStringLiteral("Simulated probe mandrel"),
+                             QStringLiteral("Simulated drive-current readout")};
+    devices::DeviceManager& manager = stand.manager;
+    const QString& probeId = stand.probeId;
     AppContext context{&prompt, &state, nullptr, QString()};
 };
 
@@ -371,14 +362,8 @@ TEST_F(CalibrationPageTest, KpWizardMeasuresKnownLoadsVerifiesAndWritesKpIntoThe
     // The stand's drive has the true k_p 150 N/A (core::KnownLoadRig, heavy-boring cross feed).
     EXPECT_NEAR(page.kpSession().procedure.fitOutcome().fit->kpNPerA, 150.0, 4.5);
     // Verification at 300 N, a load not used by the fit.
-    KpFitPage* fp = w->fitPage();
-    fp->setCheckLoadN(300.0);
-    ASSERT_TRUE(fp->checkLoad());
-    for (int i = 0; i < 400 && fp->checking(); ++i) {
-        step(0.05);
-        fp->step(0.05);
-    }
-    EXPECT_TRUE(fp->checkResult().contains(QStringLiteral("Passed"))) << fp->checkResult().toStdString();
+    const QString verdict = check(w->fitPage(), 300.0);
+    EXPECT_TRUE(verdict.contains(QStringLiteral("Passed"))) << verdict.toStdString();
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_kp_3_fit")));
     w->next();
     ASSERT_EQ(w->currentId(), KpCalibrationWizard::SavePage);
@@ -420,13 +405,8 @@ TEST_F(CalibrationPageTest, KpWizardRefusesLoadsThatDoNotFitAndAFailedVerificati
     w->next();
     ASSERT_TRUE(nextEnabled(w));
     KpFitPage* fp = w->fitPage();
-    fp->setCheckLoadN(300.0);
-    ASSERT_TRUE(fp->checkLoad());
-    for (int i = 0; i < 400 && fp->checking(); ++i) {
-        step(0.05);
-        fp->step(0.05);
-    }
-    EXPECT_TRUE(fp->checkResult().contains(QStringLiteral("Failed"))) << fp->checkResult().toStdString();
+    const QString verdict = check(fp, 300.0);
+    EXPECT_TRUE(verdict.contains(QStringLiteral("Failed"))) << verdict.toStdString();
     w->next();  // refused: the verification failed
     EXPECT_EQ(w->currentId(), KpCalibrationWizard::FitPage);
     EXPECT_TRUE(fp->checkResult().contains(QStringLiteral("Not accepted")));

@@ -16,10 +16,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "core/loop/loop_clock.h"
-#include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "stand_devices.h"
 #include "ui/app_state.h"
 #include "ui/calibration/kp_wizard.h"
 #include "ui/calibration/probe_capture_page.h"
@@ -59,31 +58,13 @@ class CalibrationWizardsInRussian : public ::testing::Test {
 protected:
     void SetUp() override {
         QSettings().clear();
-        context = AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &manager};
-        manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::Probe,
-                          QStringLiteral("Симулятор оправки-датчика"), {});
-        manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
-                          QStringLiteral("Симулятор датчика тока привода"), {});
-        manager.openAll();
-        // Until the mandrel has said what it is (its 16-bit ADC) and the drive answers.
-        auto ready = [this] {
-            devices::Device* probe = manager.device(manager.devicesOfKind(devices::DeviceKind::Probe).value(0));
-            devices::Device* drive = manager.device(manager.devicesOfKind(devices::DeviceKind::DriveCurrent).value(0));
-            const auto info = probe->tableUploadTarget()->mandrelInfo();
-            return probe->health().ready() && drive->health().ready() && info && info->adcBits;
-        };
-        for (int i = 0; i < 200 && !ready(); ++i)
-            step(0.05);
-        ASSERT_TRUE(ready());
+        context =
+            AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &stand.manager};
+        ASSERT_TRUE(stand.waitReady());
         ASSERT_TRUE(language.apply(QStringLiteral("ru")));
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
-    void step(double seconds) {
-        for (double t = 0.0; t < seconds - 1e-9; t += 0.05) {
-            clock.advanceBy(0.05);
-            QTest::qWait(12);
-        }
-    }
+    void step(double seconds) { stand.step(seconds); }
     /// The window fits 1280 × 800, and no label or button of `root` shows translated English.
     void check(MainWindow& window, QWidget* root, const QString& name) {
         QApplication::processEvents();
@@ -108,8 +89,8 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    core::ManualClock clock;
-    devices::DeviceManager manager{&clock};
+    test::StandDevices stand{QStringLiteral("Симулятор оправки-датчика"),
+                             QStringLiteral("Симулятор датчика тока привода")};
     AppContext context;
     const QSet<QString> english = translatedSources();
 };
