@@ -407,6 +407,7 @@ void KpFitPage::initializePage() {
     proc.back();
     proc.next();  // and the fit made again
     proc.takeEvents();
+    m_ctx.session->saved = false;  // a k_p saved from an earlier fit is not this one
     m_checkResult->clear();
     showFit();
     if (m_ctx.drive()) m_timer->start();

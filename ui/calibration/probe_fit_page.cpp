@@ -47,6 +47,7 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
     connect(m_degree, &QComboBox::currentIndexChanged, this, [this] {
         m_ctx.procedure().setDegree(m_degree->currentData().toInt());  // refits; a new table needs a new acceptance
         m_ctx.procedure().takeEvents();
+        m_ctx.session->saved.reset();
         showFit();
     });
 }
@@ -56,6 +57,7 @@ void ProbeFitPage::initializePage() {
     proc.returnToCapture();
     proc.next();  // Capture → Fit: the fit is made
     proc.takeEvents();
+    m_ctx.session->saved.reset();  // a table saved from an earlier fit is not this one
     const QSignalBlocker block(m_degree);
     m_degree->setCurrentIndex(std::max(0, m_degree->findData(proc.degree())));
     showFit();
