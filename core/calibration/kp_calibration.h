@@ -1,5 +1,6 @@
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,36 @@ struct KpFit {
     double rmsResidualN = 0.0;
 };
 
-/// Fits k_p; throws std::invalid_argument when there are fewer than 3 points, fewer than 2
+/// Why known loads give no k_p.
+enum class KpFitProblem {
+    TooFewLoads,           ///< fewer than 3 points (count)
+    TooFewDifferentLoads,  ///< fewer than 2 different loads
+    NotANumber,            ///< a point is not a number (point)
+    ConstantCurrent,       ///< ΔI is the same at every load: the current is not read
+    FallsWithLoad,         ///< ΔI falls as the load grows (slope): the load acts the other way
+};
+
+/// A refused k_p fit: the kind and its data, with the reason in English for the CLI and logs.
+class KpFitRefused : public std::invalid_argument {
+public:
+    KpFitRefused(KpFitProblem problem, const std::string& message, int count = 0, double slopeNPerA = 0.0)
+        : std::invalid_argument(message), m_problem(problem), m_count(count), m_slope(slopeNPerA) {}
+    KpFitProblem problem() const { return m_problem; }
+    /// TooFewLoads: the points given; NotANumber: the point (from 1).
+    int count() const { return m_count; }
+    /// FallsWithLoad: the fitted slope, N/A.
+    double slopeNPerA() const { return m_slope; }
+
+private:
+    KpFitProblem m_problem;
+    int m_count;
+    double m_slope;
+};
+
+/// The fewest known loads a k_p fit takes.
+inline constexpr int kMinKpLoads = 3;
+
+/// Fits k_p; throws KpFitRefused (a std::invalid_argument) when there are fewer than 3 points, fewer than 2
 /// different loads, a non-finite value, or when ΔI does not grow with the load (k_p ≤ 0: the
 /// load acts the other way or the current sign is reversed).
 KpFit fitKp(const std::vector<KpPoint>& points);

@@ -59,22 +59,23 @@ int distinctReferences(const std::vector<CalibrationPoint>& points) {
 }
 
 bool supports(const std::vector<CalibrationPoint>& points, int degree) {
-    return static_cast<int>(points.size()) >= degree + 1 + kExtraPoints && distinctReferences(points) >= degree + 2;
+    return static_cast<int>(points.size()) >= pointsNeeded(degree) &&
+           distinctReferences(points) >= referencesNeeded(degree);
 }
 
 void checkEnough(const std::vector<CalibrationPoint>& points, int degree) {
-    const int needed = degree + 1 + kExtraPoints;
+    const int needed = pointsNeeded(degree);
     if (static_cast<int>(points.size()) < needed)
         throw LinearisationRefused(LinearisationProblem::TooFewPoints,
                                    "a degree-" + std::to_string(degree) + " characteristic needs at least " +
                                        std::to_string(needed) + " calibration points, got " +
                                        std::to_string(points.size()));
     const int distinct = distinctReferences(points);
-    if (distinct < degree + 2)
+    if (distinct < referencesNeeded(degree))
         throw LinearisationRefused(LinearisationProblem::TooFewPoints,
                                    "a degree-" + std::to_string(degree) + " characteristic needs at least " +
-                                       std::to_string(degree + 2) + " different reference deflections, got " +
-                                       std::to_string(distinct));
+                                       std::to_string(referencesNeeded(degree)) +
+                                       " different reference deflections, got " + std::to_string(distinct));
     const double first = points.front().adcCode;
     if (std::all_of(points.begin(), points.end(), [first](const CalibrationPoint& p) { return p.adcCode == first; }))
         throw LinearisationRefused(LinearisationProblem::BadInput,
@@ -138,9 +139,16 @@ DegreeScore score(const Data& d, int degree) {
     return s;
 }
 
+struct Choice {
+    int degree = 0;
+    DegreeChoice how = DegreeChoice::LowestError;
+    int bestDegree = 0;
+    std::string reason;
+};
+
 // One-standard-error rule on the mean squared LOO error; a difference smaller than the ADC's own
 // resolution (half a code, `halfCodeUm` in µm) is no evidence for a higher degree either.
-std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores, double halfCodeUm) {
+Choice chooseDegree(const std::vector<DegreeScore>& scores, double halfCodeUm) {
     const auto best = std::min_element(
         scores.begin(), scores.end(), [](const DegreeScore& a, const DegreeScore& b) { return a.cvRmsUm < b.cvRmsUm; });
     const double se2 = best->cvStandardErrorUm * best->cvStandardErrorUm;
@@ -150,15 +158,19 @@ std::pair<int, std::string> chooseDegree(const std::vector<DegreeScore>& scores,
         if (s.cvRmsUm * s.cvRmsUm > limit) continue;
         std::string reason =
             "degree " + std::to_string(s.degree) + ": leave-one-out error " + fmt(s.cvRmsUm, 2) + " µm";
-        if (s.degree == best->degree)
+        DegreeChoice how = DegreeChoice::LowestError;
+        if (s.degree == best->degree) {
             reason += ", the lowest of the degrees tried";
-        else
+        } else {
+            how = se2 >= quantum2 ? DegreeChoice::WithinStandardError : DegreeChoice::WithinHalfCode;
             reason += std::string(" is within ") + (se2 >= quantum2 ? "one standard error" : "half an ADC code") +
                       " of the lowest (" + fmt(best->cvRmsUm, 2) + " µm at degree " + std::to_string(best->degree) +
                       "), so the simpler curve is kept";
-        return {s.degree, reason};
+        }
+        return {s.degree, how, best->degree, reason};
     }
-    return {best->degree, "degree " + std::to_string(best->degree) + " has the lowest leave-one-out error"};
+    return {best->degree, DegreeChoice::LowestError, best->degree,
+            "degree " + std::to_string(best->degree) + " has the lowest leave-one-out error"};
 }
 
 // The nearest stationary points left of the calibrated range and right of it.
@@ -183,6 +195,7 @@ Monotonicity checkMonotonic(const CharacteristicFit& fit) {
     m.increasing = p(fit.calibratedMaxUm) >= p(fit.calibratedMinUm);
     auto fail = [&](double x, const std::string& where) {
         m.monotonic = false;
+        m.insideCalibratedRange = x >= fit.calibratedMinUm && x <= fit.calibratedMaxUm;
         m.turningDeflectionUm = x;
         m.turningCode = p(x);
         m.message = "the fitted characteristic is not monotonic: it turns at " + fmt(x) + " µm (ADC code " +
@@ -237,16 +250,19 @@ CharacteristicFit fitCharacteristic(const std::vector<CalibrationPoint>& points,
         // Codes per µm over the calibrated range, from the points themselves.
         const double slope = std::abs(data.code.maxCoeff() - data.code.minCoeff()) /
                              std::max(fit.calibratedMaxUm - fit.calibratedMinUm, 1e-9);
-        const auto [chosen, reason] = chooseDegree(fit.scores, 0.5 / std::max(slope, 1e-12));
-        fit.degree = chosen;
+        const Choice choice = chooseDegree(fit.scores, 0.5 / std::max(slope, 1e-12));
+        fit.degree = choice.degree;
         fit.chosenAutomatically = true;
-        fit.choiceReason = reason;
+        fit.choice = choice.how;
+        fit.bestDegree = choice.bestDegree;
+        fit.choiceReason = choice.reason;
         if (fit.scores.back().degree < kMaxDegree)
             fit.choiceReason += " (only degrees up to " + std::to_string(fit.scores.back().degree) +
                                 " could be tried with " + std::to_string(points.size()) + " points)";
     } else {
         fit.scores.push_back(score(data, degree));
         fit.degree = degree;
+        fit.bestDegree = degree;
         fit.choiceReason = "degree " + std::to_string(degree) + " as asked";
     }
 
@@ -329,9 +345,21 @@ LinearisationTable buildTable(const CharacteristicFit& fit) {
     return table;
 }
 
+int pointsNeeded(int degree) {
+    return degree + 1 + kExtraPoints;
+}
+
+int referencesNeeded(int degree) {
+    return degree + 2;
+}
+
 Linearisation linearise(const std::vector<CalibrationPoint>& points, int adcBits, int degree) {
+    return lineariseFit(fitCharacteristic(points, adcBits, degree), points);
+}
+
+Linearisation lineariseFit(CharacteristicFit fit, const std::vector<CalibrationPoint>& points) {
     Linearisation result;
-    result.fit = fitCharacteristic(points, adcBits, degree);
+    result.fit = std::move(fit);
     result.table = buildTable(result.fit);
     const LinearisationTable& t = result.table;
     for (const CalibrationPoint& p : points) {
@@ -349,7 +377,7 @@ Linearisation linearise(const std::vector<CalibrationPoint>& points, int adcBits
     }
     result.tableResolutionUm = 0.5 * worstStep + 0.5 * t.scaleNm / 1000.0;
     const double share = static_cast<double>(result.extrapolatedEntries) / static_cast<double>(t.entries.size());
-    if (share > 0.2)
+    if (share > kExtrapolatedWarningShare)
         result.warnings.push_back(fmt(100.0 * share, 0) +
                                   " % of the table lies outside the calibrated range and is extrapolated; "
                                   "calibrate over more of the probe's travel");

@@ -52,7 +52,16 @@ struct Monotonicity {
     bool increasing = true;  ///< code grows with deflection
     std::optional<double> turningDeflectionUm;
     std::optional<double> turningCode;
-    std::string message;  ///< why it is not monotonic, empty when it is
+    bool insideCalibratedRange = false;  ///< it turns between the points (else beyond them, within the ADC range)
+    std::string message;                 ///< why it is not monotonic, empty when it is
+};
+
+/// How the degree of a fit was chosen, for the words of the wizard.
+enum class DegreeChoice {
+    Asked,                ///< the degree asked for
+    LowestError,          ///< the lowest leave-one-out error of the degrees tried
+    WithinStandardError,  ///< a lower degree within one standard error of the best
+    WithinHalfCode,       ///< a lower degree within half an ADC code of the best
 };
 
 /// The fitted static characteristic code = p(deflection) of the inductive sensor (paper 001:
@@ -60,7 +69,9 @@ struct Monotonicity {
 struct CharacteristicFit {
     int degree = 0;
     bool chosenAutomatically = false;
-    std::string choiceReason;         ///< how the degree was chosen, for the wizard and the CLI
+    std::string choiceReason;  ///< how the degree was chosen, in English for the CLI
+    DegreeChoice choice = DegreeChoice::Asked;
+    int bestDegree = 0;               ///< the degree with the lowest leave-one-out error (auto)
     std::vector<DegreeScore> scores;  ///< every degree tried (auto) or just the one asked for
     int adcBits = 0;
     /// p: code as a polynomial of the deflection in µm (stored centred and scaled).
@@ -78,6 +89,11 @@ struct CharacteristicFit {
     /// The fitted slope d code / d deflection at a deflection, codes per µm.
     double slopeAt(double deflectionUm) const;
 };
+
+/// Calibration points a fit of `degree` needs (its coefficients and two degrees of freedom).
+int pointsNeeded(int degree);
+/// Different reference deflections a fit of `degree` needs.
+int referencesNeeded(int degree);
 
 /// Checks the points and fits the characteristic of the given degree (2, 3, 4) or, with
 /// kAutoDegree, the degree with the best leave-one-out cross-validation under the one-standard-
@@ -105,7 +121,12 @@ struct Linearisation {
 /// ADC range, with the code and deflection where it turns.
 LinearisationTable buildTable(const CharacteristicFit& fit);
 
+/// Above this share of extrapolated table entries a linearisation warns.
+inline constexpr double kExtrapolatedWarningShare = 0.2;
+
 /// fitCharacteristic + buildTable + the error figures.
 Linearisation linearise(const std::vector<CalibrationPoint>& points, int adcBits, int degree);
+/// buildTable + the error figures of a fit made from `points` (throws as buildTable).
+Linearisation lineariseFit(CharacteristicFit fit, const std::vector<CalibrationPoint>& points);
 
 }  // namespace tt::core

@@ -14,6 +14,7 @@
 #include "core/ports/diameter_gauge.h"
 #include "core/ports/drive_current.h"
 #include "devices/api/boring_truth.h"
+#include "devices/api/calibration_stand.h"
 #include "devices/api/device_kind.h"
 
 namespace tt::core {
@@ -140,6 +141,8 @@ public:
     virtual SimulationInputs* simulationInputs() { return nullptr; }
     /// A simulated boring pass and its truth: the simulator's drive read-out and probe mandrel only.
     virtual BoringTruth* boringTruth() { return nullptr; }
+    /// The calibration stand (screw jack, hydraulic jack), for the simulator's devices only.
+    virtual CalibrationStand* calibrationStand() { return nullptr; }
 
     /// Called (in the device's thread) whenever state, live value or last error change.
     void setChangeListener(std::function<void()> listener) { m_listener = std::move(listener); }

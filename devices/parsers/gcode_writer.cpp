@@ -10,6 +10,20 @@ namespace tt::devices {
 
 namespace {
 
+/// The words every program of this writer has: the Z direction, the clearance, the tool and the program
+/// number (GCodeJob and FeedPassJob alike).
+template <typename Job>
+void checkMachineWords(const Job& job) {
+    if (job.zDirection != 1 && job.zDirection != -1)
+        throw std::invalid_argument("G-code: the Z direction must be +1 or -1");
+    if (!(job.clearanceMm > 0.0 && job.clearanceMm <= 100.0))
+        throw std::invalid_argument("G-code: the clearance must be between 0 and 100 mm");
+    if (job.toolNumber < 1 || job.toolNumber > 99)
+        throw std::invalid_argument("G-code: the tool number must be 1 to 99");
+    if (job.programNumber < 1 || job.programNumber > 9999)
+        throw std::invalid_argument("G-code: the program number must be 1 to 9999");
+}
+
 std::string mm(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3f", std::fabs(value) < 0.0005 ? 0.0 : value);
@@ -23,14 +37,7 @@ void checkJob(const GCodeJob& job) {
         throw std::invalid_argument("G-code: the feed must be between 0 and 5 mm/rev");
     if (job.spindleRpm < 0 || job.spindleRpm > 10000)
         throw std::invalid_argument("G-code: the spindle speed must be 0 to 10000 rpm");
-    if (job.zDirection != 1 && job.zDirection != -1)
-        throw std::invalid_argument("G-code: the Z direction must be +1 or -1");
-    if (!(job.clearanceMm > 0.0 && job.clearanceMm <= 100.0))
-        throw std::invalid_argument("G-code: the clearance must be between 0 and 100 mm");
-    if (job.toolNumber < 1 || job.toolNumber > 99)
-        throw std::invalid_argument("G-code: the tool number must be 1 to 99");
-    if (job.programNumber < 1 || job.programNumber > 9999)
-        throw std::invalid_argument("G-code: the program number must be 1 to 9999");
+    checkMachineWords(job);
     if (!(job.maxCorrectionMm > 0.0) || !std::isfinite(job.zOriginMm))
         throw std::invalid_argument("G-code: the correction limit must be positive and the Z origin finite");
 }
@@ -141,14 +148,7 @@ void checkFeedJob(const FeedPassJob& job) {
     if (job.spindleRpm < 1 || job.spindleRpm > 10000)
         throw std::invalid_argument("G-code: the spindle speed must be 1 to 10000 rpm (got " +
                                     std::to_string(job.spindleRpm) + ")");
-    if (job.zDirection != 1 && job.zDirection != -1)
-        throw std::invalid_argument("G-code: the Z direction must be +1 or -1");
-    if (!(job.clearanceMm > 0.0 && job.clearanceMm <= 100.0))
-        throw std::invalid_argument("G-code: the clearance must be between 0 and 100 mm");
-    if (job.toolNumber < 1 || job.toolNumber > 99)
-        throw std::invalid_argument("G-code: the tool number must be 1 to 99");
-    if (job.programNumber < 1 || job.programNumber > 9999)
-        throw std::invalid_argument("G-code: the program number must be 1 to 9999");
+    checkMachineWords(job);
     if (!std::isfinite(job.zOriginMm) || std::fabs(job.zOriginMm) > 100000.0)
         throw std::invalid_argument("G-code: the Z origin must be a finite number within 100 m");
 }

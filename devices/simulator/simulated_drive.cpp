@@ -1,7 +1,9 @@
 #include "devices/simulator/simulated_drive.h"
 
 #include <QCoreApplication>
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "devices/parsers/modbus_registers.h"
 
@@ -11,6 +13,8 @@ namespace {
 
 constexpr std::size_t kMaxQueued = 8192;
 constexpr int kMissedPollsForError = 3;
+constexpr double kMaxStandLoadN = 20000.0;
+constexpr unsigned long long kStandSeed = 3;  ///< the stand's drive noise, the same on every start
 
 using namespace modbus;
 
@@ -35,7 +39,9 @@ core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double 
 }
 
 SimulatedDrive::SimulatedDrive(const QVariantMap& settings, const DeviceContext& context)
-    : SimulatedDevice(DeviceKind::DriveCurrent, context, settings.value(QStringLiteral("pollMs"), 20).toInt()) {
+    : SimulatedDevice(DeviceKind::DriveCurrent, context, settings.value(QStringLiteral("pollMs"), 20).toInt()),
+      m_cycleS(settings.value(QStringLiteral("pollMs"), 20).toInt() / 1000.0),
+      m_onStand(settings.value(QStringLiteral("stand"), true).toBool()) {
     const double amplitude = settings.value(QStringLiteral("amplitudeMm"), 0.02).toDouble();
     const double period = settings.value(QStringLiteral("periodS"), 1.0).toDouble();
     const double friction = settings.value(QStringLiteral("frictionCurrentA"), 2.0).toDouble();
@@ -67,9 +73,35 @@ void SimulatedDrive::tick() {
         return;
     }
     m_missedPolls = 0;
-    const double t = now();
-    core::DriveSample truth = faults().stuck && m_last ? *m_last : m_source(t);
-    if (!faults().stuck) truth.currentA += noise();
+    for (const core::DriveSample& truth : truths(now()))
+        if (!relay(truth)) break;
+    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
+}
+
+std::vector<core::DriveSample> SimulatedDrive::truths(double nowS) {
+    if (faults().stuck && m_last) {
+        core::DriveSample s = *m_last;
+        s.timeS = nowS;
+        return {s};
+    }
+    std::vector<core::DriveSample> out;
+    if (!m_stand) {
+        out.push_back(m_source(nowS));
+        out.back().timeS = nowS;
+    } else {
+        m_stand->advance(std::max(0.0, nowS - m_standOriginS - m_stand->timeS()));
+        while (std::optional<core::DriveSample> s = m_stand->takeSample()) {
+            s->timeS += m_standOriginS;
+            out.push_back(*s);
+        }
+    }
+    for (core::DriveSample& s : out)
+        s.currentA += noise();
+    return out;
+}
+
+bool SimulatedDrive::relay(core::DriveSample truth) {
+    const double t = truth.timeS;
     // Over the "wire": registers out of the drive, decoded by the readout.
     std::vector<std::uint16_t> current =
         encodeValue(truth.currentA, RegisterType::Int16, WordOrder::HighWordFirst, 0.01);
@@ -87,8 +119,7 @@ void SimulatedDrive::tick() {
                         .arg(QString::fromStdString(!i   ? i.error()
                                                     : !v ? "velocity: " + v.error()
                                                          : x.error())));
-        setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
-        return;
+        return false;
     }
     core::DriveSample s{t, i.value(), v.value(), x.value()};
     m_last = truth;
@@ -98,7 +129,28 @@ void SimulatedDrive::tick() {
                      .arg(s.currentA, 0, 'f', 2)
                      .arg(s.velocityMmPerS, 0, 'f', 3)
                      .arg(s.positionMm, 0, 'f', 4));
-    setState(core::DeviceState::Ready, QCoreApplication::translate("Simulator", "polling the simulated drive"));
+    return true;
+}
+
+void SimulatedDrive::bendBar(int, double) {
+    throw std::invalid_argument("the cross feed's stand has no screw jack");
+}
+
+void SimulatedDrive::applyLoadN(double loadN) {
+    if (!std::isfinite(loadN) || std::abs(loadN) > kMaxStandLoadN)
+        throw std::invalid_argument("the hydraulic jack pushes with at most ±20 000 N");
+    if (!m_stand) {
+        // The k_p stand: the heavy-boring cross feed dithering 0.01 mm with a 0.5 s period, 60 %
+        // of each stroke at constant velocity, sampled once per PLC cycle (the poll period).
+        m_stand = std::make_unique<core::KnownLoadRig>(core::CrossFeedDriveConfig{}, core::DitherConfig{0.01, 0.5, 0.6},
+                                                       std::clamp(m_cycleS, 0.01, 0.1), kStandSeed);
+        m_standOriginS = now();
+    }
+    m_stand->setLoadN(loadN);
+}
+
+void SimulatedDrive::release() {
+    m_stand.reset();
 }
 
 std::optional<core::DriveSample> SimulatedDrive::takeSample() {

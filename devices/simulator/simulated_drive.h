@@ -2,9 +2,12 @@
 
 #include <QVariantMap>
 #include <deque>
+#include <memory>
 #include <optional>
+#include <vector>
 
 #include "devices/simulator/simulated_boring_station.h"
+#include "core/sim/rigs/known_load_rig.h"
 #include "devices/simulator/simulated_device.h"
 
 namespace tt::devices {
@@ -20,10 +23,13 @@ core::DriveSample oscillatingCrossFeed(double timeS, double amplitudeMm, double 
 /// sample travels as registers (current int16 0.01 A, velocity float32 mm/s, position int32
 /// 0.1 um) and is decoded back, so a malformed register value is refused as on the machine.
 /// The drive state comes from the injectable source (setDriveSource) or the oscillation above.
-/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA. It is also a simulated
-/// boring station (boringTruth(): the heavy cross feed of paper 001 with dither), whose passes
-/// follow this read-out's fault switches.
-class SimulatedDrive final : public SimulatedDevice, public core::DriveCurrentReadout {
+/// Settings: pollMs, amplitudeMm, periodS, frictionCurrentA, cuttingCurrentA, stand.
+/// On its calibration stand (CalibrationStand; setting "stand", default on) a hydraulic jack pushes the tool holder
+/// with a known load while the cross feed dithers: from the first load on, the read-out measures core::KnownLoadRig
+/// (the heavy-boring cross feed: true k_p 150 N/A, Coulomb friction 975 N, current noise 0.3 A; dither 0.01 mm, 0.5 s;
+/// one sample per poll period as the PLC cycle) until the jack is released. It is also a simulated boring station
+/// (boringTruth(): the heavy cross feed of paper 001 with dither), whose passes follow this read-out's fault switches.
+class SimulatedDrive final : public SimulatedDevice, public core::DriveCurrentReadout, public CalibrationStand {
 public:
     SimulatedDrive(const QVariantMap& settings, const DeviceContext& context);
 
@@ -34,6 +40,14 @@ public:
     QList<DeviceStatistic> statistics() const override;
     void setDriveSource(std::function<core::DriveSample(double)> source) override;
     BoringTruth* boringTruth() override { return &m_station; }
+    CalibrationStand* calibrationStand() override { return m_onStand ? this : nullptr; }
+
+    bool bendsBar() const override { return false; }
+    void bendBar(int plane, double tipDeflectionMm) override;
+    bool appliesLoad() const override { return true; }
+    void applyLoadN(double loadN) override;
+    bool engaged() const override { return m_stand != nullptr; }
+    void release() override;
 
 protected:
     void tick() override;
@@ -41,7 +55,16 @@ protected:
     void stateChecked() override { m_station.follow(health()); }
 
 private:
+    /// The drive states due now: the stand's samples since the last poll, or one from the source.
+    std::vector<core::DriveSample> truths(double nowS);
+    /// Sends one state over the "wire" and queues what the read-out decodes; false when refused.
+    bool relay(core::DriveSample truth);
+
     std::function<core::DriveSample(double)> m_source;
+    std::unique_ptr<core::KnownLoadRig> m_stand;  ///< the stand's hydraulic jack, when engaged
+    double m_standOriginS = 0.0;                  ///< device time of the stand's time 0
+    double m_cycleS;
+    bool m_onStand;
     std::deque<core::DriveSample> m_samples;
     std::optional<core::DriveSample> m_last;
     int m_missedPolls = 0;

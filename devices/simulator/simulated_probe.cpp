@@ -1,6 +1,8 @@
 #include "devices/simulator/simulated_probe.h"
 
 #include <QCoreApplication>
+#include <cmath>
+#include <stdexcept>
 
 namespace tt::devices {
 
@@ -9,17 +11,21 @@ namespace {
 /// Commands answered per tick: the in-memory wire is fast, so an upload moves on by several
 /// chunks per 10 ms tick (a 16-bit table of 1025 chunks takes about 0.7 s).
 constexpr int kRoundTripsPerTick = 16;
+/// How far the stand's screw jack bends the bar either way, mm.
+constexpr double kJackTravelMm = 2.0;
 
 }  // namespace
 
 SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext& context)
-    : SimulatedDevice(DeviceKind::Probe, context, 10), ProbeSessionPorts(settings) {
+    : SimulatedDevice(DeviceKind::Probe, context, 10),
+      ProbeSessionPorts(settings),
+      m_onStand(settings.value(QStringLiteral("stand"), true).toBool()) {
     const std::array<double, 2> constant{settings.value(QStringLiteral("deflection1Mm"), 0.02).toDouble(),
                                          settings.value(QStringLiteral("deflection2Mm"), -0.005).toDouble()};
     m_source = [constant](double) { return constant; };
     // The emulator's clock runs from open(); the source sees the device clock's time.
     m_emulator.setDeflectionSource([this](double) {
-        std::array<double, 2> d = m_source(now());
+        std::array<double, 2> d = m_jack ? *m_jack : m_source(now());
         for (double& v : d)
             v += noise();
         return d;
@@ -30,6 +36,19 @@ SimulatedProbe::SimulatedProbe(const QVariantMap& settings, const DeviceContext&
 
 void SimulatedProbe::setDeflectionSource(std::function<std::array<double, 2>(double)> source) {
     if (source) m_source = std::move(source);
+}
+
+void SimulatedProbe::bendBar(int plane, double tipDeflectionMm) {
+    if (plane != 0 && plane != 1) throw std::invalid_argument("the bending plane must be 0 (X) or 1 (Y)");
+    if (!std::isfinite(tipDeflectionMm) || std::abs(tipDeflectionMm) > kJackTravelMm)
+        throw std::invalid_argument("the screw jack bends the bar by at most ±2 mm");
+    std::array<double, 2> d{};
+    d[static_cast<std::size_t>(plane)] = tipDeflectionMm;
+    m_jack = d;
+}
+
+void SimulatedProbe::applyLoadN(double) {
+    throw std::invalid_argument("the probe mandrel's stand has no hydraulic jack");
 }
 
 void SimulatedProbe::connected() {

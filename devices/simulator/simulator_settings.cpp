@@ -34,6 +34,9 @@ SettingsSchema simulatedProbeSchema() {
         SettingField::integer(QStringLiteral("silenceTimeoutMs"),
                               QCoreApplication::translate("Simulator", "Silence timeout"), 500, 50, 10000,
                               QCoreApplication::translate("Simulator", "ms")),
+        SettingField::boolean(
+            QStringLiteral("stand"), QCoreApplication::translate("Simulator", "On a calibration stand"), true,
+            QCoreApplication::translate("Simulator", "A screw jack bends the bar for the probe linearisation.")),
     };
 }
 
@@ -54,6 +57,10 @@ SettingsSchema simulatedDriveSchema() {
         SettingField::number(QStringLiteral("cuttingCurrentA"),
                              QCoreApplication::translate("Simulator", "Cutting current"), 0.6, -50.0, 50.0,
                              QCoreApplication::translate("Simulator", "A"), 2),
+        SettingField::boolean(QStringLiteral("stand"),
+                              QCoreApplication::translate("Simulator", "On a calibration stand"), true,
+                              QCoreApplication::translate(
+                                  "Simulator", "A hydraulic jack applies the known loads of the k_p calibration.")),
     };
 }
 

@@ -1203,6 +1203,233 @@
     </message>
 </context>
 <context>
+    <name>ProcedureWords</name>
+    <message>
+        <source>The ADC saturated here (raw codes %1 to %2, limits 0 and %3): the point is kept but not used in the fit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1: %2 µm at ADC code %3 (mean of %4 samples).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 read again: %2 µm at ADC code %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed point %1 added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 removed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The probe is not ready (%1): type the point instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No samples from the probe for %1 s. A mandrel withholds its samples while its ADC is over range (the bar bent beyond the probe&apos;s travel): unload the bar a little. Otherwise check its connection, or type the point.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The load changed while the point was read: capture it again once the bar is still.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capture stopped; no point added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fit needs at least %1 points within the ADC&apos;s range, there are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fit needs at least %1 different reference deflections, there are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the ADC code is %1 at every point: it does not follow the deflection (is the probe connected?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inside the calibrated range %1 to %2 µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>within the ADC&apos;s range 0 to %1, beyond the calibrated range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fitted characteristic is not monotonic: it turns at %1 µm (ADC code %2) %3, so one code would stand for two deflections; check the points near there or choose another degree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the table does not fit the ADC&apos;s range 0 to %1 or 16-bit entries; calibrate over the whole travel of the probe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the points cannot be fitted (a value that is not a number, or a set-up out of range)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree %1, as chosen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: it predicts the points best</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: within one standard error of degree %2, which predicts best, so the simpler curve is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: within half an ADC code of degree %2, which predicts best, so the simpler curve is kept</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(only degrees up to %1 can be tried with %2 points)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not used in the fit: point(s) %1, where the ADC saturated (a raw code reached 0 or %2). Capture them within the probe&apos;s range, or remove them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check at %1 µm: the ADC saturated (raw code %2 to %3), so the table cannot be verified there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check at %1 µm: the table reads %2 µm, %3 µm off (allowed ±%4 µm).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Passed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Failed: capture more points or choose another degree.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Uploading…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stored; asking the mandrel which table it holds…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The mandrel did not report its table; upload again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload stopped. The saved table is kept; upload it again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Upload failed: %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The saved table is kept; try again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read-back does not match: the mandrel reports version %1, %2%3; the image has version %4, CRC-32C %5.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, and says the table is not valid</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the forward and reverse strokes differ (taper or feed motion, not a dither)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the slide does not move: is the dither running?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too few samples at constant velocity in each stroke: a longer dither period or faster polling is needed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too few complete forward and reverse strokes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Typed point added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load %1 removed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The drive read-out is not ready: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No samples from the drive read-out for %1 s: check its connection.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No reliable current difference at %1 N (%2 stroke pairs): %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measurement stopped; no point added.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p needs at least %1 known loads, there are %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_p needs at least 2 different loads</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>load %1 is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the current difference is the same at every load: the drive current is not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the current difference falls as the load grows (slope %1 N/A): the load acts the other way or the current sign is reversed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check at %1 N: k_p ΔI + offset gives %2 N, %3 N off (allowed ±%4 N).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Failed: measure the loads again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>SerialGauge</name>
     <message>
         <source>Readings</source>
@@ -1313,21 +1540,6 @@
     </message>
     <message>
         <source>%1; reopening (%2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>SimulatedCalibrationProbe</name>
-    <message>
-        <source>Sending chunk %1 of %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stored in the mandrel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Stored, but the mandrel rejects it: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1595,6 +1807,18 @@
     </message>
     <message>
         <source>simulated micrometer ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On a calibration stand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A screw jack bends the bar for the probe linearisation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A hydraulic jack applies the known loads of the k_p calibration.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1965,14 +2189,6 @@ L/d %4</source>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>
-    <message>
-        <source>Simulated probe mandrel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulated cross feed</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message>
         <source>The devices changed while a calibration was open, so it was closed; the captured points are kept. Open it again to continue.</source>
         <translation type="unfinished"></translation>
@@ -3378,10 +3594,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive).&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>known loads</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3391,14 +3603,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>residual</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Fit k_p</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Force against the current difference.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3421,29 +3625,45 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Load − fit, N</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Not accepted: a verification load failed or is being measured. Measure it again, or go back to the loads.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring the verification load…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive). Check it at a load not used in the fit before going on.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit and verify k_p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Force against the current difference, then a verification load not used in the fit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verification load</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::KpLoadsPage</name>
-    <message>
-        <source>The drive read-out is not ready: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Measuring at %1 N: keep the load steady…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No reliable current difference at %1 N: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Typed point added.</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message>
         <source>measured, %1 pairs</source>
         <translation type="unfinished"></translation>
@@ -3458,10 +3678,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Known loads</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3510,6 +3726,42 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source> A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No drive read-out: type the current differences</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive read-out: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live ΔI %1 A (last stroke pair)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for dither strokes…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring at %1 N: keep the load steady while it settles…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring at %1 N: %2 stroke pairs averaged…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The stand&apos;s hydraulic jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Repeat load</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4092,15 +4344,63 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Accept the table</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Check the figures; the table is stored only when you accept it.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>I accept this linearisation table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold still, then the live codes are averaged…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not accepted: a verification point failed or is being read. Check again, or go back and capture more points.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 % of the table lies outside the calibrated range and is extrapolated; calibrate over more of the probe&apos;s travel.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no verification point yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 verification points passed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify the table — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Verify and accept the table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load the bar to a deflection not captured and check that the table reads it; the table is stored only when you accept it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stand&apos;s screw jack</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bend the bar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reference reading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> µm</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4130,30 +4430,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The jack bends the bar to %1 µm; wait for the live code to settle, then capture.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The probe is not ready: type the point instead.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Too few live samples yet (%1 of %2): wait a moment.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Point %1: %2 µm at ADC code %3.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Typed point %1 added.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Point removed.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>live, %1 samples</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4167,14 +4443,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Capture points</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Load the bar, read the instrument, capture. At least %1 points; both directions.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulator jack</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4229,6 +4497,62 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source> µm</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>No probe: type the points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Live ADC code %1 (mean of %2) — at the ADC&apos;s limit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hold still: the bar settles…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Averaging the live codes at %1 µm…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The jack bends the bar by at most ±2000 µm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The jack bends the bar to %1 µm; capture when the live code is steady.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No probe mandrel to read: type the point instead.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The typed code is outside the ADC&apos;s range.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — ADC saturated (%2 to %3 of 0 to %4), not used</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ADC saturated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Load the bar, read the instrument, capture: the bar holds still, then the codes are averaged. At least %1 points; both directions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stand&apos;s screw jack</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Repeat point</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeChoosePage</name>
@@ -4280,19 +4604,11 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::ProbeFitPage</name>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>degree %1: leave-one-out %2 µm, in-sample %3 µm%4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source> — chosen</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;p&gt;Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4365,6 +4681,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Table reading − reference, µm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -4445,30 +4765,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>Now upload it to the mandrel.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Upload refused: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Uploading…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Upload failed: %1. The saved table is kept; try again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Read-back does not match: the mandrel reports version %1, %2; the image has version %3, CRC-32C %4. Upload again.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The mandrel did not report its table; upload again.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -1205,6 +1205,233 @@
     </message>
 </context>
 <context>
+    <name>ProcedureWords</name>
+    <message>
+        <source>The ADC saturated here (raw codes %1 to %2, limits 0 and %3): the point is kept but not used in the fit.</source>
+        <translation>Здесь АЦП в насыщении (коды от %1 до %2 при пределах 0 и %3): точка сохранена, но в аппроксимации не используется.</translation>
+    </message>
+    <message>
+        <source>Point %1: %2 µm at ADC code %3 (mean of %4 samples).</source>
+        <translation>Точка %1: %2 мкм при коде АЦП %3 (среднее по %4 отсчётам).</translation>
+    </message>
+    <message>
+        <source>Point %1 read again: %2 µm at ADC code %3.</source>
+        <translation>Точка %1 снята заново: %2 мкм при коде АЦП %3.</translation>
+    </message>
+    <message>
+        <source>Typed point %1 added.</source>
+        <translation>Точка %1 (вручную) добавлена.</translation>
+    </message>
+    <message>
+        <source>Point %1 removed.</source>
+        <translation>Точка %1 удалена.</translation>
+    </message>
+    <message>
+        <source>The probe is not ready (%1): type the point instead.</source>
+        <translation>Датчик не готов (%1): введите точку вручную.</translation>
+    </message>
+    <message>
+        <source>No samples from the probe for %1 s. A mandrel withholds its samples while its ADC is over range (the bar bent beyond the probe&apos;s travel): unload the bar a little. Otherwise check its connection, or type the point.</source>
+        <translation>Нет отсчётов от датчика в течение %1 с. Оправка не передаёт отсчёты, пока её АЦП за пределом диапазона (оправка изогнута сильнее хода датчика): немного разгрузите оправку. Иначе проверьте подключение или введите точку вручную.</translation>
+    </message>
+    <message>
+        <source>The load changed while the point was read: capture it again once the bar is still.</source>
+        <translation>Нагрузка изменилась во время снятия точки: снимите её заново, когда оправка успокоится.</translation>
+    </message>
+    <message>
+        <source>Capture stopped; no point added.</source>
+        <translation>Снятие остановлено; точка не добавлена.</translation>
+    </message>
+    <message>
+        <source>the fit needs at least %1 points within the ADC&apos;s range, there are %2</source>
+        <translation>для аппроксимации нужно не менее %1 точек в пределах диапазона АЦП, а их %2</translation>
+    </message>
+    <message>
+        <source>the fit needs at least %1 different reference deflections, there are %2</source>
+        <translation>для аппроксимации нужно не менее %1 различных эталонных прогибов, а их %2</translation>
+    </message>
+    <message>
+        <source>the ADC code is %1 at every point: it does not follow the deflection (is the probe connected?)</source>
+        <translation>код АЦП равен %1 во всех точках: он не следует за прогибом (датчик подключён?)</translation>
+    </message>
+    <message>
+        <source>inside the calibrated range %1 to %2 µm</source>
+        <translation>внутри калиброванного диапазона от %1 до %2 мкм</translation>
+    </message>
+    <message>
+        <source>within the ADC&apos;s range 0 to %1, beyond the calibrated range</source>
+        <translation>в пределах диапазона АЦП от 0 до %1, за калиброванным диапазоном</translation>
+    </message>
+    <message>
+        <source>the fitted characteristic is not monotonic: it turns at %1 µm (ADC code %2) %3, so one code would stand for two deflections; check the points near there or choose another degree</source>
+        <translation>аппроксимированная характеристика немонотонна: она поворачивает при %1 мкм (код АЦП %2) %3, и один код соответствовал бы двум прогибам; проверьте точки вблизи или выберите другую степень</translation>
+    </message>
+    <message>
+        <source>the table does not fit the ADC&apos;s range 0 to %1 or 16-bit entries; calibrate over the whole travel of the probe</source>
+        <translation>таблица не укладывается в диапазон АЦП от 0 до %1 или в 16-битные значения; калибруйте по всему ходу датчика</translation>
+    </message>
+    <message>
+        <source>the points cannot be fitted (a value that is not a number, or a set-up out of range)</source>
+        <translation>точки нельзя аппроксимировать (значение не является числом или настройка вне допустимого диапазона)</translation>
+    </message>
+    <message>
+        <source>Degree %1, as chosen</source>
+        <translation>Степень %1, как выбрано</translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: it predicts the points best</source>
+        <translation>Степень %1 выбрана перекрёстной проверкой: она лучше всего предсказывает точки</translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: within one standard error of degree %2, which predicts best, so the simpler curve is kept</source>
+        <translation>Степень %1 выбрана перекрёстной проверкой: в пределах одной стандартной ошибки от степени %2, которая предсказывает лучше всего, поэтому оставлена более простая кривая</translation>
+    </message>
+    <message>
+        <source>Degree %1 chosen by cross-validation: within half an ADC code of degree %2, which predicts best, so the simpler curve is kept</source>
+        <translation>Степень %1 выбрана перекрёстной проверкой: в пределах половины кода АЦП от степени %2, которая предсказывает лучше всего, поэтому оставлена более простая кривая</translation>
+    </message>
+    <message>
+        <source>(only degrees up to %1 can be tried with %2 points)</source>
+        <translation>(при %2 точках можно проверить только степени до %1)</translation>
+    </message>
+    <message>
+        <source>Not used in the fit: point(s) %1, where the ADC saturated (a raw code reached 0 or %2). Capture them within the probe&apos;s range, or remove them.</source>
+        <translation>Не используются в аппроксимации точки %1: там АЦП в насыщении (код достиг 0 или %2). Снимите их в пределах хода датчика или удалите.</translation>
+    </message>
+    <message>
+        <source>Check at %1 µm: the ADC saturated (raw code %2 to %3), so the table cannot be verified there.</source>
+        <translation>Проверка при %1 мкм: АЦП в насыщении (коды от %2 до %3), поэтому таблицу здесь проверить нельзя.</translation>
+    </message>
+    <message>
+        <source>Check at %1 µm: the table reads %2 µm, %3 µm off (allowed ±%4 µm).</source>
+        <translation>Проверка при %1 мкм: таблица показывает %2 мкм, отклонение %3 мкм (допускается ±%4 мкм).</translation>
+    </message>
+    <message>
+        <source>Passed.</source>
+        <translation>Пройдена.</translation>
+    </message>
+    <message>
+        <source>Failed: capture more points or choose another degree.</source>
+        <translation>Не пройдена: снимите больше точек или выберите другую степень.</translation>
+    </message>
+    <message>
+        <source>Uploading…</source>
+        <translation>Загрузка…</translation>
+    </message>
+    <message>
+        <source>Stored; asking the mandrel which table it holds…</source>
+        <translation>Записано; запрашиваем у оправки, какая таблица в ней хранится…</translation>
+    </message>
+    <message>
+        <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
+        <translation>Проверено: оправка сообщает версию %1, %2 — как у отправленного образа.</translation>
+    </message>
+    <message>
+        <source>The mandrel did not report its table; upload again.</source>
+        <translation>Оправка не сообщила данные своей таблицы; загрузите снова.</translation>
+    </message>
+    <message>
+        <source>Upload again.</source>
+        <translation>Загрузите снова.</translation>
+    </message>
+    <message>
+        <source>Upload refused: %1</source>
+        <translation>Загрузка отклонена: %1</translation>
+    </message>
+    <message>
+        <source>Upload stopped. The saved table is kept; upload it again.</source>
+        <translation>Загрузка остановлена. Сохранённая таблица не потеряна; загрузите её снова.</translation>
+    </message>
+    <message>
+        <source>Upload failed: %1.</source>
+        <translation>Загрузка не удалась: %1.</translation>
+    </message>
+    <message>
+        <source>The saved table is kept; try again.</source>
+        <translation>Сохранённая таблица не потеряна; повторите попытку.</translation>
+    </message>
+    <message>
+        <source>Read-back does not match: the mandrel reports version %1, %2%3; the image has version %4, CRC-32C %5.</source>
+        <translation>Контрольное считывание не совпадает: оправка сообщает версию %1, %2%3, а у образа версия %4, CRC-32C %5.</translation>
+    </message>
+    <message>
+        <source>, and says the table is not valid</source>
+        <translation> и считает таблицу недействительной</translation>
+    </message>
+    <message>
+        <source>the forward and reverse strokes differ (taper or feed motion, not a dither)</source>
+        <translation>прямой и обратный ходы различаются (конус или движение подачи, а не колебания)</translation>
+    </message>
+    <message>
+        <source>the slide does not move: is the dither running?</source>
+        <translation>суппорт не движется: включены ли колебания?</translation>
+    </message>
+    <message>
+        <source>too few samples at constant velocity in each stroke: a longer dither period or faster polling is needed</source>
+        <translation>слишком мало отсчётов при постоянной скорости в каждом ходе: нужен больший период колебаний или более частый опрос</translation>
+    </message>
+    <message>
+        <source>too few complete forward and reverse strokes</source>
+        <translation>слишком мало полных прямых и обратных ходов</translation>
+    </message>
+    <message>
+        <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
+        <translation>%1 Н: ΔI = %2 А (пар ходов: %3).</translation>
+    </message>
+    <message>
+        <source>Typed point added.</source>
+        <translation>Точка, введённая вручную, добавлена.</translation>
+    </message>
+    <message>
+        <source>Load %1 removed.</source>
+        <translation>Нагрузка %1 удалена.</translation>
+    </message>
+    <message>
+        <source>The drive read-out is not ready: %1</source>
+        <translation>Датчик тока привода не готов: %1</translation>
+    </message>
+    <message>
+        <source>No samples from the drive read-out for %1 s: check its connection.</source>
+        <translation>Нет отсчётов от датчика тока привода в течение %1 с: проверьте подключение.</translation>
+    </message>
+    <message>
+        <source>No reliable current difference at %1 N (%2 stroke pairs): %3</source>
+        <translation>Нет надёжной разности токов при %1 Н (пар ходов: %2): %3</translation>
+    </message>
+    <message>
+        <source>Measurement stopped; no point added.</source>
+        <translation>Измерение остановлено; точка не добавлена.</translation>
+    </message>
+    <message>
+        <source>k_p needs at least %1 known loads, there are %2</source>
+        <translation>для k_p нужно не менее %1 известных нагрузок, а их %2</translation>
+    </message>
+    <message>
+        <source>k_p needs at least 2 different loads</source>
+        <translation>для k_p нужно не менее 2 различных нагрузок</translation>
+    </message>
+    <message>
+        <source>load %1 is not a number</source>
+        <translation>нагрузка %1 не является числом</translation>
+    </message>
+    <message>
+        <source>the current difference is the same at every load: the drive current is not read</source>
+        <translation>разность токов одинакова при всех нагрузках: ток привода не считывается</translation>
+    </message>
+    <message>
+        <source>the current difference falls as the load grows (slope %1 N/A): the load acts the other way or the current sign is reversed</source>
+        <translation>разность токов уменьшается с ростом нагрузки (наклон %1 Н/А): нагрузка приложена в обратную сторону или знак тока перепутан</translation>
+    </message>
+    <message>
+        <source>Check at %1 N: k_p ΔI + offset gives %2 N, %3 N off (allowed ±%4 N).</source>
+        <translation>Проверка при %1 Н: k_p ΔI + смещение даёт %2 Н, отклонение %3 Н (допускается ±%4 Н).</translation>
+    </message>
+    <message>
+        <source>Failed: measure the loads again.</source>
+        <translation>Не пройдена: измерьте нагрузки заново.</translation>
+    </message>
+</context>
+<context>
     <name>SerialGauge</name>
     <message>
         <source>Readings</source>
@@ -1316,21 +1543,6 @@
     <message>
         <source>%1; reopening (%2)</source>
         <translation>%1; повторное открытие (%2)</translation>
-    </message>
-</context>
-<context>
-    <name>SimulatedCalibrationProbe</name>
-    <message>
-        <source>Sending chunk %1 of %2</source>
-        <translation>Передача блока %1 из %2</translation>
-    </message>
-    <message>
-        <source>Stored in the mandrel</source>
-        <translation>Записано в оправку</translation>
-    </message>
-    <message>
-        <source>Stored, but the mandrel rejects it: %1</source>
-        <translation>Записано, но оправка отвергает таблицу: %1</translation>
     </message>
 </context>
 <context>
@@ -1598,6 +1810,18 @@
     <message>
         <source>simulated micrometer ready</source>
         <translation>симулятор микрометра готов</translation>
+    </message>
+    <message>
+        <source>On a calibration stand</source>
+        <translation>На калибровочном стенде</translation>
+    </message>
+    <message>
+        <source>A screw jack bends the bar for the probe linearisation.</source>
+        <translation>Винтовой домкрат изгибает оправку для линеаризации датчика.</translation>
+    </message>
+    <message>
+        <source>A hydraulic jack applies the known loads of the k_p calibration.</source>
+        <translation>Гидравлический домкрат создаёт известные нагрузки для калибровки k_p.</translation>
     </message>
 </context>
 <context>
@@ -1969,14 +2193,6 @@ L/d %4</translation>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>
-    <message>
-        <source>Simulated probe mandrel</source>
-        <translation>Симулированная оправка-датчик</translation>
-    </message>
-    <message>
-        <source>Simulated cross feed</source>
-        <translation>Симулированная поперечная подача</translation>
-    </message>
     <message>
         <source>The devices changed while a calibration was open, so it was closed; the captured points are kept. Open it again to continue.</source>
         <translation>Во время калибровки изменились устройства, поэтому она закрыта; снятые точки сохранены. Откройте её снова, чтобы продолжить.</translation>
@@ -3400,10 +3616,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Отклонено: %1</translation>
     </message>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive).&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;k_p = %1 Н/А&lt;/b&gt; (смещение %2 Н, R² %3, СКО остатков %4 Н), нагрузок: %5.&lt;/p&gt;&lt;p&gt;Прямая P = k_p ΔI + смещение строится методом наименьших квадратов; смещение должно быть малым по сравнению с нагрузками (оно показывает асимметрию привода).&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>known loads</source>
         <translation>известные нагрузки</translation>
     </message>
@@ -3414,14 +3626,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>residual</source>
         <translation>остаток</translation>
-    </message>
-    <message>
-        <source>Fit k_p</source>
-        <translation>Расчёт k_p</translation>
-    </message>
-    <message>
-        <source>Force against the current difference.</source>
-        <translation>Сила в зависимости от разности токов.</translation>
     </message>
     <message>
         <source>Load against ΔI</source>
@@ -3443,29 +3647,45 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>Load − fit, N</source>
         <translation>Нагрузка − аппроксимация, Н</translation>
     </message>
+    <message>
+        <source>Not accepted: a verification load failed or is being measured. Measure it again, or go back to the loads.</source>
+        <translation>Не принято: проверочная нагрузка не прошла проверку или ещё измеряется. Измерьте её заново или вернитесь к нагрузкам.</translation>
+    </message>
+    <message>
+        <source>Check load</source>
+        <translation>Проверить</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>Measuring the verification load…</source>
+        <translation>Измерение проверочной нагрузки…</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;k_p = %1 N/A&lt;/b&gt; (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.&lt;/p&gt;&lt;p&gt;The straight line P = k_p ΔI + offset is fitted by least squares; the offset should be small against the loads (it shows an asymmetry of the drive). Check it at a load not used in the fit before going on.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;k_p = %1 Н/А&lt;/b&gt; (смещение %2 Н, R² %3, СКО остатков %4 Н), нагрузок: %5.&lt;/p&gt;&lt;p&gt;Прямая P = k_p ΔI + смещение строится методом наименьших квадратов; смещение должно быть малым по сравнению с нагрузками (оно показывает асимметрию привода). Перед продолжением проверьте её при нагрузке, не использованной в расчёте.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Fit and verify k_p</source>
+        <translation>Расчёт и проверка k_p</translation>
+    </message>
+    <message>
+        <source>Force against the current difference, then a verification load not used in the fit.</source>
+        <translation>Сила в зависимости от разности токов, затем проверочная нагрузка, не использованная в расчёте.</translation>
+    </message>
+    <message>
+        <source>Verification load</source>
+        <translation>Проверочная нагрузка</translation>
+    </message>
+    <message>
+        <source> N</source>
+        <translation> Н</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::KpLoadsPage</name>
-    <message>
-        <source>The drive read-out is not ready: %1</source>
-        <translation>Датчик тока привода не готов: %1</translation>
-    </message>
-    <message>
-        <source>Measuring at %1 N: keep the load steady…</source>
-        <translation>Измерение при %1 Н: удерживайте нагрузку постоянной…</translation>
-    </message>
-    <message>
-        <source>No reliable current difference at %1 N: %2</source>
-        <translation>Нет надёжной разности токов при %1 Н: %2</translation>
-    </message>
-    <message>
-        <source>%1 N: ΔI = %2 A from %3 stroke pairs.</source>
-        <translation>%1 Н: ΔI = %2 А (пар ходов: %3).</translation>
-    </message>
-    <message>
-        <source>Typed point added.</source>
-        <translation>Точка, введённая вручную, добавлена.</translation>
-    </message>
     <message>
         <source>measured, %1 pairs</source>
         <translation>измерено, пар ходов: %1</translation>
@@ -3481,10 +3701,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Known loads</source>
         <translation>Известные нагрузки</translation>
-    </message>
-    <message>
-        <source>Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
-        <translation>Симулятор: домкрат создаёт введённую нагрузку. Измерьте не менее 3 нагрузок, включая 0.</translation>
     </message>
     <message>
         <source>Apply the load, enter what the gauge shows, measure. At least 3 loads, 0 included.</source>
@@ -3533,6 +3749,42 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source> A</source>
         <translation> А</translation>
+    </message>
+    <message>
+        <source>No drive read-out: type the current differences</source>
+        <translation>Нет датчика тока привода: введите разности токов вручную</translation>
+    </message>
+    <message>
+        <source>Drive read-out: %1</source>
+        <translation>Датчик тока привода: %1</translation>
+    </message>
+    <message>
+        <source>Live ΔI %1 A (last stroke pair)</source>
+        <translation>Текущая ΔI %1 А (последняя пара ходов)</translation>
+    </message>
+    <message>
+        <source>Waiting for dither strokes…</source>
+        <translation>Ожидание ходов колебаний…</translation>
+    </message>
+    <message>
+        <source>Measuring at %1 N: keep the load steady while it settles…</source>
+        <translation>Измерение при %1 Н: удерживайте нагрузку постоянной, пока всё успокаивается…</translation>
+    </message>
+    <message>
+        <source>Measuring at %1 N: %2 stroke pairs averaged…</source>
+        <translation>Измерение при %1 Н: усреднено пар ходов: %2…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>The stand&apos;s hydraulic jack applies the load you enter. Measure at least 3 loads, 0 included.</source>
+        <translation>Гидравлический домкрат стенда создаёт введённую нагрузку. Измерьте не менее 3 нагрузок, включая 0.</translation>
+    </message>
+    <message>
+        <source>Repeat load</source>
+        <translation>Повторить</translation>
     </message>
 </context>
 <context>
@@ -4115,16 +4367,64 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>(нет имени оператора — укажите его в «Настройках»)</translation>
     </message>
     <message>
-        <source>Accept the table</source>
-        <translation>Принятие таблицы</translation>
-    </message>
-    <message>
-        <source>Check the figures; the table is stored only when you accept it.</source>
-        <translation>Проверьте значения; таблица сохраняется, только когда вы её примете.</translation>
-    </message>
-    <message>
         <source>I accept this linearisation table</source>
         <translation>Принимаю эту таблицу линеаризации</translation>
+    </message>
+    <message>
+        <source>Hold still, then the live codes are averaged…</source>
+        <translation>Оправка успокаивается, затем коды усредняются…</translation>
+    </message>
+    <message>
+        <source>Not accepted: a verification point failed or is being read. Check again, or go back and capture more points.</source>
+        <translation>Не принято: проверочная точка не прошла проверку или ещё снимается. Проверьте снова или вернитесь и снимите больше точек.</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>Check point</source>
+        <translation>Проверить</translation>
+    </message>
+    <message>
+        <source>%1 % of the table lies outside the calibrated range and is extrapolated; calibrate over more of the probe&apos;s travel.</source>
+        <translation>%1 % таблицы лежит вне калиброванного диапазона и экстраполировано; калибруйте по большей части хода датчика.</translation>
+    </message>
+    <message>
+        <source>no verification point yet</source>
+        <translation>проверочных точек пока нет</translation>
+    </message>
+    <message>
+        <source>%1 of %2 verification points passed</source>
+        <translation>пройдено проверочных точек: %1 из %2</translation>
+    </message>
+    <message>
+        <source>Verify the table — %1</source>
+        <translation>Проверка таблицы — %1</translation>
+    </message>
+    <message>
+        <source>Verify and accept the table</source>
+        <translation>Проверка и принятие таблицы</translation>
+    </message>
+    <message>
+        <source>Load the bar to a deflection not captured and check that the table reads it; the table is stored only when you accept it.</source>
+        <translation>Нагрузите оправку до прогиба, которого нет среди точек, и проверьте, что таблица его показывает; таблица сохраняется, только когда вы её примете.</translation>
+    </message>
+    <message>
+        <source>Stand&apos;s screw jack</source>
+        <translation>Домкрат стенда</translation>
+    </message>
+    <message>
+        <source>Bend the bar</source>
+        <translation>Изогнуть оправку</translation>
+    </message>
+    <message>
+        <source>Reference reading</source>
+        <translation>Показание эталона</translation>
+    </message>
+    <message>
+        <source> µm</source>
+        <translation> мкм</translation>
     </message>
 </context>
 <context>
@@ -4153,30 +4453,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>сейчас</translation>
     </message>
     <message>
-        <source>The jack bends the bar to %1 µm; wait for the live code to settle, then capture.</source>
-        <translation>Домкрат изгибает оправку до %1 мкм; дождитесь, пока текущий код установится, и снимите точку.</translation>
-    </message>
-    <message>
-        <source>The probe is not ready: type the point instead.</source>
-        <translation>Датчик не готов: введите точку вручную.</translation>
-    </message>
-    <message>
-        <source>Too few live samples yet (%1 of %2): wait a moment.</source>
-        <translation>Пока мало отсчётов (%1 из %2): подождите немного.</translation>
-    </message>
-    <message>
-        <source>Point %1: %2 µm at ADC code %3.</source>
-        <translation>Точка %1: %2 мкм при коде АЦП %3.</translation>
-    </message>
-    <message>
-        <source>Typed point %1 added.</source>
-        <translation>Точка %1 (вручную) добавлена.</translation>
-    </message>
-    <message>
-        <source>Point removed.</source>
-        <translation>Точка удалена.</translation>
-    </message>
-    <message>
         <source>live, %1 samples</source>
         <translation>с датчика, отсчётов: %1</translation>
     </message>
@@ -4191,14 +4467,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Capture points</source>
         <translation>Снятие точек</translation>
-    </message>
-    <message>
-        <source>Load the bar, read the instrument, capture. At least %1 points; both directions.</source>
-        <translation>Нагрузите оправку, снимите показание прибора, зафиксируйте точку. Минимум точек: %1, в обоих направлениях.</translation>
-    </message>
-    <message>
-        <source>Simulator jack</source>
-        <translation>Домкрат симулятора</translation>
     </message>
     <message>
         <source>Bend the bar</source>
@@ -4252,6 +4520,62 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source> µm</source>
         <translation> мкм</translation>
     </message>
+    <message>
+        <source>No probe: type the points</source>
+        <translation>Нет датчика: введите точки вручную</translation>
+    </message>
+    <message>
+        <source>Live ADC code %1 (mean of %2) — at the ADC&apos;s limit</source>
+        <translation>Текущий код АЦП %1 (среднее, отсчётов: %2) — на пределе АЦП</translation>
+    </message>
+    <message>
+        <source>Hold still: the bar settles…</source>
+        <translation>Не двигайте: оправка успокаивается…</translation>
+    </message>
+    <message>
+        <source>Averaging the live codes at %1 µm…</source>
+        <translation>Усреднение кодов при %1 мкм…</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Стоп</translation>
+    </message>
+    <message>
+        <source>The jack bends the bar by at most ±2000 µm.</source>
+        <translation>Домкрат изгибает оправку не более чем на ±2000 мкм.</translation>
+    </message>
+    <message>
+        <source>The jack bends the bar to %1 µm; capture when the live code is steady.</source>
+        <translation>Домкрат изгибает оправку до %1 мкм; снимите точку, когда текущий код установится.</translation>
+    </message>
+    <message>
+        <source>No probe mandrel to read: type the point instead.</source>
+        <translation>Нет оправки-датчика для считывания: введите точку вручную.</translation>
+    </message>
+    <message>
+        <source>The typed code is outside the ADC&apos;s range.</source>
+        <translation>Введённый код вне диапазона АЦП.</translation>
+    </message>
+    <message>
+        <source>%1 — ADC saturated (%2 to %3 of 0 to %4), not used</source>
+        <translation>%1 — АЦП в насыщении (%2–%3 при 0–%4), не используется</translation>
+    </message>
+    <message>
+        <source>ADC saturated</source>
+        <translation>АЦП в насыщении</translation>
+    </message>
+    <message>
+        <source>Load the bar, read the instrument, capture: the bar holds still, then the codes are averaged. At least %1 points; both directions.</source>
+        <translation>Нагрузите оправку, снимите показание прибора, зафиксируйте точку: оправка успокаивается, затем коды усредняются. Минимум точек: %1, в обоих направлениях.</translation>
+    </message>
+    <message>
+        <source>Stand&apos;s screw jack</source>
+        <translation>Домкрат стенда</translation>
+    </message>
+    <message>
+        <source>Repeat point</source>
+        <translation>Повторить</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ProbeChoosePage</name>
@@ -4303,20 +4627,12 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::ProbeFitPage</name>
     <message>
-        <source>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;&lt;b&gt;%1&lt;/b&gt;.&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>degree %1: leave-one-out %2 µm, in-sample %3 µm%4</source>
         <translation>степень %1: скользящий контроль %2 мкм, по самим точкам %3 мкм%4</translation>
     </message>
     <message>
         <source> — chosen</source>
         <translation> — выбрана</translation>
-    </message>
-    <message>
-        <source>&lt;p&gt;Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;Каждая точка предсказывается по аппроксимации остальных (скользящий контроль); более высокая степень всегда лучше проходит через сами точки, поэтому она выбирается, только если лучше их предсказывает.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Refused: %1</source>
@@ -4389,6 +4705,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Table reading − reference, µm</source>
         <translation>Показание по таблице − эталон, мкм</translation>
+    </message>
+    <message>
+        <source>Each point is predicted from a fit to the others (leave-one-out); a higher degree always fits the points themselves better, so it is kept only when it predicts them better.</source>
+        <translation>Каждая точка предсказывается по аппроксимации остальных (скользящий контроль); более высокая степень всегда лучше проходит через сами точки, поэтому она выбирается, только если лучше их предсказывает.</translation>
     </message>
 </context>
 <context>
@@ -4471,30 +4791,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>Now upload it to the mandrel.</source>
         <translation>Теперь загрузите её в оправку.</translation>
-    </message>
-    <message>
-        <source>Upload refused: %1</source>
-        <translation>Загрузка отклонена: %1</translation>
-    </message>
-    <message>
-        <source>Uploading…</source>
-        <translation>Загрузка…</translation>
-    </message>
-    <message>
-        <source>Upload failed: %1. The saved table is kept; try again.</source>
-        <translation>Загрузка не удалась: %1. Сохранённая таблица не потеряна; повторите попытку.</translation>
-    </message>
-    <message>
-        <source>Verified: the mandrel reports version %1, %2, the same as the image sent.</source>
-        <translation>Проверено: оправка сообщает версию %1, %2 — как у отправленного образа.</translation>
-    </message>
-    <message>
-        <source>Read-back does not match: the mandrel reports version %1, %2; the image has version %3, CRC-32C %4. Upload again.</source>
-        <translation>Контрольное считывание не совпадает: оправка сообщает версию %1, %2, а у образа версия %3, CRC-32C %4. Загрузите снова.</translation>
-    </message>
-    <message>
-        <source>The mandrel did not report its table; upload again.</source>
-        <translation>Оправка не сообщила данные своей таблицы; загрузите снова.</translation>
     </message>
     <message>
         <source>Cannot write %1: %2</source>

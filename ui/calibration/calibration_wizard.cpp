@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QTableWidget>
 #include <QVBoxLayout>
 
 namespace tt::ui {
@@ -28,16 +29,25 @@ void CalibrationWizard::changeEvent(QEvent* event) {
     QWizard::changeEvent(event);
 }
 
-void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWidget* remove, QWidget* chart,
-                       QWidget* message) {
+void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, const QList<QWidget*>& rowButtons,
+                       QWidget* chart, QWidget* message) {
     left->addWidget(table, 1);
-    left->addWidget(remove);
+    auto* buttons = new QHBoxLayout;
+    for (QWidget* b : rowButtons)
+        buttons->addWidget(b);
+    left->addLayout(buttons);
     auto* body = new QHBoxLayout;
     body->addLayout(left, 2);
     body->addWidget(chart, 3);
     auto* layout = new QVBoxLayout(page);
     layout->addLayout(body, 1);
     layout->addWidget(message);
+}
+
+int selectedRowOrLast(const QTableWidget* table, int count) {
+    const QList<QTableWidgetItem*> selected = table->selectedItems();
+    const int row = selected.isEmpty() ? -1 : selected.front()->row();
+    return row >= 0 && row < count ? row : count - 1;
 }
 
 QLabel* wrappedLabel(QWidget* parent) {
@@ -48,6 +58,11 @@ QLabel* wrappedLabel(QWidget* parent) {
 
 void markProblem(QLabel* label, bool problem) {
     label->setStyleSheet(problem ? QStringLiteral("color: #b71c1c; font-weight: bold;") : QString());
+}
+
+void markVerdict(QLabel* label, bool passed) {
+    label->setStyleSheet(passed ? QStringLiteral("color: #1b5e20; font-weight: bold;")
+                                : QStringLiteral("color: #b71c1c; font-weight: bold;"));
 }
 
 }  // namespace tt::ui

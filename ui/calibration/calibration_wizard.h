@@ -4,6 +4,7 @@
 #include <QWizardPage>
 
 class QLabel;
+class QTableWidget;
 class QVBoxLayout;
 
 namespace tt::ui {
@@ -33,12 +34,17 @@ protected:
 };
 
 /// The layout of a capture page: `left` (filled by the caller with what goes above the points)
-/// then the points table and its Remove button, the chart to the right, the message below both.
-void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, QWidget* remove, QWidget* chart,
-                       QWidget* message);
+/// then the points table and the buttons that act on its selected row side by side, the chart to
+/// the right, the message below both.
+void layOutCapturePage(QWizardPage* page, QVBoxLayout* left, QWidget* table, const QList<QWidget*>& rowButtons,
+                       QWidget* chart, QWidget* message);
+/// The row selected in a points table of `count` rows, or the last row when none is (−1: empty).
+int selectedRowOrLast(const QTableWidget* table, int count);
 /// A label that wraps its text (instructions, results).
 QLabel* wrappedLabel(QWidget* parent);
 /// Shows `label` in the problem colour (bold dark red) or in the normal one.
 void markProblem(QLabel* label, bool problem);
+/// Shows a verdict in `label`: bold dark green when it passed, bold dark red when not.
+void markVerdict(QLabel* label, bool passed);
 
 }  // namespace tt::ui

@@ -1,39 +1,64 @@
 #pragma once
 
-#include "ui/calibration/calibration_probe.h"
+#include <QString>
+#include <cstdint>
+#include <optional>
+
+#include "core/calibration/table_upload.h"
+#include "core/ports/deflection_probe.h"
 
 namespace tt::devices {
+class CalibrationStand;
 class Device;
-}
+}  // namespace tt::devices
 
 namespace tt::ui {
 
-/// A configured probe-mandrel device (devices plugin API) as a calibration probe: its
-/// core::DeflectionProbe port for live codes and its TableUploadTarget for the chunked upload and
-/// the read-back of version and CRC; the ADC resolution and image format follow what the
-/// mandrel reports. The device must outlive the adapter.
-class DeviceCalibrationProbe final : public CalibrationProbe {
+/// A configured probe-mandrel device (devices plugin API) as the probe wizard uses it: its
+/// core::DeflectionProbe port for live codes, its TableUploadTarget as the engine's upload port
+/// (chunked upload, read-back of version and CRC), the ADC resolution and image format the mandrel
+/// reports, and the screw jack of its calibration stand when the device offers one. The device
+/// must outlive the adapter; the owner releases a jack the adapter engaged (releaseJack) while the
+/// device is still there.
+class DeviceCalibrationProbe final : public core::TableUploadPort {
 public:
     /// Throws std::invalid_argument when the device has no deflection-probe port. Without
     /// `adcBits` the resolution is the one the mandrel reports (probe protocol 2's DEVICE_INFO).
     DeviceCalibrationProbe(devices::Device& device, const QString& name, std::optional<int> adcBits = std::nullopt);
+    DeviceCalibrationProbe(const DeviceCalibrationProbe&) = delete;
+    DeviceCalibrationProbe& operator=(const DeviceCalibrationProbe&) = delete;
 
-    QString name() const override { return m_name; }
-    std::optional<int> adcBits() const override;
-    core::DeflectionProbe& port() override;
-    bool canUpload() const override;
+    QString name() const { return m_name; }
+    /// ADC resolution, bits, when the probe knows it (otherwise the wizard asks).
+    std::optional<int> adcBits() const;
+    /// The live samples (raw ADC code per plane).
+    core::DeflectionProbe& port();
+    bool canUpload() const;
+    /// The table image format the mandrel's firmware reads: 2, or 1 for probe protocol 1.
+    std::uint8_t imageFormat() const;
+
+    /// The device's calibration stand has a screw jack that bends the bar.
+    bool hasJack() const;
+    /// Bends the bar to a tip deflection in `plane`, mm (throws std::invalid_argument without a jack).
+    void bendBar(int plane, double tipDeflectionMm);
+    /// Takes away the jack this adapter engaged.
+    void releaseJack();
+
     void startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) override;
-    std::uint8_t imageFormat() const override;
-    ProbeUploadStatus uploadStatus() const override;
+    core::UploadLinkStatus uploadStatus() const override;
     void requestReadback() override;
+    std::optional<core::TableReadback> readback() const override;
+
     /// The device behind the adapter.
     const devices::Device& device() const { return m_device; }
-    std::optional<ProbeTableReadback> readback() const override;
 
 private:
+    devices::CalibrationStand* jack() const;
+
     devices::Device& m_device;
     QString m_name;
     std::optional<int> m_bits;
+    bool m_engaged = false;
 };
 
 }  // namespace tt::ui

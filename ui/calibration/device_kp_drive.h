@@ -2,32 +2,45 @@
 
 #include <QString>
 
-#include "ui/calibration/kp_drive_source.h"
+#include "core/ports/drive_current.h"
 
 namespace tt::devices {
+class CalibrationStand;
 class Device;
-}
+}  // namespace tt::devices
 
 namespace tt::ui {
 
 /// A configured drive-current device (devices plugin API: the Modbus read-out of the drive or the
 /// PLC, or the simulator's drive) as the cross-feed drive of the k_p wizard: its current,
-/// velocity and position read-out while the cross feed dithers. The samples arrive in the event
-/// loop, so poll() has nothing to do, and the operator applies the known loads (no jack). The
-/// device must outlive the adapter.
-class DeviceKpDrive final : public KpDriveSource {
+/// velocity and position read-out while the cross feed dithers, and the hydraulic jack of its
+/// calibration stand when the device offers one (on a machine the operator applies the loads).
+/// The device must outlive the adapter; the owner releases a jack the adapter engaged
+/// (releaseJack) while the device is still there.
+class DeviceKpDrive final {
 public:
     /// Throws std::invalid_argument when the device has no drive-current read-out.
     DeviceKpDrive(devices::Device& device, const QString& name);
+    DeviceKpDrive(const DeviceKpDrive&) = delete;
+    DeviceKpDrive& operator=(const DeviceKpDrive&) = delete;
 
-    QString name() const override { return m_name; }
-    core::DriveCurrentReadout& readout() override;
+    QString name() const { return m_name; }
+    core::DriveCurrentReadout& readout();
+    /// The device's calibration stand has a hydraulic jack that applies a known load.
+    bool hasJack() const;
+    /// The jack pushes the tool holder towards the axis with `loadN` (throws std::invalid_argument without one).
+    void applyLoadN(double loadN);
+    /// Takes away the jack this adapter engaged.
+    void releaseJack();
     /// The device behind the adapter.
     const devices::Device& device() const { return m_device; }
 
 private:
+    devices::CalibrationStand* jack() const;
+
     devices::Device& m_device;
     QString m_name;
+    bool m_engaged = false;
 };
 
 }  // namespace tt::ui

@@ -15,18 +15,20 @@
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
 #include "ui/app_state.h"
 #include "ui/calibration/chart_ranges.h"
+#include "ui/calibration/procedure_words.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
 
-KpDriveSource* KpWizardContext::drive() const {
+DeviceKpDrive* KpWizardContext::drive() const {
     if (drives.empty()) return nullptr;
     return drives[static_cast<std::size_t>(std::clamp(session->driveIndex, 0, static_cast<int>(drives.size()) - 1))];
 }
@@ -34,8 +36,6 @@ KpDriveSource* KpWizardContext::drive() const {
 QString KpWizardContext::operatorName() const {
     return app && app->state ? app->state->operatorName().trimmed() : QString();
 }
-
-namespace {}  // namespace
 
 // --- 1. Setup -----------------------------------------------------------------------------------
 
@@ -61,7 +61,7 @@ KpSetupPage::KpSetupPage(KpWizardContext& context, QWidget* parent)
 void KpSetupPage::initializePage() {
     const QSignalBlocker block(m_drive);
     m_drive->clear();
-    for (KpDriveSource* d : m_ctx.drives)
+    for (DeviceKpDrive* d : m_ctx.drives)
         m_drive->addItem(d->name());
     m_drive->setCurrentIndex(std::clamp(m_ctx.session->driveIndex, 0, std::max(0, m_drive->count() - 1)));
     m_tools->clear();
@@ -111,9 +111,11 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     : CalibrationWizardPage(parent),
       m_ctx(context),
       m_timer(new QTimer(this)),
+      m_live(new QLabel(this)),
       m_loadLabel(new QLabel(this)),
       m_load(new QDoubleSpinBox(this)),
       m_measure(new QPushButton(this)),
+      m_repeat(new QPushButton(this)),
       m_typedLabel(new QLabel(this)),
       m_typed(new QDoubleSpinBox(this)),
       m_addTyped(new QPushButton(this)),
@@ -122,9 +124,12 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
       m_table(new QTableWidget(0, 3, this)),
       m_chart(new Chart(this)),
       m_message(wrappedLabel(this)) {
+    m_live->setObjectName(QStringLiteral("liveDifference"));
+    m_live->setStyleSheet(QStringLiteral("font-size: 16pt; font-weight: bold;"));
     m_load->setObjectName(QStringLiteral("loadSpin"));
     m_measure->setObjectName(QStringLiteral("measureLoad"));
     m_measure->setProperty("role", QStringLiteral("primary"));
+    m_repeat->setObjectName(QStringLiteral("repeatLoad"));
     m_typed->setObjectName(QStringLiteral("typedCurrentSpin"));
     m_addTyped->setObjectName(QStringLiteral("addTypedLoad"));
     m_remove->setObjectName(QStringLiteral("removeLoad"));
@@ -136,14 +141,16 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     m_typed->setRange(-500.0, 500.0);
     m_typed->setDecimals(3);
     for (QDoubleSpinBox* s : {m_load, m_typed})
-        s->setMinimumWidth(170);
+        s->setMinimumWidth(150);
     m_progress->setRange(0, 100);
     m_table->verticalHeader()->setDefaultSectionSize(40);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
-    m_chart->setMinimumSize(440, 300);
+    m_chart->setMinimumSize(340, 300);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // ΔI rises with the load
     auto* entry = new QGridLayout;
     entry->addWidget(m_loadLabel, 0, 0);
     entry->addWidget(m_load, 0, 1);
@@ -152,28 +159,43 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     entry->addWidget(m_typed, 1, 1);
     entry->addWidget(m_addTyped, 1, 2);
     auto* left = new QVBoxLayout;
+    left->addWidget(m_live);
     left->addLayout(entry);
     left->addWidget(m_progress);
-    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
+    layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
     m_timer->setInterval(100);
-    connect(m_timer, &QTimer::timeout, this, [this] { step(0.1); });
-    connect(m_measure, &QPushButton::clicked, this, &KpLoadsPage::startMeasurement);
+    connect(m_timer, &QTimer::timeout, this, [this] { step(); });
+    connect(m_measure, &QPushButton::clicked, this, [this] {
+        if (measuring())
+            abortMeasurement();
+        else
+            startMeasurement();
+    });
+    connect(m_repeat, &QPushButton::clicked, this, &KpLoadsPage::repeatMeasurement);
     connect(m_addTyped, &QPushButton::clicked, this, &KpLoadsPage::addTypedPoint);
     connect(m_remove, &QPushButton::clicked, this, &KpLoadsPage::removePoint);
 }
 
 void KpLoadsPage::initializePage() {
+    m_ctx.procedure().back();  // from the fit (after Cancel) to the loads
+    m_ctx.procedure().back();
     refresh();
     retranslate();
+    if (m_ctx.drive()) m_timer->start();
 }
 
 void KpLoadsPage::cleanupPage() {
     m_timer->stop();
-    m_measuring = false;
+    m_ctx.procedure().abort();
+    m_ctx.procedure().takeEvents();
 }
 
 bool KpLoadsPage::isComplete() const {
-    return !m_measuring && m_ctx.session->points.size() >= 3;
+    return m_ctx.procedure().canFit();
+}
+
+bool KpLoadsPage::measuring() const {
+    return m_ctx.procedure().measuring();
 }
 
 void KpLoadsPage::setLoadN(double loadN) {
@@ -182,6 +204,10 @@ void KpLoadsPage::setLoadN(double loadN) {
 
 void KpLoadsPage::setTypedCurrentDifference(double a) {
     m_typed->setValue(a);
+}
+
+void KpLoadsPage::selectPoint(int row) {
+    m_table->selectRow(row);
 }
 
 QString KpLoadsPage::message() const {
@@ -193,95 +219,103 @@ void KpLoadsPage::showMessage(const QString& text, bool problem) {
     markProblem(m_message, problem);
 }
 
+void KpLoadsPage::applyLoad(double loadN) {
+    if (DeviceKpDrive* d = m_ctx.drive(); d && d->hasJack()) d->applyLoadN(loadN);
+}
+
 bool KpLoadsPage::startMeasurement() {
-    KpDriveSource* d = m_ctx.drive();
-    if (!d || m_measuring) return false;
-    const core::DeviceHealth h = d->readout().health();
-    if (!h.ready()) {
-        showMessage(tr("The drive read-out is not ready: %1").arg(QString::fromStdString(h.message)), true);
+    if (!m_ctx.drive() || measuring()) return false;
+    step(0.0);  // the samples queued so far were taken under the old load
+    try {
+        applyLoad(m_load->value());
+        m_ctx.procedure().measure(m_load->value());
+    } catch (const std::invalid_argument& e) {
+        showMessage(QString::fromStdString(e.what()), true);
         return false;
     }
-    if (d->canApplyLoad()) d->applyLoadN(m_load->value());
-    core::DitherEstimatorConfig unit;  // k_p = 1 and k = 1: the "force" is ΔI in A
-    unit.currentToForceNPerA = 1.0;
-    unit.stiffnessNPerMm = 1.0;
-    m_estimator.emplace(unit);
-    m_measuring = true;
-    m_elapsedS = 0.0;
-    m_sum = 0.0;
-    m_count = 0;
-    m_measure->setEnabled(false);
-    m_progress->setValue(0);
-    showMessage(tr("Measuring at %1 N: keep the load steady…").arg(m_load->value(), 0, 'f', 0), false);
-    m_timer->start();
+    refreshState();
     emit completeChanged();
     return true;
 }
 
-void KpLoadsPage::step(double seconds) {
-    KpDriveSource* d = m_ctx.drive();
-    if (!m_measuring || !d) return;
-    d->poll(seconds);
-    m_elapsedS += seconds;
-    while (const std::optional<core::DriveSample> s = d->readout().takeSample()) {
-        const core::DitherUpdate u = m_estimator->update(*s);
-        if (m_elapsedS > kSettleS && u.newEstimate) {  // the first second lets the load settle
-            m_sum += u.estimate->forceN;
-            ++m_count;
-        }
-    }
-    m_progress->setValue(static_cast<int>(std::lround(100.0 * std::min(1.0, m_elapsedS / (kSettleS + kWindowS)))));
-    if (m_elapsedS >= kSettleS + kWindowS - 1e-9) finishMeasurement();
+bool KpLoadsPage::repeatMeasurement() {
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
+    if (!m_ctx.drive() || measuring() || row < 0) return false;
+    step(0.0);
+    applyLoad(m_ctx.procedure().points()[static_cast<std::size_t>(row)].loadN);
+    m_ctx.procedure().repeatPoint(row);
+    refreshState();
+    emit completeChanged();
+    return true;
 }
 
-bool KpLoadsPage::measureNow() {
-    if (!startMeasurement()) return false;
-    while (m_measuring)
-        step(0.1);
-    return m_count >= 3;
+void KpLoadsPage::abortMeasurement() {
+    m_ctx.procedure().abort();
+    handleEvents();
+    refreshState();
+    emit completeChanged();
 }
 
-void KpLoadsPage::finishMeasurement() {
-    m_timer->stop();
-    m_measuring = false;
-    m_measure->setEnabled(true);
-    if (m_count < 3) {
-        showMessage(tr("No reliable current difference at %1 N: %2")
-                        .arg(m_load->value(), 0, 'f', 0)
-                        .arg(QString::fromStdString(m_estimator->state().reason)),
-                    true);
-    } else {
-        m_ctx.session->points.push_back({m_load->value(), m_sum / m_count, m_count});
-        m_ctx.session->fit.reset();
-        showMessage(tr("%1 N: ΔI = %2 A from %3 stroke pairs.")
-                        .arg(m_load->value(), 0, 'f', 0)
-                        .arg(m_sum / m_count, 0, 'f', 3)
-                        .arg(m_count),
-                    false);
+void KpLoadsPage::step(double elapsedS) {
+    if (DeviceKpDrive* d = m_ctx.drive()) m_ctx.procedure().pump(d->readout(), elapsedS);
+    handleEvents();
+    refreshState();
+}
+
+void KpLoadsPage::handleEvents() {
+    bool any = false;
+    for (const core::KpEvent& e : m_ctx.procedure().takeEvents()) {
+        showMessage(ProcedureWords::kpEvent(e, m_ctx.procedure().config().noSampleTimeoutS),
+                    e.kind == core::KpEvent::Kind::MeasureFailed);
+        any = true;
     }
-    refresh();
+    if (any) refresh();
+}
+
+void KpLoadsPage::refreshState() {
+    const core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    DeviceKpDrive* d = m_ctx.drive();
+    const core::DeviceHealth h = d ? d->readout().health() : core::DeviceHealth{};
+    if (!d)
+        m_live->setText(tr("No drive read-out: type the current differences"));
+    else if (!h.ready())
+        m_live->setText(tr("Drive read-out: %1").arg(QString::fromStdString(h.message)));
+    else if (proc.liveDifferenceA())
+        m_live->setText(tr("Live ΔI %1 A (last stroke pair)").arg(*proc.liveDifferenceA(), 0, 'f', 3));
+    else
+        m_live->setText(tr("Waiting for dither strokes…"));
+    markProblem(m_live, d && !h.ready());
+    if (proc.measuring()) {
+        m_progress->setValue(static_cast<int>(std::lround(100.0 * proc.progress())));
+        showMessage(
+            proc.phase() == core::KpCalibrationProcedure::Phase::HoldStill
+                ? tr("Measuring at %1 N: keep the load steady while it settles…").arg(proc.loadN(), 0, 'f', 0)
+                : tr("Measuring at %1 N: %2 stroke pairs averaged…").arg(proc.loadN(), 0, 'f', 0).arg(proc.pairs()),
+            false);
+    }
+    m_measure->setText(proc.measuring() ? tr("Stop") : tr("Measure"));
+    m_measure->setEnabled(d != nullptr);
+    m_repeat->setEnabled(d && !proc.measuring() && !proc.points().empty());
+    for (QWidget* w : std::initializer_list<QWidget*>{m_addTyped, m_remove})
+        w->setEnabled(!proc.measuring());
 }
 
 bool KpLoadsPage::addTypedPoint() {
-    m_ctx.session->points.push_back({m_load->value(), m_typed->value(), 0});
-    m_ctx.session->fit.reset();
-    refresh();
-    showMessage(tr("Typed point added."), false);
+    if (measuring()) return false;
+    m_ctx.procedure().typePoint(m_load->value(), m_typed->value());
+    handleEvents();
     return true;
 }
 
 void KpLoadsPage::removePoint() {
-    auto& points = m_ctx.session->points;
-    if (points.empty()) return;
-    int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(points.size())) row = static_cast<int>(points.size()) - 1;
-    points.erase(points.begin() + row);
-    m_ctx.session->fit.reset();
-    refresh();
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
+    if (measuring() || row < 0) return;
+    m_ctx.procedure().removePoint(row);
+    handleEvents();
 }
 
 void KpLoadsPage::refresh() {
-    const auto& points = m_ctx.session->points;
+    const std::vector<core::KpLoadPoint>& points = m_ctx.procedure().points();
     m_table->setRowCount(static_cast<int>(points.size()));
     std::vector<double> xs, ys;
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -292,8 +326,7 @@ void KpLoadsPage::refresh() {
         m_table->item(row, 1)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         m_table->setItem(
             row, 2,
-            new QTableWidgetItem(points[i].estimates > 0 ? tr("measured, %1 pairs").arg(points[i].estimates)
-                                                         : tr("typed")));
+            new QTableWidgetItem(points[i].pairs > 0 ? tr("measured, %1 pairs").arg(points[i].pairs) : tr("typed")));
         xs.push_back(points[i].loadN);
         ys.push_back(points[i].currentDifferenceA);
     }
@@ -302,6 +335,8 @@ void KpLoadsPage::refresh() {
     showAllWithMargin(*m_chart, xs, ys, true, 0.3);
     m_table->resizeColumnsToContents();
     m_chart->refresh();
+    m_progress->setValue(0);
+    refreshState();
     emit completeChanged();
 }
 
@@ -309,18 +344,19 @@ void KpLoadsPage::retranslate() {
     setTitle(tr("Known loads"));
     m_load->setSuffix(tr(" N"));
     m_typed->setSuffix(tr(" A"));
-    KpDriveSource* d = m_ctx.drive();
-    setSubTitle(d && d->canApplyLoad()
-                    ? tr("Simulator: the jack applies the load you enter. Measure at least 3 loads, 0 included.")
+    DeviceKpDrive* d = m_ctx.drive();
+    setSubTitle(d && d->hasJack()
+                    ? tr("The stand's hydraulic jack applies the load you enter. Measure at least 3 loads, 0 included.")
                     : tr("Apply the load, enter what the gauge shows, measure. At least 3 loads, 0 included."));
     m_loadLabel->setText(tr("Known load"));
-    m_measure->setText(tr("Measure"));
+    m_repeat->setText(tr("Repeat load"));
     m_typedLabel->setText(tr("ΔI (typed)"));
     m_addTyped->setText(tr("Add typed point"));
     m_remove->setText(tr("Remove point"));
     m_table->setHorizontalHeaderLabels({tr("Load, N"), tr("ΔI, A"), tr("Source")});
     m_chart->setTitle(tr("Current difference against the load"));
     m_chart->setAxisTitles(tr("Load, N"), tr("ΔI, A"));
+    refreshState();
 }
 
 // --- 3. Fit -------------------------------------------------------------------------------------
@@ -329,39 +365,153 @@ KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
     : CalibrationWizardPage(parent),
       m_ctx(context),
       m_explanation(wrappedLabel(this)),
+      m_checkLabel(new QLabel(this)),
+      m_checkLoad(new QDoubleSpinBox(this)),
+      m_check(new QPushButton(this)),
+      m_checkResult(wrappedLabel(this)),
+      m_timer(new QTimer(this)),
       m_chart(new Chart(this)),
       m_residuals(new Chart(this)) {
     m_explanation->setObjectName(QStringLiteral("kpExplanation"));
     m_explanation->setTextFormat(Qt::RichText);
-    m_chart->setMinimumSize(420, 300);
-    m_residuals->setMinimumSize(420, 300);
+    m_checkLoad->setObjectName(QStringLiteral("checkLoadSpin"));
+    m_check->setObjectName(QStringLiteral("checkLoad"));
+    m_checkResult->setObjectName(QStringLiteral("kpCheckResult"));
+    m_checkLoad->setRange(-20000.0, 20000.0);
+    m_checkLoad->setDecimals(0);
+    m_checkLoad->setSingleStep(100.0);
+    m_checkLoad->setMinimumWidth(170);
+    m_chart->setMinimumSize(420, 260);
+    m_residuals->setMinimumSize(420, 260);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the load rises with ΔI
+    auto* check = new QHBoxLayout;
+    check->addWidget(m_checkLabel);
+    check->addWidget(m_checkLoad);
+    check->addWidget(m_check);
+    check->addWidget(m_checkResult, 1);
     auto* charts = new QHBoxLayout;
     charts->addWidget(m_chart);
     charts->addWidget(m_residuals);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_explanation);
+    layout->addLayout(check);
     layout->addLayout(charts, 1);
+    m_timer->setInterval(100);
+    connect(m_timer, &QTimer::timeout, this, [this] { step(); });
+    connect(m_check, &QPushButton::clicked, this, &KpFitPage::checkLoad);
 }
 
 void KpFitPage::initializePage() {
-    m_ctx.session->fit.reset();
-    std::vector<core::KpPoint> points;
-    for (const KpCapture& c : m_ctx.session->points)
-        points.push_back({c.loadN, c.currentDifferenceA});
+    core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    proc.back();  // from Accepted (Back from the save page) or Fit (Cancel) to the loads,
+    proc.back();
+    proc.next();  // and the fit made again
+    proc.takeEvents();
+    m_ctx.session->saved = false;  // a k_p saved from an earlier fit is not this one
+    m_checkResult->clear();
+    showFit();
+    if (m_ctx.drive()) m_timer->start();
+}
+
+void KpFitPage::cleanupPage() {
+    m_timer->stop();
+    m_ctx.procedure().back();  // Fit → loads, which stay
+    m_ctx.procedure().takeEvents();
+}
+
+bool KpFitPage::validatePage() {
+    core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    const bool accepted = proc.accept();
+    proc.takeEvents();
+    if (!accepted) {
+        m_checkResult->setText(
+            tr("Not accepted: a verification load failed or is being measured. Measure it "
+               "again, or go back to the loads."));
+        markProblem(m_checkResult, true);
+        return false;
+    }
+    m_timer->stop();
+    return true;
+}
+
+bool KpFitPage::isComplete() const {
+    return m_ctx.procedure().fitOutcome().fit.has_value();
+}
+
+bool KpFitPage::checking() const {
+    return m_ctx.procedure().measuring();
+}
+
+QString KpFitPage::checkResult() const {
+    return m_checkResult->text();
+}
+
+QString KpFitPage::explanation() const {
+    return m_explanation->text();
+}
+
+void KpFitPage::setCheckLoadN(double loadN) {
+    m_checkLoad->setValue(loadN);
+}
+
+bool KpFitPage::checkLoad() {
+    core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    DeviceKpDrive* d = m_ctx.drive();
+    if (!d || !proc.fitOutcome().fit) return false;
+    if (proc.measuring()) {
+        proc.abort();
+        proc.takeEvents();
+        m_check->setText(tr("Check load"));
+        m_checkResult->clear();
+        return false;
+    }
+    step(0.0);  // the samples queued so far were taken under the old load
+    try {
+        if (d->hasJack()) d->applyLoadN(m_checkLoad->value());
+        proc.check(m_checkLoad->value());
+    } catch (const std::exception& e) {
+        m_checkResult->setText(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_check->setText(tr("Stop"));
+    m_checkResult->setText(tr("Measuring the verification load…"));
+    markProblem(m_checkResult, false);
+    return true;
+}
+
+void KpFitPage::step(double elapsedS) {
+    core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    DeviceKpDrive* d = m_ctx.drive();
+    if (!d) return;
+    proc.pump(d->readout(), elapsedS);
+    for (const core::KpEvent& e : proc.takeEvents()) {
+        m_checkResult->setText(ProcedureWords::kpEvent(e, proc.config().noSampleTimeoutS));
+        if (e.check)
+            markVerdict(m_checkResult, e.check->passed);
+        else
+            markProblem(m_checkResult, e.kind == core::KpEvent::Kind::MeasureFailed);
+        m_check->setText(tr("Check load"));
+    }
+}
+
+void KpFitPage::showFit() {
+    const core::KpCalibrationProcedure& proc = m_ctx.procedure();
+    const core::KpFitOutcome& outcome = proc.fitOutcome();
     m_chart->clear();
     m_residuals->clear();
-    try {
-        m_ctx.session->fit = core::fitKp(points);
-    } catch (const std::invalid_argument& e) {
+    m_check->setEnabled(outcome.fit.has_value() && m_ctx.drive() != nullptr);
+    if (!outcome.fit) {
         m_explanation->setText(QStringLiteral("<p style='color:#b71c1c'><b>%1</b></p>")
-                                   .arg(tr("Refused: %1").arg(QString::fromStdString(e.what()).toHtmlEscaped())));
+                                   .arg(tr("Refused: %1").arg(ProcedureWords::kpRefusal(outcome)).toHtmlEscaped()));
         emit completeChanged();
         return;
     }
-    const core::KpFit& f = *m_ctx.session->fit;
+    const core::KpFit& f = *outcome.fit;
+    const std::vector<core::KpLoadPoint>& points = proc.points();
     m_explanation->setText(tr("<p><b>k_p = %1 N/A</b> (offset %2 N, R² %3, residual RMS %4 N) from %5 loads.</p>"
                               "<p>The straight line P = k_p ΔI + offset is fitted by least squares; the offset "
-                              "should be small against the loads (it shows an asymmetry of the drive).</p>")
+                              "should be small against the loads (it shows an asymmetry of the drive). Check it at "
+                              "a load not used in the fit before going on.</p>")
                                .arg(f.kpNPerA, 0, 'f', 2)
                                .arg(f.offsetN, 0, 'f', 1)
                                .arg(f.r2, 0, 'f', 5)
@@ -369,7 +519,7 @@ void KpFitPage::initializePage() {
                                .arg(points.size()));
     std::vector<double> xs, ys;
     double lo = points.front().currentDifferenceA, hi = lo;
-    for (const core::KpPoint& p : points) {
+    for (const core::KpLoadPoint& p : points) {
         xs.push_back(p.currentDifferenceA);
         ys.push_back(p.loadN);
         lo = std::min(lo, p.currentDifferenceA);
@@ -382,23 +532,18 @@ void KpFitPage::initializePage() {
     showAllWithMargin(*m_chart, xs, ys, true, 0.3);
     m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), ys, f.residualsN, QColor(0x2e, 0x7d, 0x32),
                            Chart::Style::Points);
-    showAllWithMargin(*m_residuals, ys, f.residualsN, true);
+    showAllWithMargin(*m_residuals, ys, f.residualsN, true, 0.5);
     m_chart->refresh();
     m_residuals->refresh();
     emit completeChanged();
 }
 
-bool KpFitPage::isComplete() const {
-    return m_ctx.session->fit.has_value();
-}
-
-QString KpFitPage::explanation() const {
-    return m_explanation->text();
-}
-
 void KpFitPage::retranslate() {
-    setTitle(tr("Fit k_p"));
-    setSubTitle(tr("Force against the current difference."));
+    setTitle(tr("Fit and verify k_p"));
+    setSubTitle(tr("Force against the current difference, then a verification load not used in the fit."));
+    m_checkLabel->setText(tr("Verification load"));
+    m_checkLoad->setSuffix(tr(" N"));
+    m_check->setText(m_ctx.procedure().measuring() ? tr("Stop") : tr("Check load"));
     m_chart->setTitle(tr("Load against ΔI"));
     m_chart->setAxisTitles(tr("ΔI, A"), tr("Load, N"));
     m_residuals->setTitle(tr("Residuals"));
@@ -432,12 +577,16 @@ void KpSavePage::initializePage() {
     retranslate();
 }
 
+void KpSavePage::cleanupPage() {
+    m_ctx.procedure().withdrawAcceptance();  // Back to the fit
+}
+
 bool KpSavePage::isComplete() const {
     return m_ctx.session->saved;
 }
 
 bool KpSavePage::save() {
-    if (m_ctx.session->saved || !m_ctx.session->fit) return m_ctx.session->saved;
+    if (m_ctx.session->saved || !m_ctx.procedure().accepted()) return m_ctx.session->saved;
     const QString who = m_ctx.operatorName();
     if (who.isEmpty()) {
         if (m_ctx.app && m_ctx.app->prompt)
@@ -451,7 +600,7 @@ bool KpSavePage::save() {
         markProblem(m_result, true);
         return false;
     }
-    const core::KpFit& f = *m_ctx.session->fit;
+    const core::KpFit& f = *m_ctx.procedure().fitOutcome().fit;
     try {
         std::vector<storage::ToolEdit> edits;
         for (core::ToolRecord t : m_ctx.tools->tools()) {
@@ -463,13 +612,13 @@ bool KpSavePage::save() {
         if (!edits.empty()) m_ctx.tools->apply(edits, who);
         storage::KpCalibrationRecord r;
         r.createdBy = who;
-        KpDriveSource* d = m_ctx.drive();
+        DeviceKpDrive* d = m_ctx.drive();
         r.drive = d ? d->name() : QString();
         r.kpNPerA = f.kpNPerA;
         r.offsetN = f.offsetN;
         r.r2 = f.r2;
         QString csv = QStringLiteral("load_n,current_difference_a\n");
-        for (const KpCapture& c : m_ctx.session->points)
+        for (const core::KpLoadPoint& c : m_ctx.procedure().points())
             csv += QStringLiteral("%1,%2\n").arg(c.loadN, 0, 'g', 10).arg(c.currentDifferenceA, 0, 'g', 10);
         r.pointsCsv = csv;
         r.appliedTo = m_ctx.session->toolIds.join(QLatin1Char(','));
@@ -495,9 +644,9 @@ void KpSavePage::retranslate() {
     setTitle(tr("Save k_p"));
     setSubTitle(tr("The calibration is kept with your name; the chosen tools get the new k_p."));
     m_save->setText(tr("Save and write into the tools"));
-    if (m_ctx.session->fit)
+    if (m_ctx.procedure().fitOutcome().fit)
         m_summary->setText(tr("k_p = %1 N/A, to be written into: %2.")
-                               .arg(m_ctx.session->fit->kpNPerA, 0, 'f', 2)
+                               .arg(m_ctx.procedure().fitOutcome().fit->kpNPerA, 0, 'f', 2)
                                .arg(m_ctx.session->toolIds.isEmpty()
                                         ? tr("no tool (only the calibration is kept)")
                                         : m_ctx.session->toolIds.join(QStringLiteral(", "))));
@@ -505,7 +654,7 @@ void KpSavePage::retranslate() {
 
 // --- The wizard ---------------------------------------------------------------------------------
 
-KpCalibrationWizard::KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<KpDriveSource*> drives,
+KpCalibrationWizard::KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<DeviceKpDrive*> drives,
                                          storage::CalibrationStore* calibrations, storage::ToolStore* tools,
                                          QWidget* parent)
     : CalibrationWizard(QStringLiteral("kpWizard"), parent),

@@ -4,11 +4,11 @@
 #include <optional>
 #include <vector>
 
-#include "core/calibration/kp_calibration.h"
-#include "core/control/dither_force_estimator.h"
+#include "core/calibration/kp_procedure.h"
+#include "core/control/dither_current_difference.h"
 #include "ui/app_context.h"
 #include "ui/calibration/calibration_wizard.h"
-#include "ui/calibration/kp_drive_source.h"
+#include "ui/calibration/device_kp_drive.h"
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -28,19 +28,12 @@ namespace tt::ui {
 
 class Chart;
 
-/// One measured known load.
-struct KpCapture {
-    double loadN = 0.0;
-    double currentDifferenceA = 0.0;  ///< (I_fwd − I_rev) / 2, mean over the window
-    int estimates = 0;                ///< stroke pairs averaged (0: typed)
-};
-
-/// What the k_p wizard has gathered; owned by the Calibration page (Back/Cancel keep it).
+/// What the k_p wizard has gathered: the procedure (loads, fit, checks) and what the wizard keeps
+/// besides; owned by the Calibration page (Back/Cancel keep it).
 struct KpSession {
     int driveIndex = 0;
     QStringList toolIds;  ///< tools that receive the new k_p
-    std::vector<KpCapture> points;
-    std::optional<core::KpFit> fit;
+    core::KpCalibrationProcedure procedure{std::make_unique<core::DitherCurrentDifference>()};
     bool saved = false;
     void clear() { *this = KpSession{}; }
 };
@@ -49,10 +42,11 @@ struct KpSession {
 struct KpWizardContext {
     AppContext* app = nullptr;
     KpSession* session = nullptr;
-    std::vector<KpDriveSource*> drives;
+    std::vector<DeviceKpDrive*> drives;
     storage::CalibrationStore* calibrations = nullptr;
     storage::ToolStore* tools = nullptr;
-    KpDriveSource* drive() const;
+    DeviceKpDrive* drive() const;
+    core::KpCalibrationProcedure& procedure() const { return session->procedure; }
     QString operatorName() const;
 };
 
@@ -76,8 +70,10 @@ private:
     QLabel* m_instructions;
 };
 
-/// 2. Known loads: for each load the current difference with dither, measured live over a
-/// window (DitherForceEstimator with k_p = 1 gives ΔI) or typed.
+/// 2. Known loads: for each load the current difference with dither, measured live (the
+/// procedure holds still, then averages the stroke pairs) or typed; a load measured again,
+/// stopped or removed. On a stand with a hydraulic jack (the simulator) the jack applies the load.
+/// The page only shows the procedure and forwards clicks.
 class KpLoadsPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
@@ -89,35 +85,35 @@ public:
 
     void setLoadN(double loadN);
     void setTypedCurrentDifference(double a);
-    /// Starts measuring the current difference at the load entered (non-blocking).
+    /// Starts measuring at the load entered (the stand's jack applies it; non-blocking).
     bool startMeasurement();
-    /// Advances a running measurement by `seconds` (the timer calls it; tests too).
-    void step(double seconds);
-    /// Runs a whole measurement at once (simulator; tests).
-    bool measureNow();
-    bool measuring() const { return m_measuring; }
+    /// Measures the selected load (or the last) again.
+    bool repeatMeasurement();
+    /// Stops a running measurement.
+    void abortMeasurement();
+    /// Takes the drive's samples (the timer calls it every 100 ms; tests too).
+    void step(double elapsedS = 0.1);
+    bool measuring() const;
     bool addTypedPoint();
     void removePoint();
+    /// Selects a row of the loads table (tests; the operator taps it).
+    void selectPoint(int row);
     QString message() const;
 
-    static constexpr double kSettleS = 1.0;
-    static constexpr double kWindowS = 6.0;
-
 private:
-    void finishMeasurement();
+    void handleEvents();
     void refresh();
+    void refreshState();
+    void applyLoad(double loadN);
     void showMessage(const QString& text, bool problem);
 
     KpWizardContext& m_ctx;
     QTimer* m_timer;
-    std::optional<core::DitherForceEstimator> m_estimator;
-    bool m_measuring = false;
-    double m_elapsedS = 0.0;
-    double m_sum = 0.0;
-    int m_count = 0;
+    QLabel* m_live;
     QLabel* m_loadLabel;
     QDoubleSpinBox* m_load;
     QPushButton* m_measure;
+    QPushButton* m_repeat;
     QLabel* m_typedLabel;
     QDoubleSpinBox* m_typed;
     QPushButton* m_addTyped;
@@ -128,19 +124,37 @@ private:
     QLabel* m_message;
 };
 
-/// 3. The fit P = k_p ΔI + offset with its residuals.
+/// 3. The fit P = k_p ΔI + offset with its residuals, and verification loads compared with it.
+/// Entering the page is the procedure's "next" (the fit is made), Next its "accept" (refused while
+/// a verification load failed), Back its "back".
 class KpFitPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     KpFitPage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override;
+    bool validatePage() override;
     bool isComplete() const override;
     void retranslate() override;
     QString explanation() const;
 
+    void setCheckLoadN(double loadN);
+    /// Measures a verification load (the stand's jack applies it); stops a running one.
+    bool checkLoad();
+    /// Takes the drive's samples (the timer calls it; tests too).
+    void step(double elapsedS = 0.1);
+    bool checking() const;
+    QString checkResult() const;
+
 private:
+    void showFit();
     KpWizardContext& m_ctx;
     QLabel* m_explanation;
+    QLabel* m_checkLabel;
+    QDoubleSpinBox* m_checkLoad;
+    QPushButton* m_check;
+    QLabel* m_checkResult;
+    QTimer* m_timer;
     Chart* m_chart;
     Chart* m_residuals;
 };
@@ -151,6 +165,7 @@ class KpSavePage : public CalibrationWizardPage {
 public:
     KpSavePage(KpWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override;
     bool isComplete() const override;
     void retranslate() override;
     bool save();
@@ -163,13 +178,14 @@ private:
 };
 
 /// The k_p calibration wizard (issue 6, item 5): known loads on the cross slide, the current
-/// difference with dither at each, the fit of k_p, saved and written into the tool table.
+/// difference with dither at each, the fit of k_p verified at a further load, saved and written
+/// into the tool table. The steps are core::KpCalibrationProcedure's.
 class KpCalibrationWizard : public CalibrationWizard {
     Q_OBJECT
 public:
     enum PageId { SetupPage, LoadsPage, FitPage, SavePage };
 
-    KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<KpDriveSource*> drives,
+    KpCalibrationWizard(AppContext& app, KpSession& session, std::vector<DeviceKpDrive*> drives,
                         storage::CalibrationStore* calibrations, storage::ToolStore* tools, QWidget* parent = nullptr);
 
     KpSetupPage* setupPage() const { return m_setup; }

@@ -4,6 +4,7 @@
 #include <QGridLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTimer>
@@ -12,15 +13,14 @@
 
 #include "ui/calibration/chart_ranges.h"
 #include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/procedure_words.h"
 #include "ui/plot/chart.h"
 
 namespace tt::ui {
 
 namespace {
-constexpr std::size_t kLiveWindow = 50;  ///< codes averaged for a captured point (0.5 s at 100 Hz)
-constexpr std::size_t kMinLiveSamples = 10;
-constexpr int kPollMs = 100;
-}  // namespace
+const QColor kProblemColour(0xb7, 0x1c, 0x1c);
+}
 
 ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     : CalibrationWizardPage(parent),
@@ -32,14 +32,16 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
       m_setJack(new QPushButton(this)),
       m_referenceLabel(new QLabel(this)),
       m_reference(new QDoubleSpinBox(this)),
+      m_capture(new QPushButton(this)),
+      m_repeat(new QPushButton(this)),
       m_codeLabel(new QLabel(this)),
       m_code(new QDoubleSpinBox(this)),
-      m_capture(new QPushButton(this)),
       m_typed(new QPushButton(this)),
+      m_progress(new QProgressBar(this)),
       m_remove(new QPushButton(this)),
       m_table(new QTableWidget(0, 3, this)),
       m_chart(new Chart(this)),
-      m_message(new QLabel(this)) {
+      m_message(wrappedLabel(this)) {
     m_live->setObjectName(QStringLiteral("liveCode"));
     m_live->setStyleSheet(QStringLiteral("font-size: 18pt; font-weight: bold;"));
     m_jack->setObjectName(QStringLiteral("jackSpin"));
@@ -47,27 +49,33 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     m_code->setObjectName(QStringLiteral("typedCodeSpin"));
     m_capture->setObjectName(QStringLiteral("capturePoint"));
     m_capture->setProperty("role", QStringLiteral("primary"));
+    m_repeat->setObjectName(QStringLiteral("repeatPoint"));
     m_typed->setObjectName(QStringLiteral("addTypedPoint"));
     m_remove->setObjectName(QStringLiteral("removePoint"));
+    m_progress->setObjectName(QStringLiteral("captureProgress"));
     m_table->setObjectName(QStringLiteral("capturedPoints"));
     m_message->setObjectName(QStringLiteral("captureMessage"));
-    m_message->setWordWrap(true);
     for (QDoubleSpinBox* s : {m_jack, m_reference}) {
-        s->setRange(-5000.0, 5000.0);
+        s->setRange(-2000.0, 2000.0);
         s->setDecimals(1);
-        s->setMinimumWidth(170);
+        s->setMinimumWidth(150);
     }
     m_jack->setSingleStep(50.0);
     m_code->setRange(0.0, 65535.0);
     m_code->setDecimals(1);
-    m_code->setMinimumWidth(170);
+    m_code->setMinimumWidth(150);
+    m_progress->setRange(0, 100);
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(14);
     m_table->verticalHeader()->setDefaultSectionSize(40);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->verticalHeader()->setVisible(false);
     m_table->setMinimumWidth(420);
-    m_chart->setMinimumSize(480, 320);
+    m_chart->setMinimumSize(340, 300);
+    m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the curve rises to the top right
 
     auto* entry = new QGridLayout;
     entry->addWidget(m_jackLabel, 0, 0);
@@ -82,25 +90,33 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     auto* left = new QVBoxLayout;
     left->addWidget(m_live);
     left->addLayout(entry);
-    layOutCapturePage(this, left, m_table, m_remove, m_chart, m_message);
+    left->addWidget(m_progress);
+    layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
 
     m_timer->setInterval(kPollMs);
-    connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(kPollMs / 1000.0); });
+    connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(); });
     connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
-    connect(m_capture, &QPushButton::clicked, this, &ProbeCapturePage::capturePoint);
+    connect(m_capture, &QPushButton::clicked, this, [this] {
+        if (capturing())
+            abortCapture();
+        else
+            capturePoint();
+    });
+    connect(m_repeat, &QPushButton::clicked, this, &ProbeCapturePage::repeatPoint);
     connect(m_typed, &QPushButton::clicked, this, &ProbeCapturePage::addTypedPoint);
     connect(m_remove, &QPushButton::clicked, this, &ProbeCapturePage::removePoint);
 }
 
 void ProbeCapturePage::initializePage() {
-    CalibrationProbe* p = m_ctx.probe();
+    m_ctx.procedure().returnToCapture();
+    DeviceCalibrationProbe* p = m_ctx.probe();
     const bool jack = p && p->hasJack();
     m_jackLabel->setVisible(jack);
     m_jack->setVisible(jack);
     m_setJack->setVisible(jack);
-    m_reference->setSingleStep(m_ctx.session->resolutionUm);
-    m_code->setMaximum(std::ldexp(1.0, m_ctx.session->adcBits) - 1.0);
-    m_codes.clear();
+    const core::ProbeProcedureConfig& c = m_ctx.procedure().config();
+    m_reference->setSingleStep(c.referenceDivisionUm);
+    m_code->setMaximum(std::ldexp(1.0, c.adcBits) - 1.0);
     refreshPoints();
     retranslate();
     m_timer->start();
@@ -108,45 +124,81 @@ void ProbeCapturePage::initializePage() {
 
 void ProbeCapturePage::cleanupPage() {
     m_timer->stop();  // Back: the points stay in the session
+    m_ctx.procedure().abort();
+    m_ctx.procedure().takeEvents();
 }
 
 bool ProbeCapturePage::isComplete() const {
-    return static_cast<int>(m_ctx.session->points.size()) >= kMinPoints;
+    return m_ctx.procedure().canFit();
 }
 
-void ProbeCapturePage::pollProbe(double seconds) {
-    CalibrationProbe* p = m_ctx.probe();
-    if (!p) return;
-    p->poll(seconds);
-    const std::size_t plane = static_cast<std::size_t>(m_ctx.session->plane);
-    while (const std::optional<core::ProbeSample> s = p->port().takeSample()) {
-        m_codes.push_back(s->adcCode[plane]);
-        if (m_codes.size() > kLiveWindow) m_codes.pop_front();
-    }
-    const core::DeviceHealth h = p->port().health();
-    const std::optional<double> code = liveCode();
-    if (!h.ready())
-        m_live->setText(tr("Probe: %1").arg(QString::fromStdString(h.message)));
-    else if (code)
-        m_live->setText(tr("Live ADC code %1 (mean of %2)").arg(*code, 0, 'f', 1).arg(m_codes.size()));
-    else
-        m_live->setText(tr("Waiting for probe samples…"));
-    if (code)
-        m_chart->setSeries(QStringLiteral("live"), tr("now"), {m_reference->value()}, {*code}, QColor(0xf0, 0xa0, 0x30),
-                           Chart::Style::Points);
-    m_chart->refresh();
+bool ProbeCapturePage::capturing() const {
+    return m_ctx.procedure().capturing();
 }
 
 std::optional<double> ProbeCapturePage::liveCode() const {
-    if (m_codes.size() < kMinLiveSamples) return std::nullopt;
-    double sum = 0.0;
-    for (double c : m_codes)
-        sum += c;
-    return sum / static_cast<double>(m_codes.size());
+    return m_ctx.procedure().sampling().liveCode();
+}
+
+void ProbeCapturePage::pollProbe(double elapsedS) {
+    m_ctx.pumpProbe(elapsedS);
+    handleEvents();
+    refreshState();
+}
+
+void ProbeCapturePage::refreshState() {
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    const core::ProbeCapture& sampling = proc.sampling();
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    const core::DeviceHealth h = p ? p->port().health() : core::DeviceHealth{};
+    const std::optional<double> code = sampling.liveCode();
+    if (!p)
+        m_live->setText(tr("No probe: type the points"));
+    else if (!h.ready())
+        m_live->setText(tr("Probe: %1").arg(QString::fromStdString(h.message)));
+    else if (code)
+        m_live->setText((sampling.liveSaturated() ? tr("Live ADC code %1 (mean of %2) — at the ADC's limit")
+                                                  : tr("Live ADC code %1 (mean of %2)"))
+                            .arg(*code, 0, 'f', 1)
+                            .arg(sampling.liveSamples()));
+    else
+        m_live->setText(tr("Waiting for probe samples…"));
+    markProblem(m_live, p && (!h.ready() || sampling.liveSaturated()));
+    if (proc.capturing()) {
+        m_progress->setValue(static_cast<int>(std::lround(100.0 * sampling.progress())));
+        showMessage(sampling.phase() == core::ProbeCapture::Phase::HoldStill
+                        ? tr("Hold still: the bar settles…")
+                        : tr("Averaging the live codes at %1 µm…").arg(sampling.referenceUm(), 0, 'f', 1),
+                    false);
+    }
+    m_capture->setText(proc.capturing() ? tr("Stop") : tr("Capture point"));
+    m_capture->setEnabled(p != nullptr);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_repeat, m_typed, m_remove, m_setJack})
+        w->setEnabled(!proc.capturing());
+    m_repeat->setEnabled(p && !proc.capturing() && !proc.points().empty());
+    if (code)
+        m_chart->setSeries(QStringLiteral("live"), tr("now"), {m_reference->value()}, {*code}, QColor(0xf0, 0xa0, 0x30),
+                           Chart::Style::Points);
+    else
+        m_chart->removeSeries(QStringLiteral("live"));  // no stale "now" while the probe is silent
+    m_chart->refresh();
+}
+
+void ProbeCapturePage::handleEvents() {
+    const core::ProbeProcedureConfig& c = m_ctx.procedure().config();
+    bool changed = false;
+    for (const core::ProbeEvent& e : m_ctx.procedure().takeEvents()) {
+        const bool problem = e.kind == core::ProbeEvent::Kind::CaptureFailed || e.value.saturated;
+        const QString text = ProcedureWords::probeEvent(e, c.adcBits, c.capture.noSampleTimeoutS);
+        if (!text.isEmpty()) showMessage(text, problem);
+        changed = true;
+    }
+    if (!changed) return;
+    m_progress->setValue(0);
+    refreshPoints();
 }
 
 void ProbeCapturePage::showMessage(const QString& text, bool problem) {
-    m_messageIsProblem = problem;
     m_message->setText(text);
     markProblem(m_message, problem);
 }
@@ -156,17 +208,22 @@ QString ProbeCapturePage::message() const {
 }
 
 void ProbeCapturePage::setJack(double um) {
-    CalibrationProbe* p = m_ctx.probe();
-    if (!p || !p->hasJack()) return;
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    if (!p || !p->hasJack() || capturing()) return;
     m_jack->setValue(um);
-    p->setJackDeflectionMm(m_ctx.session->plane, um / 1000.0);
+    pollProbe(0.0);  // the samples queued so far were read under the old load
+    try {
+        p->bendBar(m_ctx.procedure().config().plane, um / 1000.0);
+    } catch (const std::invalid_argument&) {
+        showMessage(tr("The jack bends the bar by at most ±2000 µm."), true);
+        return;
+    }
     // The dial indicator shows the deflection to its division.
-    const double division = m_ctx.session->resolutionUm;
+    const double division = m_ctx.procedure().config().referenceDivisionUm;
     m_reference->setValue(std::round(um / division) * division);
-    m_codes.clear();  // the average restarts at the new load
-    showMessage(
-        tr("The jack bends the bar to %1 µm; wait for the live code to settle, then capture.").arg(um, 0, 'f', 1),
-        false);
+    m_ctx.procedure().loadChanged();  // the live mean restarts at the new load
+    handleEvents();
+    showMessage(tr("The jack bends the bar to %1 µm; capture when the live code is steady.").arg(um, 0, 'f', 1), false);
 }
 
 void ProbeCapturePage::setReferenceUm(double um) {
@@ -177,78 +234,111 @@ void ProbeCapturePage::setTypedCode(double code) {
     m_code->setValue(code);
 }
 
+void ProbeCapturePage::selectPoint(int row) {
+    m_table->selectRow(row);
+}
+
 bool ProbeCapturePage::capturePoint() {
-    CalibrationProbe* p = m_ctx.probe();
-    if (!p || !p->port().health().ready()) {
-        showMessage(tr("The probe is not ready: type the point instead."), true);
+    if (!m_ctx.probe() || capturing()) {
+        showMessage(tr("No probe mandrel to read: type the point instead."), true);
         return false;
     }
-    const std::optional<double> code = liveCode();
-    if (!code) {
-        showMessage(tr("Too few live samples yet (%1 of %2): wait a moment.").arg(m_codes.size()).arg(kMinLiveSamples),
-                    true);
-        return false;
-    }
-    m_ctx.session->points.push_back({m_reference->value(), *code, static_cast<int>(m_codes.size())});
-    refreshPoints();
-    showMessage(tr("Point %1: %2 µm at ADC code %3.")
-                    .arg(m_ctx.session->points.size())
-                    .arg(m_reference->value(), 0, 'f', 1)
-                    .arg(*code, 0, 'f', 1),
-                false);
+    pollProbe(0.0);  // samples queued before the press are not the point's
+    m_ctx.procedure().capture(m_reference->value());
+    refreshState();
+    emit completeChanged();
     return true;
 }
 
+bool ProbeCapturePage::repeatPoint() {
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
+    if (!m_ctx.probe() || capturing() || row < 0) return false;
+    pollProbe(0.0);
+    m_ctx.procedure().repeatPoint(row, m_reference->value());
+    refreshState();
+    emit completeChanged();
+    return true;
+}
+
+void ProbeCapturePage::abortCapture() {
+    m_ctx.procedure().abort();
+    handleEvents();
+    refreshState();
+    emit completeChanged();
+}
+
 bool ProbeCapturePage::addTypedPoint() {
-    m_ctx.session->points.push_back({m_reference->value(), m_code->value(), 0});
-    refreshPoints();
-    showMessage(tr("Typed point %1 added.").arg(m_ctx.session->points.size()), false);
+    if (capturing()) return false;
+    try {
+        m_ctx.procedure().typePoint(m_reference->value(), m_code->value());
+    } catch (const std::invalid_argument&) {
+        showMessage(tr("The typed code is outside the ADC's range."), true);
+        return false;
+    }
+    handleEvents();
     return true;
 }
 
 void ProbeCapturePage::removePoint() {
-    auto& points = m_ctx.session->points;
-    if (points.empty()) return;
-    int row = m_table->currentRow();
-    if (row < 0 || row >= static_cast<int>(points.size())) row = static_cast<int>(points.size()) - 1;
-    points.erase(points.begin() + row);
-    refreshPoints();
-    showMessage(tr("Point removed."), false);
+    const int row = selectedRowOrLast(m_table, static_cast<int>(m_ctx.procedure().points().size()));
+    if (capturing() || row < 0) return;
+    m_ctx.procedure().removePoint(row);
+    handleEvents();
 }
 
 void ProbeCapturePage::refreshPoints() {
-    const auto& points = m_ctx.session->points;
+    const std::vector<core::ProbePoint>& points = m_ctx.procedure().points();
+    const int adcBits = m_ctx.procedure().config().adcBits;
     m_table->setRowCount(static_cast<int>(points.size()));
-    std::vector<double> xs, ys;
+    std::vector<double> xs, ys, sx, sy;
     for (std::size_t i = 0; i < points.size(); ++i) {
-        const CapturedPoint& p = points[i];
+        const core::ProbePoint& p = points[i];
         const int row = static_cast<int>(i);
+        QString source = p.samples > 0 ? tr("live, %1 samples").arg(p.samples) : tr("typed");
+        if (p.saturated)
+            source = tr("%1 — ADC saturated (%2 to %3 of 0 to %4), not used")
+                         .arg(source)
+                         .arg(p.lowestCode)
+                         .arg(p.highestCode)
+                         .arg(static_cast<long long>(std::ldexp(1.0, adcBits)) - 1);
         m_table->setItem(row, 0, new QTableWidgetItem(QString::number(p.referenceUm, 'f', 1)));
         m_table->setItem(row, 1, new QTableWidgetItem(QString::number(p.adcCode, 'f', 1)));
-        m_table->setItem(row, 2,
-                         new QTableWidgetItem(p.samples > 0 ? tr("live, %1 samples").arg(p.samples) : tr("typed")));
-        m_table->item(row, 0)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        m_table->item(row, 1)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-        xs.push_back(p.referenceUm);
-        ys.push_back(p.adcCode);
+        m_table->setItem(row, 2, new QTableWidgetItem(source));
+        for (int c = 0; c < 3; ++c) {
+            if (c < 2) m_table->item(row, c)->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            if (p.saturated) m_table->item(row, c)->setForeground(kProblemColour);
+        }
+        (p.saturated ? sx : xs).push_back(p.referenceUm);
+        (p.saturated ? sy : ys).push_back(p.adcCode);
     }
     m_chart->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
                        Chart::Style::Points);
-    showAllWithMargin(*m_chart, xs, ys, false, 0.3);
+    if (sx.empty())
+        m_chart->removeSeries(QStringLiteral("saturated"));
+    else
+        m_chart->setSeries(QStringLiteral("saturated"), tr("ADC saturated"), sx, sy, kProblemColour,
+                           Chart::Style::Points);
+    std::vector<double> allX = xs, allY = ys;
+    allX.insert(allX.end(), sx.begin(), sx.end());
+    allY.insert(allY.end(), sy.begin(), sy.end());
+    showAllWithMargin(*m_chart, allX, allY, false, 0.3);
     m_table->resizeColumnsToContents();
-    m_chart->refresh();
+    refreshState();
     emit completeChanged();
 }
 
 void ProbeCapturePage::retranslate() {
     setTitle(tr("Capture points"));
-    setSubTitle(tr("Load the bar, read the instrument, capture. At least %1 points; both directions.").arg(kMinPoints));
-    m_jackLabel->setText(tr("Simulator jack"));
+    setSubTitle(
+        tr("Load the bar, read the instrument, capture: the bar holds still, then the codes are averaged. At least "
+           "%1 points; both directions.")
+            .arg(m_ctx.procedure().config().minPoints));
+    m_jackLabel->setText(tr("Stand's screw jack"));
     m_setJack->setText(tr("Bend the bar"));
     m_referenceLabel->setText(tr("Reference reading"));
     for (QDoubleSpinBox* s : {m_jack, m_reference})
         s->setSuffix(tr(" µm"));
-    m_capture->setText(tr("Capture point"));
+    m_repeat->setText(tr("Repeat point"));
     m_codeLabel->setText(tr("ADC code (typed)"));
     m_typed->setText(tr("Add typed point"));
     m_remove->setText(tr("Remove point"));
@@ -256,6 +346,7 @@ void ProbeCapturePage::retranslate() {
     m_chart->setTitle(tr("ADC code against the reference deflection"));
     m_chart->setAxisTitles(tr("Reference deflection, µm"), tr("ADC code"));
     if (m_message->text().isEmpty()) showMessage(tr("Captured points stay here when you go back or cancel."), false);
+    refreshPoints();
 }
 
 }  // namespace tt::ui

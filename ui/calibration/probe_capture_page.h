@@ -1,11 +1,12 @@
 #pragma once
 
-#include <deque>
+#include <optional>
 
 #include "ui/calibration/calibration_wizard.h"
 
 class QDoubleSpinBox;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QTableWidget;
 class QTimer;
@@ -15,9 +16,11 @@ namespace tt::ui {
 class Chart;
 struct ProbeWizardContext;
 
-/// 3. Capture points: the live ADC code of the chosen plane (averaged), the reference typed from
-/// the dial indicator, a point captured with one press (or typed by hand), the points plotted as
-/// they come. On the simulator a screw jack bends the bar and the indicator reading is filled in.
+/// 3. Capture points: the live ADC code of the chosen plane, the reference typed from the dial
+/// indicator, a point captured with one press (the procedure holds still, then averages), read
+/// again, typed by hand or removed, the points plotted as they come, a point where the ADC
+/// saturated flagged in red. On a stand with a screw jack (the simulator) the bar is bent from here
+/// and the indicator reading is filled in. The page only shows the procedure and forwards clicks.
 class ProbeCapturePage : public CalibrationWizardPage {
     Q_OBJECT
 public:
@@ -27,48 +30,57 @@ public:
     bool isComplete() const override;
     void retranslate() override;
 
-    /// Reads the probe for `seconds` (the timer calls it with its period; tests call it directly).
-    void pollProbe(double seconds);
-    /// Adds a point from the live mean code and the reference entered; false (with the reason
-    /// shown) when there are too few live samples or the probe is not ready.
+    /// Takes the probe's samples (the timer calls it every 100 ms; tests call it directly).
+    void pollProbe(double elapsedS = kPollS);
+    /// Starts reading a point at the reference entered; false (with the reason shown) when refused.
     bool capturePoint();
+    /// Reads the selected point (or the last one) again at the reference entered.
+    bool repeatPoint();
+    /// Stops a running capture.
+    void abortCapture();
     /// Adds a typed point (code and reference from the entry boxes).
     bool addTypedPoint();
     /// Removes the selected point (or the last one).
     void removePoint();
-    /// Simulator: bends the bar to `um` and fills in what the dial indicator shows.
+    /// Stand with a screw jack: bends the bar to `um` and fills in what the dial indicator shows.
     void setJack(double um);
 
     void setReferenceUm(double um);
     void setTypedCode(double code);
-    /// Mean of the recent live codes; nullopt with fewer than the minimum samples.
+    /// Selects a row of the points table (tests; the operator taps it).
+    void selectPoint(int row);
+    bool capturing() const;
+    /// The live mean code, when enough samples arrived.
     std::optional<double> liveCode() const;
     QString message() const;
 
-    static constexpr int kMinPoints = 5;
+    static constexpr int kPollMs = 100;
+    static constexpr double kPollS = kPollMs / 1000.0;
 
 private:
+    void handleEvents();
     void refreshPoints();
+    void refreshState();
     void showMessage(const QString& text, bool problem);
 
     ProbeWizardContext& m_ctx;
     QTimer* m_timer;
-    std::deque<double> m_codes;
     QLabel* m_live;
     QLabel* m_jackLabel;
     QDoubleSpinBox* m_jack;
     QPushButton* m_setJack;
     QLabel* m_referenceLabel;
     QDoubleSpinBox* m_reference;
+    QPushButton* m_capture;
+    QPushButton* m_repeat;
     QLabel* m_codeLabel;
     QDoubleSpinBox* m_code;
-    QPushButton* m_capture;
     QPushButton* m_typed;
+    QProgressBar* m_progress;
     QPushButton* m_remove;
     QTableWidget* m_table;
     Chart* m_chart;
     QLabel* m_message;
-    bool m_messageIsProblem = false;
 };
 
 }  // namespace tt::ui

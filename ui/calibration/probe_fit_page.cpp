@@ -1,7 +1,6 @@
 #include "ui/calibration/probe_fit_page.h"
 
 #include <QComboBox>
-#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -9,6 +8,7 @@
 
 #include "ui/calibration/chart_ranges.h"
 #include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/procedure_words.h"
 #include "ui/plot/chart.h"
 
 namespace tt::ui {
@@ -18,17 +18,20 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
       m_ctx(context),
       m_degreeLabel(new QLabel(this)),
       m_degree(new QComboBox(this)),
-      m_explanation(new QLabel(this)),
+      m_choice(wrappedLabel(this)),
+      m_explanation(wrappedLabel(this)),
       m_characteristic(new Chart(this)),
       m_residuals(new Chart(this)) {
     m_degree->setObjectName(QStringLiteral("degreeCombo"));
     m_explanation->setObjectName(QStringLiteral("fitExplanation"));
-    m_explanation->setWordWrap(true);
     m_explanation->setTextFormat(Qt::RichText);
+    m_choice->setObjectName(QStringLiteral("degreeChoice"));
+    m_choice->setStyleSheet(QStringLiteral("font-weight: bold;"));
     for (int d : {core::kAutoDegree, 2, 3, 4})
         m_degree->addItem(QString(), d);
-    m_characteristic->setMinimumSize(420, 300);
-    m_residuals->setMinimumSize(420, 300);
+    m_characteristic->setMinimumSize(400, 230);
+    m_residuals->setMinimumSize(400, 230);
+    m_characteristic->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the curve rises to the top right
     auto* top = new QHBoxLayout;
     top->addWidget(m_degreeLabel);
     top->addWidget(m_degree);
@@ -38,19 +41,30 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
     charts->addWidget(m_residuals);
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(top);
+    layout->addWidget(m_choice);
     layout->addWidget(m_explanation);
     layout->addLayout(charts, 1);
     connect(m_degree, &QComboBox::currentIndexChanged, this, [this] {
-        m_ctx.session->degree = m_degree->currentData().toInt();
-        m_ctx.session->accepted = false;  // a different table needs a new acceptance
-        refit();
+        m_ctx.procedure().setDegree(m_degree->currentData().toInt());  // refits; a new table needs a new acceptance
+        m_ctx.procedure().takeEvents();
+        m_ctx.session->saved.reset();
+        showFit();
     });
 }
 
 void ProbeFitPage::initializePage() {
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    proc.returnToCapture();
+    proc.next();  // Capture → Fit: the fit is made
+    proc.takeEvents();
+    m_ctx.session->saved.reset();  // a table saved from an earlier fit is not this one
     const QSignalBlocker block(m_degree);
-    m_degree->setCurrentIndex(std::max(0, m_degree->findData(m_ctx.session->degree)));
-    refit();
+    m_degree->setCurrentIndex(std::max(0, m_degree->findData(proc.degree())));
+    showFit();
+}
+
+void ProbeFitPage::cleanupPage() {
+    m_ctx.procedure().returnToCapture();  // Back: the points stay
 }
 
 void ProbeFitPage::setDegree(int degree) {
@@ -58,76 +72,69 @@ void ProbeFitPage::setDegree(int degree) {
 }
 
 QString ProbeFitPage::explanation() const {
-    return m_explanation->text();
+    return m_choice->text() + QLatin1Char('\n') + m_explanation->text();
 }
 
 bool ProbeFitPage::isComplete() const {
-    return m_ctx.result.has_value();
+    return m_ctx.procedure().fitOutcome().usable();
 }
 
-void ProbeFitPage::refit() {
-    m_ctx.result.reset();
-    m_fit.reset();
-    m_problem.clear();
-    const std::vector<core::CalibrationPoint> points = m_ctx.session->calibrationPoints();
-    try {
-        m_fit = core::fitCharacteristic(points, m_ctx.session->adcBits, m_ctx.session->degree);
-        if (m_fit->monotonicity.monotonic)
-            m_ctx.result = core::linearise(points, m_ctx.session->adcBits, m_ctx.session->degree);
-        else
-            m_problem = QString::fromStdString(m_fit->monotonicity.message);
-    } catch (const std::exception& e) {
-        m_problem = QString::fromStdString(e.what());
-    }
-
+void ProbeFitPage::showFit() {
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    const core::ProbeFitOutcome& outcome = proc.fitOutcome();
+    const int adcBits = proc.config().adcBits;
+    const int used = static_cast<int>(proc.points().size() - outcome.leftOut.size());
     QString text;
-    if (m_fit) {
-        text += tr("<p><b>%1</b>.</p>").arg(QString::fromStdString(m_fit->choiceReason).toHtmlEscaped());
+    m_choice->setText(outcome.fit ? ProcedureWords::degreeChoice(*outcome.fit, used) + QLatin1Char('.') : QString());
+    if (outcome.fit) {
+        const core::CharacteristicFit& fit = *outcome.fit;
         QStringList rows;
-        for (const core::DegreeScore& s : m_fit->scores)
+        for (const core::DegreeScore& s : fit.scores)
             rows << tr("degree %1: leave-one-out %2 µm, in-sample %3 µm%4")
                         .arg(s.degree)
                         .arg(s.cvRmsUm, 0, 'f', 2)
                         .arg(s.rmsResidualUm, 0, 'f', 2)
-                        .arg(s.degree == m_fit->degree ? tr(" — chosen") : QString());
+                        .arg(s.degree == fit.degree ? tr(" — chosen") : QString());
         text += QStringLiteral("<p>") + rows.join(QStringLiteral("<br>")) + QStringLiteral("</p>");
-        text +=
-            tr("<p>Each point is predicted from a fit to the others (leave-one-out); a higher degree always "
-               "fits the points themselves better, so it is kept only when it predicts them better.</p>");
     }
-    if (!m_problem.isEmpty())
+    if (!outcome.leftOut.empty())
+        text += QStringLiteral("<p style='color:#b71c1c'>%1</p>")
+                    .arg(ProcedureWords::leftOut(outcome.leftOut, adcBits).toHtmlEscaped());
+    if (outcome.refusal != core::ProbeFitRefusal::None)
         text += QStringLiteral("<p style='color:#b71c1c'><b>%1</b></p>")
-                    .arg(tr("Refused: %1").arg(m_problem.toHtmlEscaped()));
-    else if (m_ctx.result)
+                    .arg(tr("Refused: %1").arg(ProcedureWords::fitRefusal(outcome, adcBits)).toHtmlEscaped());
+    else if (outcome.usable())
         text += tr("<p style='color:#1b5e20'><b>Monotonic over the whole ADC range; residual RMS %1 µm.</b></p>")
-                    .arg(m_ctx.result->fit.rmsResidualUm, 0, 'f', 2);
+                    .arg(outcome.linearisation->fit.rmsResidualUm, 0, 'f', 2);
     m_explanation->setText(text);
 
     m_characteristic->clear();
     m_residuals->clear();
-    if (m_fit) {
+    if (outcome.fit) {
+        const core::CharacteristicFit& fit = *outcome.fit;
         std::vector<double> xs, ys;
-        for (const core::CalibrationPoint& p : points) {
+        for (const core::ProbePoint& p : proc.points()) {
+            if (p.saturated) continue;  // the residuals are of the points fitted
             xs.push_back(p.referenceUm);
             ys.push_back(p.adcCode);
         }
         m_characteristic->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
                                     Chart::Style::Points);
         std::vector<double> cx, cy;
-        const double lo = m_fit->calibratedMinUm, hi = m_fit->calibratedMaxUm;
+        const double lo = fit.calibratedMinUm, hi = fit.calibratedMaxUm;
         for (int i = 0; i <= 100; ++i) {
             const double x = lo + (hi - lo) * i / 100.0;
             cx.push_back(x);
-            cy.push_back(m_fit->codeAt(x));
+            cy.push_back(fit.codeAt(x));
         }
-        m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(m_fit->degree), cx, cy,
+        m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(fit.degree), cx, cy,
                                     QColor(0xc6, 0x28, 0x28), Chart::Style::Line);
         showAllWithMargin(*m_characteristic, xs, ys, false, 0.3);
-        m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, m_fit->residualsUm,
+        m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, fit.residualsUm,
                                QColor(0x2e, 0x7d, 0x32), Chart::Style::Points);
         m_residuals->setSeries(QStringLiteral("zero"), tr("zero"), {lo, hi}, {0.0, 0.0}, QColor(0x6b, 0x77, 0x85),
                                Chart::Style::Line);
-        showAllWithMargin(*m_residuals, xs, m_fit->residualsUm, true);
+        showAllWithMargin(*m_residuals, xs, fit.residualsUm, true, 0.5);
     }
     m_characteristic->refresh();
     m_residuals->refresh();
@@ -138,6 +145,12 @@ void ProbeFitPage::retranslate() {
     setTitle(tr("Fit the characteristic"));
     setSubTitle(tr("The inductive sensor's characteristic is a polynomial of degree 2 to 4; the table inverts it."));
     m_degreeLabel->setText(tr("Degree"));
+    // How the choice works, for whoever points at it (the page has no room for it at 1280 × 800).
+    const QString how =
+        tr("Each point is predicted from a fit to the others (leave-one-out); a higher degree always "
+           "fits the points themselves better, so it is kept only when it predicts them better.");
+    for (QWidget* w : std::initializer_list<QWidget*>{m_degree, m_choice, m_explanation})
+        w->setToolTip(how);
     m_degree->setItemText(0, tr("Automatic (cross-validation)"));
     m_degree->setItemText(1, tr("2"));
     m_degree->setItemText(2, tr("3"));
@@ -146,7 +159,7 @@ void ProbeFitPage::retranslate() {
     m_characteristic->setAxisTitles(tr("Reference deflection, µm"), tr("ADC code"));
     m_residuals->setTitle(tr("Residuals"));
     m_residuals->setAxisTitles(tr("Reference deflection, µm"), tr("Table reading − reference, µm"));
-    if (m_ctx.session) refit();
+    if (m_ctx.session) showFit();
 }
 
 }  // namespace tt::ui

@@ -1,8 +1,5 @@
 #pragma once
 
-#include <optional>
-
-#include "core/calibration/probe_linearisation.h"
 #include "ui/calibration/calibration_wizard.h"
 
 class QComboBox;
@@ -15,31 +12,33 @@ struct ProbeWizardContext;
 
 /// 4. Fit: the characteristic with degree 2, 3, 4 or chosen by cross-validation, the reason for
 /// the degree in words with each degree's leave-one-out error, the points with the fitted curve,
-/// and the residuals. A non-monotonic fit is refused here, saying where it turns.
+/// and the residuals. Points where the ADC saturated are left out, and said so; a non-monotonic
+/// fit is refused, saying where it turns. Entering the page is the procedure's "next" (the fit is
+/// made), going back its "back".
 class ProbeFitPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeFitPage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override;
     bool isComplete() const override;
     void retranslate() override;
 
     /// 0 = auto, else 2..4; refits.
     void setDegree(int degree);
-    /// The explanation shown (degree choice and problems).
+    /// The explanation shown (degree choice, scores and problems).
     QString explanation() const;
 
 private:
-    void refit();
+    void showFit();
 
     ProbeWizardContext& m_ctx;
     QLabel* m_degreeLabel;
     QComboBox* m_degree;
+    QLabel* m_choice;
     QLabel* m_explanation;
     Chart* m_characteristic;
     Chart* m_residuals;
-    std::optional<core::CharacteristicFit> m_fit;
-    QString m_problem;
 };
 
 }  // namespace tt::ui

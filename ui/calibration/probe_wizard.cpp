@@ -4,10 +4,10 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QDoubleSpinBox>
-#include <QEvent>
 #include <QFile>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -15,6 +15,7 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <cmath>
 
 #include "core/calibration/calibration_csv.h"
 #include "core/calibration/linearisation_image.h"
@@ -22,11 +23,12 @@
 #include "ui/app_state.h"
 #include "ui/calibration/probe_capture_page.h"
 #include "ui/calibration/probe_fit_page.h"
+#include "ui/calibration/procedure_words.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
 
-CalibrationProbe* ProbeWizardContext::probe() const {
+DeviceCalibrationProbe* ProbeWizardContext::probe() const {
     if (probes.empty()) return nullptr;
     const std::size_t i =
         static_cast<std::size_t>(std::clamp(session->probeIndex, 0, static_cast<int>(probes.size()) - 1));
@@ -35,6 +37,20 @@ CalibrationProbe* ProbeWizardContext::probe() const {
 
 QString ProbeWizardContext::operatorName() const {
     return app && app->state ? app->state->operatorName().trimmed() : QString();
+}
+
+void ProbeWizardContext::pumpProbe(double elapsedS) const {
+    if (DeviceCalibrationProbe* p = probe()) procedure().pumpProbe(p->port(), elapsedS);
+}
+
+void ProbeWizardContext::setUp(int plane, int adcBits, double divisionUm) const {
+    core::ProbeLinearisationProcedure& proc = procedure();
+    const core::ProbeProcedureConfig& c = proc.config();
+    if (c.plane == plane && c.adcBits == adcBits && c.referenceDivisionUm == divisionUm) return;
+    proc.returnToCapture();
+    proc.abort();
+    proc.configure(plane, adcBits, divisionUm);
+    proc.takeEvents();
 }
 
 // --- 1. Choose ------------------------------------------------------------------------------
@@ -62,8 +78,9 @@ ProbeChoosePage::ProbeChoosePage(ProbeWizardContext& context, QWidget* parent)
     form->addRow(m_bitsLabel, m_bits);
     form->addRow(m_health);
     connect(m_probe, &QComboBox::currentIndexChanged, this, [this] {
+        m_ctx.session->probeIndex = std::max(0, m_probe->currentIndex());
+        if (DeviceCalibrationProbe* p = m_ctx.probe(); p && p->adcBits()) m_bits->setValue(*p->adcBits());
         store();
-        if (CalibrationProbe* p = m_ctx.probe(); p && p->adcBits()) m_bits->setValue(*p->adcBits());
         initializePage();
     });
     connect(m_plane, &QComboBox::currentIndexChanged, this, [this] { store(); });
@@ -72,20 +89,23 @@ ProbeChoosePage::ProbeChoosePage(ProbeWizardContext& context, QWidget* parent)
 
 void ProbeChoosePage::store() {
     m_ctx.session->probeIndex = std::max(0, m_probe->currentIndex());
-    m_ctx.session->plane = m_plane->currentData().toInt();
-    m_ctx.session->adcBits = m_bits->value();
+    m_ctx.setUp(m_plane->currentData().toInt(), m_bits->value(), m_ctx.procedure().config().referenceDivisionUm);
 }
 
 void ProbeChoosePage::initializePage() {
     const QSignalBlocker a(m_probe), b(m_plane), c(m_bits);
     m_probe->clear();
-    for (CalibrationProbe* p : m_ctx.probes)
+    for (DeviceCalibrationProbe* p : m_ctx.probes)
         m_probe->addItem(p->name());
     m_probe->setCurrentIndex(std::clamp(m_ctx.session->probeIndex, 0, std::max(0, m_probe->count() - 1)));
-    m_plane->setCurrentIndex(m_ctx.session->plane);
-    m_bits->setValue(m_ctx.session->adcBits);
-    CalibrationProbe* p = m_ctx.probe();
+    m_plane->setCurrentIndex(m_ctx.procedure().config().plane);
+    m_bits->setValue(m_ctx.procedure().config().adcBits);
+    DeviceCalibrationProbe* p = m_ctx.probe();
     m_bits->setEnabled(!p || !p->adcBits());
+    if (p && p->adcBits()) {
+        m_bits->setValue(*p->adcBits());  // what the mandrel says it has
+        store();
+    }
     if (!p) {
         m_health->setText(tr("No probe mandrel is configured: add one on the Devices page, or type the points."));
         return;
@@ -139,12 +159,13 @@ ProbeReferencePage::ProbeReferencePage(ProbeWizardContext& context, QWidget* par
 
 void ProbeReferencePage::initializePage() {
     m_kind->setCurrentIndex(m_ctx.session->referenceKind);
-    m_resolution->setValue(m_ctx.session->resolutionUm);
+    m_resolution->setValue(m_ctx.procedure().config().referenceDivisionUm);
 }
 
 bool ProbeReferencePage::validatePage() {
     m_ctx.session->referenceKind = m_kind->currentIndex();
-    m_ctx.session->resolutionUm = m_resolution->value();
+    const core::ProbeProcedureConfig& c = m_ctx.procedure().config();
+    m_ctx.setUp(c.plane, c.adcBits, m_resolution->value());
     return true;
 }
 
@@ -163,42 +184,199 @@ void ProbeReferencePage::retranslate() {
            "step read the instrument and capture the point. Aim for 15 to 25 points, both signs."));
 }
 
-// --- 5. Accept --------------------------------------------------------------------------------
+// --- 5. Verify and accept ---------------------------------------------------------------------
 
 ProbeAcceptPage::ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent)
-    : CalibrationWizardPage(parent), m_ctx(context), m_summary(wrappedLabel(this)), m_accept(new QCheckBox(this)) {
+    : CalibrationWizardPage(parent),
+      m_ctx(context),
+      m_summary(wrappedLabel(this)),
+      m_checkTitle(new QLabel(this)),
+      m_jackLabel(new QLabel(this)),
+      m_jack(new QDoubleSpinBox(this)),
+      m_setJack(new QPushButton(this)),
+      m_referenceLabel(new QLabel(this)),
+      m_reference(new QDoubleSpinBox(this)),
+      m_check(new QPushButton(this)),
+      m_result(wrappedLabel(this)),
+      m_accept(new QCheckBox(this)),
+      m_timer(new QTimer(this)) {
     m_accept->setObjectName(QStringLiteral("acceptCheck"));
     m_accept->setStyleSheet(
         QStringLiteral("QCheckBox { font-weight: bold; } QCheckBox::indicator { width: 28px; height: 28px; }"));
     m_summary->setObjectName(QStringLiteral("acceptSummary"));
     m_summary->setTextFormat(Qt::RichText);
+    m_checkTitle->setObjectName(QStringLiteral("SectionTitle"));
+    m_jack->setObjectName(QStringLiteral("checkJackSpin"));
+    m_reference->setObjectName(QStringLiteral("checkReferenceSpin"));
+    m_check->setObjectName(QStringLiteral("checkPoint"));
+    m_result->setObjectName(QStringLiteral("checkResult"));
+    for (QDoubleSpinBox* s : {m_jack, m_reference}) {
+        s->setRange(-2000.0, 2000.0);
+        s->setDecimals(1);
+        s->setMinimumWidth(170);
+    }
+    auto* grid = new QGridLayout;
+    grid->addWidget(m_jackLabel, 0, 0);
+    grid->addWidget(m_jack, 0, 1);
+    grid->addWidget(m_setJack, 0, 2);
+    grid->addWidget(m_referenceLabel, 1, 0);
+    grid->addWidget(m_reference, 1, 1);
+    grid->addWidget(m_check, 1, 2);
+    grid->setColumnStretch(3, 1);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_summary);
+    layout->addSpacing(8);
+    layout->addWidget(m_checkTitle);
+    layout->addLayout(grid);
+    layout->addWidget(m_result);
     layout->addStretch(1);
     layout->addWidget(m_accept);
-    connect(m_accept, &QCheckBox::toggled, this, [this](bool on) {
-        m_ctx.session->accepted = on;
-        emit completeChanged();
-    });
+    m_timer->setInterval(ProbeCapturePage::kPollMs);
+    connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(); });
+    connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
+    connect(m_check, &QPushButton::clicked, this, &ProbeAcceptPage::checkPoint);
+    connect(m_accept, &QCheckBox::toggled, this, &ProbeAcceptPage::setAccepted);
 }
 
 void ProbeAcceptPage::initializePage() {
-    m_accept->setChecked(m_ctx.session->accepted);
-    if (!m_ctx.result) return;
-    const core::Linearisation& lin = *m_ctx.result;
-    CalibrationProbe* p = m_ctx.probe();
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    const bool jack = p && p->hasJack();
+    for (QWidget* w : std::initializer_list<QWidget*>{m_jackLabel, m_jack, m_setJack})
+        w->setVisible(jack);
+    m_reference->setSingleStep(m_ctx.procedure().config().referenceDivisionUm);
+    refresh();
+    if (p) m_timer->start();
+}
+
+void ProbeAcceptPage::cleanupPage() {
+    m_timer->stop();
+    m_ctx.procedure().abort();  // a check being read
+    m_ctx.procedure().takeEvents();
+}
+
+bool ProbeAcceptPage::validatePage() {
+    return m_ctx.procedure().accepted();
+}
+
+bool ProbeAcceptPage::isComplete() const {
+    return m_ctx.procedure().accepted();
+}
+
+void ProbeAcceptPage::setJack(double um) {
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    if (!p || !p->hasJack() || m_ctx.procedure().capturing()) return;
+    m_jack->setValue(um);
+    pollProbe(0.0);  // the samples queued so far were read under the old load
+    try {
+        p->bendBar(m_ctx.procedure().config().plane, um / 1000.0);
+    } catch (const std::invalid_argument&) {
+        return;
+    }
+    const double division = m_ctx.procedure().config().referenceDivisionUm;
+    m_reference->setValue(std::round(um / division) * division);
+    m_ctx.procedure().loadChanged();
+    m_ctx.procedure().takeEvents();
+}
+
+void ProbeAcceptPage::setReferenceUm(double um) {
+    m_reference->setValue(um);
+}
+
+bool ProbeAcceptPage::checkPoint() {
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (!m_ctx.probe()) return false;
+    if (proc.capturing()) {
+        proc.abort();
+        proc.takeEvents();
+        refresh();
+        return false;
+    }
+    proc.withdrawAcceptance();  // a new check may change the verdict
+    pollProbe(0.0);             // samples queued before the press are not the check's
+    try {
+        proc.check(m_reference->value());
+    } catch (const std::logic_error&) {
+        return false;
+    }
+    m_result->setText(tr("Hold still, then the live codes are averaged…"));
+    markProblem(m_result, false);
+    refresh();
+    return true;
+}
+
+void ProbeAcceptPage::pollProbe(double elapsedS) {
+    m_ctx.pumpProbe(elapsedS);
+    const core::ProbeProcedureConfig& c = m_ctx.procedure().config();
+    bool any = false;
+    for (const core::ProbeEvent& e : m_ctx.procedure().takeEvents()) {
+        m_result->setText(ProcedureWords::probeEvent(e, c.adcBits, c.capture.noSampleTimeoutS));
+        if (e.check)
+            markVerdict(m_result, e.check->passed);
+        else
+            markProblem(m_result, e.kind == core::ProbeEvent::Kind::CaptureFailed);
+        any = true;
+    }
+    if (any) refresh();
+}
+
+void ProbeAcceptPage::setAccepted(bool accepted) {
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (accepted && !proc.accept()) {
+        m_result->setText(
+            tr("Not accepted: a verification point failed or is being read. Check again, or go back "
+               "and capture more points."));
+        markProblem(m_result, true);
+    } else if (!accepted) {
+        proc.withdrawAcceptance();
+    }
+    proc.takeEvents();
+    refresh();
+}
+
+QString ProbeAcceptPage::checkResult() const {
+    return m_result->text();
+}
+
+void ProbeAcceptPage::refresh() {
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    {
+        const QSignalBlocker block(m_accept);
+        m_accept->setChecked(proc.accepted());
+    }
+    m_check->setText(proc.capturing() ? tr("Stop") : tr("Check point"));
+    m_check->setEnabled(m_ctx.probe() != nullptr && proc.fitOutcome().usable());
+    m_setJack->setEnabled(!proc.capturing());
+    emit completeChanged();
+    if (!proc.fitOutcome().usable()) return;
+    const core::Linearisation& lin = *proc.fitOutcome().linearisation;
+    DeviceCalibrationProbe* p = m_ctx.probe();
     const QString probe = p ? p->name() : tr("(typed points)");
-    const int version = m_ctx.store ? m_ctx.store->nextTableVersion(probe, m_ctx.session->plane) : 1;
-    QString warnings;
-    for (const std::string& w : lin.warnings)
-        warnings += QStringLiteral("<br><b>%1</b>").arg(QString::fromStdString(w).toHtmlEscaped());
+    const int plane = proc.config().plane;
+    const int version = m_ctx.store ? m_ctx.store->nextTableVersion(probe, plane) : 1;
+    const double share = static_cast<double>(lin.extrapolatedEntries) /
+                         static_cast<double>(std::max<std::size_t>(1, lin.table.entries.size()));
+    const QString warning =
+        share > core::kExtrapolatedWarningShare
+            ? QStringLiteral("<br><b>%1</b>")
+                  .arg(tr("%1 % of the table lies outside the calibrated range and is extrapolated; calibrate over "
+                          "more of the probe's travel.")
+                           .arg(100.0 * share, 0, 'f', 0)
+                           .toHtmlEscaped())
+            : QString();
+    int passed = 0;
+    for (const core::ProbeCheck& c : proc.checks())
+        passed += c.passed ? 1 : 0;
+    const QString checks = proc.checks().empty()
+                               ? tr("no verification point yet")
+                               : tr("%1 of %2 verification points passed").arg(passed).arg(proc.checks().size());
+    const int used = static_cast<int>(proc.points().size() - proc.fitOutcome().leftOut.size());
     m_summary->setText(
         tr("<p>Characteristic of degree %1 from %2 points, residual RMS %3 µm.</p>"
            "<p>Table: %4 entries of %5 nm, worst error at the calibration points %6 µm, step between codes up "
            "to %7 µm; %8 entries outside the calibrated range %9 .. %10 µm are extrapolated.%11</p>"
            "<p>It will be saved as version <b>%12</b> of %13, plane %14, by <b>%15</b>.</p>")
             .arg(lin.fit.degree)
-            .arg(m_ctx.session->points.size())
+            .arg(used)
             .arg(lin.fit.rmsResidualUm, 0, 'f', 2)
             .arg(lin.table.entries.size())
             .arg(lin.table.scaleNm)
@@ -207,23 +385,27 @@ void ProbeAcceptPage::initializePage() {
             .arg(lin.extrapolatedEntries)
             .arg(lin.fit.calibratedMinUm, 0, 'f', 0)
             .arg(lin.fit.calibratedMaxUm, 0, 'f', 0)
-            .arg(warnings)
+            .arg(warning)
             .arg(version)
             .arg(probe.toHtmlEscaped())
-            .arg(m_ctx.session->plane == 0 ? QStringLiteral("X") : QStringLiteral("Y"))
+            .arg(plane == 0 ? QStringLiteral("X") : QStringLiteral("Y"))
             .arg(m_ctx.operatorName().isEmpty() ? tr("(no operator name — set it in Settings)")
                                                 : m_ctx.operatorName().toHtmlEscaped()));
-}
-
-bool ProbeAcceptPage::isComplete() const {
-    return m_ctx.result.has_value() && m_accept->isChecked();
+    m_checkTitle->setText(tr("Verify the table — %1").arg(checks));
 }
 
 void ProbeAcceptPage::retranslate() {
-    setTitle(tr("Accept the table"));
-    setSubTitle(tr("Check the figures; the table is stored only when you accept it."));
+    setTitle(tr("Verify and accept the table"));
+    setSubTitle(
+        tr("Load the bar to a deflection not captured and check that the table reads it; the table is "
+           "stored only when you accept it."));
+    m_jackLabel->setText(tr("Stand's screw jack"));
+    m_setJack->setText(tr("Bend the bar"));
+    m_referenceLabel->setText(tr("Reference reading"));
+    for (QDoubleSpinBox* s : {m_jack, m_reference})
+        s->setSuffix(tr(" µm"));
     m_accept->setText(tr("I accept this linearisation table"));
-    initializePage();
+    refresh();
 }
 
 // --- 6. Save and upload -----------------------------------------------------------------------
@@ -244,10 +426,7 @@ ProbeSavePage::ProbeSavePage(ProbeWizardContext& context, QWidget* parent)
     m_upload->setObjectName(QStringLiteral("uploadTable"));
     m_export->setObjectName(QStringLiteral("exportTable"));
     m_result->setObjectName(QStringLiteral("saveResult"));
-    m_saved->setObjectName(QStringLiteral("savedVersion"));
-    m_saved->setStyleSheet(QStringLiteral("font-weight: bold;"));
     m_progress->setRange(0, 100);
-    m_progress->setMinimumHeight(36);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_save);
     buttons->addWidget(m_upload);
@@ -256,16 +435,16 @@ ProbeSavePage::ProbeSavePage(ProbeWizardContext& context, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_intro);
     layout->addLayout(buttons);
-    layout->addWidget(m_saved);
     layout->addWidget(m_progress);
+    layout->addWidget(m_saved);
     layout->addWidget(m_result);
     layout->addStretch(1);
-    m_timer->setInterval(50);
-    connect(m_timer, &QTimer::timeout, this, &ProbeSavePage::pollUpload);
+    m_timer->setInterval(100);
+    connect(m_timer, &QTimer::timeout, this, [this] { pollUpload(); });
     connect(m_save, &QPushButton::clicked, this, &ProbeSavePage::save);
     connect(m_upload, &QPushButton::clicked, this, &ProbeSavePage::upload);
     connect(m_export, &QPushButton::clicked, this, [this] {
-        if (!m_ctx.app || !m_ctx.app->prompt || !m_ctx.result) return;
+        if (!m_ctx.app || !m_ctx.app->prompt || !m_ctx.procedure().fitOutcome().usable()) return;
         const QString path =
             m_ctx.app->prompt->saveFileName(this, tr("Export the table"), QStringLiteral("linearisation.h"),
                                             tr("C header (*.h);;Binary image (*.bin);;CSV (*.csv)"));
@@ -274,17 +453,26 @@ ProbeSavePage::ProbeSavePage(ProbeWizardContext& context, QWidget* parent)
 }
 
 void ProbeSavePage::initializePage() {
-    m_progress->setValue(m_ctx.session->saved && m_ctx.session->uploadVerified ? 100 : 0);
-    CalibrationProbe* p = m_ctx.probe();
-    m_upload->setEnabled(m_ctx.session->saved.has_value() && p && p->canUpload());
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    proc.next();  // Accepted → Upload
+    const bool verified = proc.upload().phase() == core::TableUploadProcedure::Phase::Verified;
+    m_progress->setValue(m_ctx.session->saved && verified ? 100 : 0);
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    m_upload->setEnabled(m_ctx.session->saved.has_value() && p && p->canUpload() && !verified);
     m_save->setEnabled(!m_ctx.session->saved.has_value());
     retranslate();
 }
 
+void ProbeSavePage::cleanupPage() {
+    m_timer->stop();
+    m_ctx.procedure().back();  // Upload → Accepted (not while an upload runs)
+}
+
 bool ProbeSavePage::isComplete() const {
-    if (!m_ctx.session->saved || m_uploading) return false;
-    CalibrationProbe* p = m_ctx.probe();
-    return m_ctx.session->uploadVerified || !p || !p->canUpload();
+    const core::TableUploadProcedure& upload = m_ctx.procedure().upload();
+    if (!m_ctx.session->saved || upload.running()) return false;
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    return upload.phase() == core::TableUploadProcedure::Phase::Verified || !p || !p->canUpload();
 }
 
 void ProbeSavePage::showResult(const QString& text, bool problem) {
@@ -294,7 +482,8 @@ void ProbeSavePage::showResult(const QString& text, bool problem) {
 }
 
 bool ProbeSavePage::save() {
-    if (!m_ctx.result || m_ctx.session->saved) return m_ctx.session->saved.has_value();
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (!proc.accepted() || m_ctx.session->saved) return m_ctx.session->saved.has_value();
     if (!m_ctx.store) {
         showResult(tr("The calibration database is not open; export the table instead."), true);
         return false;
@@ -307,11 +496,11 @@ bool ProbeSavePage::save() {
         showResult(tr("Not saved: no operator name (Settings)."), true);
         return false;
     }
-    const core::Linearisation& lin = *m_ctx.result;
-    CalibrationProbe* p = m_ctx.probe();
+    const core::Linearisation& lin = *proc.fitOutcome().linearisation;
+    DeviceCalibrationProbe* p = m_ctx.probe();
     storage::ProbeTableRecord r;
     r.probe = p ? p->name() : tr("(typed points)");
-    r.plane = m_ctx.session->plane;
+    r.plane = proc.config().plane;
     r.createdBy = who;
     r.adcBits = lin.fit.adcBits;
     r.degree = lin.fit.degree;
@@ -321,17 +510,21 @@ bool ProbeSavePage::save() {
     r.coefficients = coefficients.join(QLatin1Char(' '));
     r.rmsResidualUm = lin.fit.rmsResidualUm;
     r.maxTableErrorUm = lin.maxTableErrorUm;
-    r.pointsCsv = QString::fromStdString(core::calibrationCsv(m_ctx.session->calibrationPoints()));
+    std::vector<core::CalibrationPoint> used;  // the points the table was fitted to
+    for (const core::ProbePoint& point : proc.points())
+        if (!point.saturated) used.push_back({point.referenceUm, point.adcCode, 0});
+    r.pointsCsv = QString::fromStdString(core::calibrationCsv(used));
     try {
         core::TableImageInfo info;
         info.version = static_cast<std::uint16_t>(m_ctx.store->nextTableVersion(r.probe, r.plane));
         info.createdUnixS = QDateTime::currentSecsSinceEpoch();
         info.plane = static_cast<std::uint8_t>(r.plane);
         info.degree = static_cast<std::uint8_t>(lin.fit.degree);
-        m_image = core::encodeTableImage(lin.table, info, p ? p->imageFormat() : core::kTableImageFormat);
-        r.image = QByteArray(reinterpret_cast<const char*>(m_image.data()), static_cast<qsizetype>(m_image.size()));
-        r.imageCrc = core::tableImageCrc(m_image);
-        r.uploadCrc = core::tableUploadCrc(m_image);
+        const std::vector<std::uint8_t> image =
+            core::encodeTableImage(lin.table, info, p ? p->imageFormat() : core::kTableImageFormat);
+        r.image = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
+        r.imageCrc = core::tableImageCrc(image);
+        r.uploadCrc = core::tableUploadCrc(image);
         m_ctx.session->saved = m_ctx.store->saveTable(r);
     } catch (const std::exception& e) {
         showResult(tr("Not saved: %1").arg(QString::fromStdString(e.what())), true);
@@ -352,87 +545,70 @@ bool ProbeSavePage::save() {
 }
 
 bool ProbeSavePage::upload() {
-    CalibrationProbe* p = m_ctx.probe();
-    if (!p || !m_ctx.session->saved || m_uploading) return false;
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (!p || !m_ctx.session->saved || proc.upload().running() ||
+        proc.step() != core::ProbeLinearisationProcedure::Step::Upload)
+        return false;
     const storage::ProbeTableRecord& s = *m_ctx.session->saved;
-    const QByteArray& bytes = s.image;
-    m_image.assign(bytes.begin(), bytes.end());
-    try {
-        p->startUpload(m_image, static_cast<std::uint16_t>(s.version), static_cast<std::uint32_t>(s.uploadCrc));
-    } catch (const std::exception& e) {
-        showResult(tr("Upload refused: %1").arg(QString::fromStdString(e.what())), true);
+    proc.startUpload(*p, std::vector<std::uint8_t>(s.image.begin(), s.image.end()),
+                     static_cast<std::uint16_t>(s.version));
+    proc.takeEvents();
+    if (!proc.upload().running()) {  // refused at once
+        showResult(ProcedureWords::uploadOutcome(proc.upload()), true);
         return false;
     }
-    m_uploading = true;
-    m_ctx.session->uploadVerified = false;
     m_upload->setEnabled(false);
-    showResult(tr("Uploading…"), false);
+    showResult(ProcedureWords::uploadOutcome(proc.upload()), false);
     m_timer->start();
     emit completeChanged();
     return true;
 }
 
-void ProbeSavePage::pollUpload() {
-    CalibrationProbe* p = m_ctx.probe();
-    if (!p || !m_uploading) return;
-    p->poll(m_timer->interval() / 1000.0);
-    const ProbeUploadStatus status = p->uploadStatus();
-    m_progress->setValue(static_cast<int>(std::lround(100.0 * status.progress)));
-    if (status.phase == ProbeUploadStatus::Phase::Running) {
-        m_result->setText(status.message);
+void ProbeSavePage::pollUpload(double elapsedS) {
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (!p || !proc.upload().running()) return;
+    proc.pumpUpload(*p, elapsedS);
+    const core::TableUploadProcedure& upload = proc.upload();
+    m_progress->setValue(static_cast<int>(std::lround(100.0 * upload.progress())));
+    if (upload.running()) {
+        m_result->setText(ProcedureWords::uploadOutcome(upload));
         return;
     }
-    if (status.phase == ProbeUploadStatus::Phase::Idle) return;
     m_timer->stop();
-    m_uploading = false;
+    proc.takeEvents();
+    const bool verified = upload.phase() == core::TableUploadProcedure::Phase::Verified;
     const storage::ProbeTableRecord& s = *m_ctx.session->saved;
-    if (status.phase == ProbeUploadStatus::Phase::Failed) {
-        showResult(tr("Upload failed: %1. The saved table is kept; try again.").arg(status.message), true);
-        m_upload->setEnabled(true);
-        emit completeChanged();
-        return;
-    }
-    p->requestReadback();
-    const std::optional<ProbeTableReadback> back = p->readback();
-    const bool verified = back && back->matches(s.version, m_image);
-    m_ctx.session->uploadVerified = verified;
-    if (m_ctx.store)
-        m_ctx.store->recordUpload(s.id, m_ctx.operatorName(), back ? std::optional<qint64>(back->crc()) : std::nullopt,
+    const bool refused = upload.problem() == core::TableUploadProcedure::Problem::Refused ||
+                         upload.problem() == core::TableUploadProcedure::Problem::Aborted;
+    if (m_ctx.store && !refused)  // what the mandrel holds now is on record
+        m_ctx.store->recordUpload(s.id, m_ctx.operatorName(),
+                                  upload.readback() ? std::optional<qint64>(upload.readback()->crc()) : std::nullopt,
                                   verified);
-    if (verified)
-        showResult(tr("Verified: the mandrel reports version %1, %2, the same as the image sent.")
-                       .arg(back->version)
-                       .arg(back->crcText()),
-                   false);
-    else
-        showResult(back ? tr("Read-back does not match: the mandrel reports version %1, %2; the image has version "
-                             "%3, CRC-32C %4. Upload again.")
-                              .arg(back->version)
-                              .arg(back->crcText())
-                              .arg(s.version)
-                              .arg(QString::fromStdString(core::crcText(static_cast<std::uint32_t>(s.uploadCrc))))
-                        : tr("The mandrel did not report its table; upload again."),
-                   true);
+    showResult(ProcedureWords::uploadOutcome(upload), !verified);
     m_upload->setEnabled(!verified);
     emit completeChanged();
 }
 
 bool ProbeSavePage::exportTable(const QString& path) {
-    if (!m_ctx.result) return false;
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    if (!proc.fitOutcome().usable()) return false;
+    const core::Linearisation& lin = *proc.fitOutcome().linearisation;
     core::TableImageInfo info;
     info.version = static_cast<std::uint16_t>(m_ctx.session->saved ? m_ctx.session->saved->version : 1);
     info.createdUnixS = QDateTime::currentSecsSinceEpoch();
-    info.plane = static_cast<std::uint8_t>(m_ctx.session->plane);
-    info.degree = static_cast<std::uint8_t>(m_ctx.result->fit.degree);
+    info.plane = static_cast<std::uint8_t>(proc.config().plane);
+    info.degree = static_cast<std::uint8_t>(lin.fit.degree);
     const QString suffix = QFileInfo(path).suffix().toLower();
     QByteArray bytes;
     if (suffix == QStringLiteral("csv")) {
-        bytes = QByteArray::fromStdString(core::tableToCsv(m_ctx.result->table));
+        bytes = QByteArray::fromStdString(core::tableToCsv(lin.table));
     } else if (suffix == QStringLiteral("bin")) {
-        const std::vector<std::uint8_t> image = core::encodeTableImage(m_ctx.result->table, info);
+        const std::vector<std::uint8_t> image = core::encodeTableImage(lin.table, info);
         bytes = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
     } else {
-        bytes = QByteArray::fromStdString(core::tableToCHeader(m_ctx.result->table, info));
+        bytes = QByteArray::fromStdString(core::tableToCHeader(lin.table, info));
     }
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size() || !file.flush()) {
@@ -446,7 +622,7 @@ bool ProbeSavePage::exportTable(const QString& path) {
 void ProbeSavePage::retranslate() {
     setTitle(tr("Save and upload"));
     setSubTitle(tr("The table is saved as a new version with your name, then sent to the mandrel and read back."));
-    CalibrationProbe* p = m_ctx.probe();
+    DeviceCalibrationProbe* p = m_ctx.probe();
     m_intro->setText(p && p->canUpload()
                          ? tr("Save the table, then upload it to %1. Finish is possible once the mandrel reports the "
                               "same version and CRC as the image sent.")
@@ -461,10 +637,9 @@ void ProbeSavePage::retranslate() {
 // --- The wizard -------------------------------------------------------------------------------
 
 ProbeCalibrationWizard::ProbeCalibrationWizard(AppContext& app, ProbeCalibrationSession& session,
-                                               std::vector<CalibrationProbe*> probes, storage::CalibrationStore* store,
-                                               QWidget* parent)
-    : CalibrationWizard(QStringLiteral("probeWizard"), parent),
-      m_ctx{&app, &session, std::move(probes), store, std::nullopt} {
+                                               std::vector<DeviceCalibrationProbe*> probes,
+                                               storage::CalibrationStore* store, QWidget* parent)
+    : CalibrationWizard(QStringLiteral("probeWizard"), parent), m_ctx{&app, &session, std::move(probes), store} {
     m_choose = new ProbeChoosePage(m_ctx, this);
     m_reference = new ProbeReferencePage(m_ctx, this);
     m_capture = new ProbeCapturePage(m_ctx, this);

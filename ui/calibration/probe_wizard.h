@@ -1,12 +1,10 @@
 #pragma once
 
-#include <optional>
 #include <vector>
 
-#include "core/calibration/probe_linearisation.h"
 #include "ui/app_context.h"
-#include "ui/calibration/calibration_probe.h"
 #include "ui/calibration/calibration_wizard.h"
+#include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/probe_calibration_session.h"
 
 class QCheckBox;
@@ -27,16 +25,21 @@ namespace tt::ui {
 class ProbeCapturePage;
 class ProbeFitPage;
 
-/// What the pages of the probe wizard share.
+/// What the pages of the probe wizard share: the session (its procedure holds the steps), the
+/// probes offered and the store.
 struct ProbeWizardContext {
     AppContext* app = nullptr;
     ProbeCalibrationSession* session = nullptr;
-    std::vector<CalibrationProbe*> probes;
+    std::vector<DeviceCalibrationProbe*> probes;
     storage::CalibrationStore* store = nullptr;
-    std::optional<core::Linearisation> result;  ///< the accepted fit and table (FitPage)
 
-    CalibrationProbe* probe() const;
+    DeviceCalibrationProbe* probe() const;
+    core::ProbeLinearisationProcedure& procedure() const { return session->procedure; }
     QString operatorName() const;
+    /// Forwards the probe's samples to the procedure (`elapsedS` of wall time since the last call).
+    void pumpProbe(double elapsedS) const;
+    /// Plane, ADC resolution and the instrument's division into the procedure (back to its capture step).
+    void setUp(int plane, int adcBits, double divisionUm) const;
 };
 
 /// 1. Choose the probe, the bending plane and the ADC resolution.
@@ -78,19 +81,44 @@ private:
     QLabel* m_instructions;
 };
 
-/// 5. Accept: the figures of the table, and the operator's acceptance.
+/// 5. Verify and accept: the figures of the table, verification points read through the table
+/// (captured like the points, not used by the fit), and the operator's acceptance, which the
+/// procedure refuses while a verification point failed.
 class ProbeAcceptPage : public CalibrationWizardPage {
     Q_OBJECT
 public:
     ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override;
+    bool validatePage() override;
     bool isComplete() const override;
     void retranslate() override;
 
+    /// Stand with a screw jack: bends the bar to `um` and fills in what the dial indicator shows.
+    void setJack(double um);
+    void setReferenceUm(double um);
+    /// Starts a verification point at the reference entered (stops a running one).
+    bool checkPoint();
+    /// Takes the probe's samples (the timer calls it; tests too).
+    void pollProbe(double elapsedS = 0.1);
+    /// Ticks or unticks the acceptance (the procedure may refuse it).
+    void setAccepted(bool accepted);
+    QString checkResult() const;
+
 private:
+    void refresh();
     ProbeWizardContext& m_ctx;
     QLabel* m_summary;
+    QLabel* m_checkTitle;
+    QLabel* m_jackLabel;
+    QDoubleSpinBox* m_jack;
+    QPushButton* m_setJack;
+    QLabel* m_referenceLabel;
+    QDoubleSpinBox* m_reference;
+    QPushButton* m_check;
+    QLabel* m_result;
     QCheckBox* m_accept;
+    QTimer* m_timer;
 };
 
 /// 6. Save the table as a new version (who, when) and upload it with read-back of its CRC.
@@ -99,6 +127,7 @@ class ProbeSavePage : public CalibrationWizardPage {
 public:
     ProbeSavePage(ProbeWizardContext& context, QWidget* parent = nullptr);
     void initializePage() override;
+    void cleanupPage() override;
     bool isComplete() const override;
     void retranslate() override;
 
@@ -107,7 +136,7 @@ public:
     /// Starts the upload of the saved table.
     bool upload();
     /// One step of the upload watch (the timer calls it; tests may too).
-    void pollUpload();
+    void pollUpload(double elapsedS = 0.1);
     /// Writes the table as C header, binary image or CSV (by the file's extension).
     bool exportTable(const QString& path);
 
@@ -122,21 +151,22 @@ private:
     QLabel* m_saved;
     QLabel* m_result;
     QTimer* m_timer;
-    std::vector<std::uint8_t> m_image;
-    bool m_uploading = false;
 };
 
 /// The probe mandrel linearisation wizard (issue 6, item 5): choose the probe and plane → set up
 /// the reference → capture points live (or type them) with a live plot → fit with the residual
-/// plot and the degree choice explained → accept → save a versioned table and upload it with
-/// read-back of its CRC. Works on the session it is given, so Back and Cancel lose nothing.
+/// plot and the degree choice explained → verify and accept → save a versioned table and upload
+/// it with read-back of its CRC. The steps are core::ProbeLinearisationProcedure's; the pages show
+/// its state and forward the clicks. Works on the session it is given, so Back and Cancel lose
+/// nothing.
 class ProbeCalibrationWizard : public CalibrationWizard {
     Q_OBJECT
 public:
     enum PageId { ChoosePage, ReferencePage, CapturePage, FitPage, AcceptPage, SavePage };
 
-    ProbeCalibrationWizard(AppContext& app, ProbeCalibrationSession& session, std::vector<CalibrationProbe*> probes,
-                           storage::CalibrationStore* store, QWidget* parent = nullptr);
+    ProbeCalibrationWizard(AppContext& app, ProbeCalibrationSession& session,
+                           std::vector<DeviceCalibrationProbe*> probes, storage::CalibrationStore* store,
+                           QWidget* parent = nullptr);
 
     ProbeChoosePage* choosePage() const { return m_choose; }
     ProbeReferencePage* referencePage() const { return m_reference; }

@@ -15,9 +15,7 @@
 #include "devices/api/device_manager.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/device_kp_drive.h"
-#include "ui/calibration/kp_drive_source.h"
 #include "ui/calibration/probe_wizard.h"
-#include "ui/calibration/simulated_calibration_probe.h"
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
 #include "ui/tools/database_connection.h"
@@ -52,8 +50,6 @@ QString crcText(qint64 v) {
 
 CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     : Page(PageId::Calibration, context, parent),
-      m_simProbe(std::make_unique<SimulatedCalibrationProbe>(tr("Simulated probe mandrel"))),
-      m_simDrive(std::make_unique<SimulatedKpDrive>(tr("Simulated cross feed"))),
       m_stack(new QStackedWidget(this)),
       m_overview(new QWidget(this)),
       m_probeTitle(new QLabel(m_overview)),
@@ -123,14 +119,11 @@ CalibrationPage::~CalibrationPage() {
     // The wizards refer to the stores and the probes: destroy them first.
     delete m_probeWizard;
     delete m_kpWizard;
+    releaseJacks();
 }
 
 QString CalibrationPage::title() const {
     return pageTitle(PageId::Calibration);
-}
-
-CalibrationProbe* CalibrationPage::simulatedProbe() const {
-    return m_simProbe.get();
 }
 
 void CalibrationPage::showEvent(QShowEvent* event) {
@@ -156,29 +149,21 @@ void CalibrationPage::adoptDevices() {
                 now.append({id, m_devices->device(id)});
     if (now == m_adopted) return;
     const bool wizardOpen = !overviewShown();
-    // The wizards refer to the adapters: drop them (setProbes/setDrives) before the adapters.
-    setProbes({});
-    setDrives({});
+    releaseJacks();
+    closeWizards();  // the wizards refer to the adapters: drop them first
     m_deviceProbes.clear();
     m_deviceDrives.clear();
     m_adopted = now;
-    std::vector<CalibrationProbe*> probes;
-    std::vector<KpDriveSource*> drives;
     for (const auto& adopted : now) {
         const QString& id = adopted.first;
         const devices::DeviceEntry* e = m_devices->entry(id);
         devices::Device* device = m_devices->device(id);
         if (!e || !device) continue;
-        if (e->kind == devices::DeviceKind::Probe && device->deflectionProbe()) {
+        if (e->kind == devices::DeviceKind::Probe && device->deflectionProbe())
             m_deviceProbes.push_back(std::make_unique<DeviceCalibrationProbe>(*device, e->name));
-            probes.push_back(m_deviceProbes.back().get());
-        } else if (e->kind == devices::DeviceKind::DriveCurrent && device->driveCurrentReadout()) {
+        else if (e->kind == devices::DeviceKind::DriveCurrent && device->driveCurrentReadout())
             m_deviceDrives.push_back(std::make_unique<DeviceKpDrive>(*device, e->name));
-            drives.push_back(m_deviceDrives.back().get());
-        }
     }
-    setProbes(std::move(probes));
-    setDrives(std::move(drives));
     if (wizardOpen) {
         showOverview();
         m_deviceNotice->setText(
@@ -186,6 +171,13 @@ void CalibrationPage::adoptDevices() {
                "points are kept. Open it again to continue."));
         m_deviceNotice->show();
     }
+}
+
+void CalibrationPage::closeWizards() {
+    delete m_probeWizard;  // rebuilt with the new lists on the next start
+    m_probeWizard = nullptr;
+    delete m_kpWizard;
+    m_kpWizard = nullptr;
 }
 
 QString CalibrationPage::deviceNotice() const {
@@ -205,35 +197,38 @@ void CalibrationPage::openStores() {
     }
 }
 
-std::vector<CalibrationProbe*> CalibrationPage::probes() const {
-    std::vector<CalibrationProbe*> out{m_simProbe.get()};
-    out.insert(out.end(), m_extraProbes.begin(), m_extraProbes.end());
+std::vector<DeviceCalibrationProbe*> CalibrationPage::offeredProbes() const {
+    std::vector<DeviceCalibrationProbe*> out;
+    for (const auto& p : m_deviceProbes)
+        out.push_back(p.get());
     return out;
 }
 
-std::vector<KpDriveSource*> CalibrationPage::drives() const {
-    std::vector<KpDriveSource*> out{m_simDrive.get()};
-    out.insert(out.end(), m_extraDrives.begin(), m_extraDrives.end());
+std::vector<DeviceKpDrive*> CalibrationPage::offeredDrives() const {
+    std::vector<DeviceKpDrive*> out;
+    for (const auto& d : m_deviceDrives)
+        out.push_back(d.get());
     return out;
-}
-
-void CalibrationPage::setProbes(std::vector<CalibrationProbe*> probes) {
-    m_extraProbes = std::move(probes);
-    delete m_probeWizard;  // rebuilt with the new list on the next start
-    m_probeWizard = nullptr;
-}
-
-void CalibrationPage::setDrives(std::vector<KpDriveSource*> drives) {
-    m_extraDrives = std::move(drives);
-    delete m_kpWizard;
-    m_kpWizard = nullptr;
 }
 
 bool CalibrationPage::overviewShown() const {
     return m_stack->currentWidget() == m_overview;
 }
 
+void CalibrationPage::releaseJacks() {
+    // Only of the devices still there: a removed one took its stand with it.
+    QList<const devices::Device*> present;
+    if (m_devices)
+        for (const QString& id : m_devices->deviceIds())
+            present << m_devices->device(id);
+    for (const auto& p : m_deviceProbes)
+        if (present.contains(&p->device())) p->releaseJack();
+    for (const auto& d : m_deviceDrives)
+        if (present.contains(&d->device())) d->releaseJack();
+}
+
 void CalibrationPage::showOverview() {
+    releaseJacks();  // the devices follow their simulation inputs again
     m_stack->setCurrentWidget(m_overview);
     refreshLists();
     retranslate();
@@ -242,7 +237,8 @@ void CalibrationPage::showOverview() {
 void CalibrationPage::startProbeCalibration() {
     m_deviceNotice->hide();
     if (!m_probeWizard) {
-        m_probeWizard = new ProbeCalibrationWizard(context(), m_probeSession, probes(), m_calibrations.get(), this);
+        m_probeWizard =
+            new ProbeCalibrationWizard(context(), m_probeSession, offeredProbes(), m_calibrations.get(), this);
         m_probeWizard->setWindowFlags(Qt::Widget);  // a page of the main window, not a dialog
         m_stack->addWidget(m_probeWizard);
         connect(m_probeWizard, &QWizard::accepted, this, [this] {
@@ -260,7 +256,7 @@ void CalibrationPage::startKpCalibration() {
     m_deviceNotice->hide();
     if (!m_kpWizard) {
         m_kpWizard =
-            new KpCalibrationWizard(context(), m_kpSession, drives(), m_calibrations.get(), m_tools.get(), this);
+            new KpCalibrationWizard(context(), m_kpSession, offeredDrives(), m_calibrations.get(), m_tools.get(), this);
         m_kpWizard->setWindowFlags(Qt::Widget);
         m_stack->addWidget(m_kpWizard);
         connect(m_kpWizard, &QWizard::accepted, this, [this] {
@@ -275,12 +271,11 @@ void CalibrationPage::startKpCalibration() {
 }
 
 void CalibrationPage::startOver() {
-    if (m_probeSession.points.empty()) return;
+    if (m_probeSession.procedure.points().empty()) return;
     if (context().prompt &&
-        context().prompt->ask(
-            this, tr("Start over"),
-            tr("Forget the %1 captured points of the unfinished calibration?").arg(m_probeSession.points.size())) !=
-            Prompt::Answer::Yes)
+        context().prompt->ask(this, tr("Start over"),
+                              tr("Forget the %1 captured points of the unfinished calibration?")
+                                  .arg(m_probeSession.procedure.points().size())) != Prompt::Answer::Yes)
         return;
     m_probeSession.clear();
     retranslate();
@@ -329,7 +324,7 @@ void CalibrationPage::retranslate() {
         tr("Builds the table ADC code → deflection that the mandrel's microcontroller uses: "
            "capture points against a dial indicator, fit the sensor's characteristic, save a new "
            "table version and upload it with read-back of its CRC."));
-    const std::size_t kept = m_probeSession.points.size();
+    const std::size_t kept = m_probeSession.procedure.points().size();
     m_probeStart->setText(kept > 0 ? tr("Continue the calibration (%1 points kept)…").arg(kept)
                                    : tr("Linearise a probe mandrel…"));
     m_probeStartOver->setText(tr("Start over"));

@@ -26,20 +26,19 @@ class ToolStore;
 
 namespace tt::ui {
 
-class CalibrationProbe;
-class EmptyState;
+class DeviceCalibrationProbe;
+class DeviceKpDrive;
 class KpCalibrationWizard;
-class KpDriveSource;
 class ProbeCalibrationWizard;
 
 /// The Calibration page (issue 6, item 5): the probe mandrel linearisation wizard and the k_p
 /// wizard, embedded in the page (never modal), with the saved table versions and k_p
 /// calibrations listed. The page owns what the wizards gather, so Back, Cancel and switching
-/// pages never lose captured points; "Start over" asks first. The probes offered are the built-in
-/// simulated mandrel and every probe-mandrel device of `context().devices` (the simulator's too,
-/// through DeviceCalibrationProbe); the drives, the built-in simulated cross feed and every
-/// drive-current device (DeviceKpDrive). When those devices change, the lists follow; a wizard
-/// that is open is closed (its points are kept) so it never talks to a removed device.
+/// pages never lose captured points; "Start over" asks first. The probes offered are the
+/// probe-mandrel devices of `context().devices` (DeviceCalibrationProbe), the drives its
+/// drive-current devices (DeviceKpDrive), the built-in simulator's among them like any other;
+/// a device on a calibration stand brings its jack. When those devices change, the lists follow;
+/// a wizard that is open is closed (its points are kept) so it never talks to a removed device.
 class CalibrationPage : public Page {
     Q_OBJECT
 public:
@@ -48,13 +47,9 @@ public:
     QString title() const override;
     void retranslate() override;
 
-    /// Replaces the probes offered (they must outlive the page); the built-in simulator stays first.
-    void setProbes(std::vector<CalibrationProbe*> probes);
-    /// Replaces the drives offered (they must outlive the page); the built-in simulator stays first.
-    void setDrives(std::vector<KpDriveSource*> drives);
-    /// The probes and drives the wizards offer now, the built-in simulators first.
-    std::vector<CalibrationProbe*> offeredProbes() const { return probes(); }
-    std::vector<KpDriveSource*> offeredDrives() const { return drives(); }
+    /// The probes and drives the wizards offer now (the devices' adapters, in the devices' order).
+    std::vector<DeviceCalibrationProbe*> offeredProbes() const;
+    std::vector<DeviceKpDrive*> offeredDrives() const;
     /// Why a wizard was closed (the devices changed), shown above the lists; empty otherwise.
     QString deviceNotice() const;
 
@@ -69,7 +64,6 @@ public:
     KpCalibrationWizard* kpWizard() const { return m_kpWizard; }
     ProbeCalibrationSession& probeSession() { return m_probeSession; }
     KpSession& kpSession() { return m_kpSession; }
-    CalibrationProbe* simulatedProbe() const;
     bool overviewShown() const;
     QTableWidget* tablesView() const { return m_tables; }
     QTableWidget* kpView() const { return m_kpList; }
@@ -80,24 +74,20 @@ protected:
 private:
     void watchDevices();
     void adoptDevices();
+    void closeWizards();
+    void releaseJacks();
     void openStores();
     void refreshLists();
     void showOverview();
-    std::vector<CalibrationProbe*> probes() const;
-    std::vector<KpDriveSource*> drives() const;
 
     std::unique_ptr<storage::Database> m_db;
     std::unique_ptr<storage::CalibrationStore> m_calibrations;
     std::unique_ptr<storage::ToolStore> m_tools;
     QString m_storeError;
-    std::unique_ptr<CalibrationProbe> m_simProbe;
-    std::unique_ptr<KpDriveSource> m_simDrive;
-    std::vector<CalibrationProbe*> m_extraProbes;
-    std::vector<KpDriveSource*> m_extraDrives;
     QPointer<devices::DeviceManager> m_devices;
-    std::vector<std::unique_ptr<CalibrationProbe>> m_deviceProbes;  ///< adapters of the devices' probes
-    std::vector<std::unique_ptr<KpDriveSource>> m_deviceDrives;     ///< adapters of the devices' drives
-    QList<QPair<QString, const void*>> m_adopted;                   ///< the devices adapted (id, instance)
+    std::vector<std::unique_ptr<DeviceCalibrationProbe>> m_deviceProbes;  ///< adapters of the devices' probes
+    std::vector<std::unique_ptr<DeviceKpDrive>> m_deviceDrives;           ///< adapters of the devices' drives
+    QList<QPair<QString, const void*>> m_adopted;                         ///< the devices adapted (id, instance)
     ProbeCalibrationSession m_probeSession;
     KpSession m_kpSession;
 

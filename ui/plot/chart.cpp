@@ -64,6 +64,11 @@ void Chart::setXTickCount(int count) {
     m_plot->xAxis->ticker()->setTickCount(std::max(2, count));
 }
 
+void Chart::setLegendCorner(Qt::Alignment corner) {
+    if (m_plot->legend->layout() == m_plot->axisRect()->insetLayout())
+        m_plot->axisRect()->insetLayout()->setInsetAlignment(0, corner);
+}
+
 void Chart::setLegendBelow(int columns) {
     QCPLayoutGrid* layout = m_plot->plotLayout();
     if (m_plot->legend->layout() != layout) {

@@ -42,6 +42,9 @@ public:
     void setYTickCount(int count);
     /// About how many ticks the x axis shows (fewer for a narrow chart).
     void setXTickCount(int count);
+    /// Puts the legend in a corner inside the plot (top right by default): top left for a rising
+    /// curve, whose top right holds its last points.
+    void setLegendCorner(Qt::Alignment corner);
     /// Puts the legend under the plot in `columns` columns, so it never covers the data.
     void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).

@@ -1,8 +1,9 @@
 // The Calibration page with the devices of the Devices page (AppContext::devices): it offers their
-// probe mandrels and drive read-outs next to the built-in simulators and follows changes; the k_p
-// wizard measures through the simulator plugin's drive read-out (DeviceKpDrive); the probe wizard
-// calibrates the emulated 16-bit mandrel on a pseudo-terminal through the probe-mandrel plugin,
-// and uploads the 16-bit table over probe protocol 2 with the read-back of its CRC-32C.
+// probe mandrels and drive read-outs, the simulator's like any other, and follows changes; the k_p
+// wizard measures through the simulator plugin's drive read-out (DeviceKpDrive) with the load
+// applied by hand (no stand); the probe wizard calibrates the emulated 16-bit mandrel on a
+// pseudo-terminal through the probe-mandrel plugin (no stand: the test bends the bar), and uploads
+// the 16-bit table over probe protocol 2 with the read-back of its CRC-32C.
 #include <gtest/gtest.h>
 
 #include <QAbstractButton>
@@ -25,6 +26,7 @@
 #include "scripted_prompt.h"
 #include "tests/devices/support/mandrel_on_pty.h"
 #include "ui/app_state.h"
+#include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/kp_wizard.h"
 #include "ui/calibration/probe_capture_page.h"
 #include "ui/calibration/probe_fit_page.h"
@@ -48,15 +50,15 @@ protected:
                 const QString& plugin = QStringLiteral("simulator")) {
         return manager.addDevice(plugin, kind, name, settings);
     }
-    static QStringList names(const std::vector<CalibrationProbe*>& probes) {
+    static QStringList names(const std::vector<DeviceCalibrationProbe*>& probes) {
         QStringList out;
-        for (const CalibrationProbe* p : probes)
+        for (const DeviceCalibrationProbe* p : probes)
             out << p->name();
         return out;
     }
-    static QStringList names(const std::vector<KpDriveSource*>& drives) {
+    static QStringList names(const std::vector<DeviceKpDrive*>& drives) {
         QStringList out;
-        for (KpDriveSource* d : drives)
+        for (DeviceKpDrive* d : drives)
             out << d->name();
         return out;
     }
@@ -73,17 +75,17 @@ TEST_F(CalibrationDevicesTest, OffersTheDevicesProbesAndDrivesAndFollowsTheirCha
     add(devices::DeviceKind::DriveCurrent, QStringLiteral("Cross feed X"));
     manager.openAll();
     CalibrationPage page(context);
-    EXPECT_EQ(names(page.offeredProbes()),
-              (QStringList{QStringLiteral("Simulated probe mandrel"), QStringLiteral("Mandrel A")}));
-    EXPECT_EQ(names(page.offeredDrives()),
-              (QStringList{QStringLiteral("Simulated cross feed"), QStringLiteral("Cross feed X")}));
+    EXPECT_EQ(names(page.offeredProbes()), (QStringList{QStringLiteral("Mandrel A")}));
+    EXPECT_EQ(names(page.offeredDrives()), (QStringList{QStringLiteral("Cross feed X")}));
     // The simulator's mandrel says it has a 16-bit ADC (DEVICE_INFO of probe protocol 2).
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page.offeredProbes()[1]->adcBits().has_value(); }, 3000));
-    EXPECT_EQ(page.offeredProbes()[1]->adcBits(), 16);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page.offeredProbes()[0]->adcBits().has_value(); }, 3000));
+    EXPECT_EQ(page.offeredProbes()[0]->adcBits(), 16);
+    EXPECT_TRUE(page.offeredProbes()[0]->hasJack());  // the simulator's stand
+    EXPECT_TRUE(page.offeredDrives()[0]->hasJack());
 
     page.startProbeCalibration();
     ASSERT_FALSE(page.overviewShown());
-    page.probeSession().points.push_back({10.0, 33000.0, 0});
+    page.probeSession().procedure.typePoint(10.0, 3300.0);
     // A gauge or a CNC output changing leaves the open wizard alone.
     add(devices::DeviceKind::Gauge, QStringLiteral("Micrometer"));
     EXPECT_FALSE(page.overviewShown());
@@ -91,14 +93,13 @@ TEST_F(CalibrationDevicesTest, OffersTheDevicesProbesAndDrivesAndFollowsTheirCha
     add(devices::DeviceKind::Probe, QStringLiteral("Mandrel B"));
     EXPECT_TRUE(page.overviewShown());
     EXPECT_FALSE(page.deviceNotice().isEmpty());
-    EXPECT_EQ(page.probeSession().points.size(), 1u);
-    EXPECT_EQ(page.offeredProbes().size(), 3u);
+    EXPECT_EQ(page.probeSession().procedure.points().size(), 1u);
+    EXPECT_EQ(page.offeredProbes().size(), 2u);
     manager.removeDevice(probe);
-    EXPECT_EQ(names(page.offeredProbes()),
-              (QStringList{QStringLiteral("Simulated probe mandrel"), QStringLiteral("Mandrel B")}));
+    EXPECT_EQ(names(page.offeredProbes()), (QStringList{QStringLiteral("Mandrel B")}));
     page.startProbeCalibration();
     EXPECT_TRUE(page.deviceNotice().isEmpty());
-    EXPECT_EQ(page.probeWizard()->findChild<QComboBox*>(QStringLiteral("probeCombo"))->count(), 2);
+    EXPECT_EQ(page.probeWizard()->findChild<QComboBox*>(QStringLiteral("probeCombo"))->count(), 1);
 }
 
 TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveReadout) {
@@ -108,10 +109,12 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
         bar.name = "Boring bar D60";
         storage::ToolStore(*db).apply({{std::nullopt, bar}}, QStringLiteral("Setup"));
     }
-    // A fast dither (0.2 s, polled every 10 ms) so each load is measured in about a second; the
+    // A fast dither (0.2 s, polled every 10 ms) so each load is measured in a few seconds; the
     // machine's cross feed: friction current ±2 A, the load adds load / 150 N/A (true k_p 150 N/A).
-    const QString id = add(devices::DeviceKind::DriveCurrent, QStringLiteral("Cross feed X"),
-                           {{QStringLiteral("pollMs"), 10}, {QStringLiteral("periodS"), 0.2}});
+    // Not on a stand: the operator applies the loads.
+    const QString id =
+        add(devices::DeviceKind::DriveCurrent, QStringLiteral("Cross feed X"),
+            {{QStringLiteral("pollMs"), 10}, {QStringLiteral("periodS"), 0.2}, {QStringLiteral("stand"), false}});
     double loadN = 0.0;
     manager.device(id)->simulationInputs()->setDriveSource(
         [&loadN](double t) { return devices::oscillatingCrossFeed(t, 0.02, 0.2, 2.0, loadN / 150.0); });
@@ -123,30 +126,25 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
     KpCalibrationWizard* w = page.kpWizard();
     auto* drive = w->findChild<QComboBox*>(QStringLiteral("driveCombo"));
     ASSERT_NE(drive, nullptr);
-    ASSERT_EQ(drive->count(), 2);
-    drive->setCurrentIndex(1);
+    ASSERT_EQ(drive->count(), 1);
     EXPECT_EQ(drive->currentText(), QStringLiteral("Cross feed X"));
     w->setupPage()->setToolChecked(QStringLiteral("T3"), true);
     w->next();
     ASSERT_EQ(w->currentId(), KpCalibrationWizard::LoadsPage);
     KpLoadsPage* loads = w->loadsPage();
     for (double load : {0.0, 300.0, 600.0}) {
-        loadN = load;           // the operator loads the slide,
-        QTest::qWait(500);      // lets it settle (five dither strokes),
-        loads->setLoadN(load);  // and measures
-        ASSERT_TRUE(loads->startMeasurement()) << loads->message().toStdString();
-        // The read-out runs in real time: advance the measurement faster than its timer does.
-        while (loads->measuring()) {
-            QTest::qWait(20);
-            loads->step(0.1);
-        }
+        loadN = load;           // the operator loads the slide
+        loads->setLoadN(load);  // and measures: the procedure lets it settle for a second, then
+        ASSERT_TRUE(loads->startMeasurement()) << loads->message().toStdString();  // averages 12 strokes
+        // The read-out runs in real time; the page's timer takes its samples.
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !loads->measuring(); }, 15000));
         ASSERT_TRUE(loads->message().contains(QStringLiteral("stroke pairs"))) << loads->message().toStdString();
     }
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_devices_kp_loads")));
     w->next();
-    ASSERT_TRUE(page.kpSession().fit.has_value());
+    ASSERT_TRUE(page.kpSession().procedure.fitOutcome().fit.has_value());
     // The injected current gives ΔI = load / 150 exactly; the read-out rounds the current to 0.01 A.
-    EXPECT_NEAR(page.kpSession().fit->kpNPerA, 150.0, 1.5);
+    EXPECT_NEAR(page.kpSession().procedure.fitOutcome().fit->kpNPerA, 150.0, 1.5);
     w->next();
     ASSERT_TRUE(w->savePage()->save());
     storage::Database db(storage::DatabaseConfig::sqlite(context.databasePath));
@@ -165,15 +163,15 @@ TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableTo
     CalibrationPage page(context);
     page.resize(1280, 760);
     page.show();
-    ASSERT_EQ(page.offeredProbes().size(), 2u);
-    CalibrationProbe* mandrel = page.offeredProbes()[1];
+    ASSERT_EQ(page.offeredProbes().size(), 1u);
+    DeviceCalibrationProbe* mandrel = page.offeredProbes()[0];
+    EXPECT_FALSE(mandrel->hasJack());  // a mandrel on a machine: the operator loads the bar
     ASSERT_TRUE(QTest::qWaitFor([&] { return mandrel->port().health().ready() && mandrel->adcBits(); }, 5000));
     EXPECT_EQ(mandrel->adcBits(), 16);
     EXPECT_EQ(mandrel->imageFormat(), core::kTableImageFormat);
 
     page.startProbeCalibration();
     ProbeCalibrationWizard* w = page.probeWizard();
-    w->findChild<QComboBox*>(QStringLiteral("probeCombo"))->setCurrentIndex(1);
     EXPECT_FALSE(w->findChild<QSpinBox*>(QStringLiteral("adcBitsSpin"))->isEnabled());  // the mandrel said 16
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_devices_probe_1_choose")));
     w->next();
@@ -183,9 +181,12 @@ TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableTo
     for (int i = 0; i <= 10; ++i) {
         const double um = -250.0 + 50.0 * i;
         jackMm = um / 1000.0;
-        QTest::qWait(400);  // the live average (200 samples/s) fills with the new load
+        QTest::qWait(200);  // the operator reads the dial indicator
         cp->setReferenceUm(um);
         ASSERT_TRUE(cp->capturePoint()) << cp->message().toStdString();
+        // Hold still, then 50 samples at 200 samples/s; the page's timer takes them.
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !cp->capturing(); }, 5000));
+        ASSERT_TRUE(cp->message().startsWith(QStringLiteral("Point"))) << cp->message().toStdString();
     }
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_devices_probe_2_capture")));
     w->next();
