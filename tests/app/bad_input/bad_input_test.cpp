@@ -1,0 +1,118 @@
+#include <gtest/gtest.h>
+
+#include <QProcess>
+#include <QProcessEnvironment>
+
+#include "cli_test.h"
+
+// Bad input through the real binary (issue 17, "Bad input"): every case used to crash, hang or
+// answer wrongly with exit 0; each must now be refused with exit 2 and one line naming the limit.
+
+namespace {
+
+using tt::test::CliResult;
+using tt::test::expectRefused;
+using tt::test::runTrueturn;
+
+class BadInput : public tt::test::CliTest {
+protected:
+    /// A preset file `name` that takes its sections from `base` (a preset name or path).
+    QString presetBasedOn(const QString& name, const QString& base) {
+        return write(name, QStringLiteral("{\"name\": \"%1\", \"description\": \"test\", \"based_on\": \"%2\"}")
+                               .arg(name, base)
+                               .toUtf8());
+    }
+
+    static QStringList simulate(const QString& preset) {
+        return {QStringLiteral("simulate"), QStringLiteral("--preset"), preset,
+                QStringLiteral("--parts"),  QStringLiteral("100"),      QStringLiteral("--json")};
+    }
+};
+
+TEST_F(BadInput, PresetBasedOnItselfIsRefusedWithTheChain) {
+    const QString self = path(QStringLiteral("self.json"));
+    presetBasedOn(QStringLiteral("self.json"), self);
+    expectRefused(simulate(self), QStringLiteral("based_on: cycle"));
+}
+
+TEST_F(BadInput, TwoPresetsNamingEachOtherAreRefused) {
+    const QString a = path(QStringLiteral("a.json"));
+    const QString b = path(QStringLiteral("b.json"));
+    presetBasedOn(QStringLiteral("a.json"), b);
+    presetBasedOn(QStringLiteral("b.json"), a);
+    expectRefused(simulate(a), QStringLiteral("a.json -> ") + b + QStringLiteral(" -> ") + a);
+}
+
+TEST_F(BadInput, APresetChainDeeperThanTheLimitIsRefused) {
+    // p0 <- p1 <- ... <- p9: ten levels, above the limit of 8 (config/loop_scenario.h).
+    presetBasedOn(QStringLiteral("p0.json"), QStringLiteral("paper-2012"));
+    for (int i = 1; i < 10; ++i)
+        presetBasedOn(QStringLiteral("p%1.json").arg(i), path(QStringLiteral("p%1.json").arg(i - 1)));
+    expectRefused(simulate(path(QStringLiteral("p9.json"))), QStringLiteral("deeper than 8"));
+}
+
+TEST_F(BadInput, AShortPresetChainStillWorks) {
+    presetBasedOn(QStringLiteral("p0.json"), QStringLiteral("paper-2012"));
+    presetBasedOn(QStringLiteral("p1.json"), path(QStringLiteral("p0.json")));
+    const CliResult r = runTrueturn(simulate(path(QStringLiteral("p1.json"))));
+    EXPECT_EQ(r.exitCode, 0) << qPrintable(r.err);
+}
+
+TEST_F(BadInput, AnEndlessInputFileIsRefusedAtTheByteLimit) {
+    // /dev/zero never ends: the reader stops at the limit of 16 MiB (core/common/bounded_input.h).
+    expectRefused({QStringLiteral("fit-profile"), QStringLiteral("/dev/zero")}, QStringLiteral("16777216 bytes"));
+    expectRefused(
+        {QStringLiteral("linearise"), QStringLiteral("/dev/zero"), QStringLiteral("--adc-bits"), QStringLiteral("12")},
+        QStringLiteral("16777216 bytes"));
+}
+
+TEST_F(BadInput, ALineOfCommasIsRefusedAtTheLineLengthLimit) {
+    const QString csv = write(QStringLiteral("commas.csv"), "x_mm,error_mm\n" + QByteArray(100000, ',') + '\n');
+    expectRefused({QStringLiteral("fit-profile"), csv}, QStringLiteral("line 2 is longer than 4096 characters"));
+}
+
+TEST_F(BadInput, TooManyRowsAreRefusedAtTheRowLimit) {
+    QByteArray text = "x_mm,error_mm\n";
+    for (int i = 0; i < 100001; ++i)
+        text += "1,0\n";
+    expectRefused({QStringLiteral("fit-profile"), write(QStringLiteral("rows.csv"), text)},
+                  QStringLiteral("more than 100000 lines"));
+}
+
+TEST_F(BadInput, CommaDecimalsAreRefusedNamingTheLocale) {
+    // "12,5" with a comma separator used to be read as 12 (and the 5 dropped with the rest of the row).
+    const QString csv =
+        write(QStringLiteral("comma.csv"), "reference_um,adc_code\n-300,100\n-212,5,400\n-100,900\n0,2047\n100,3000\n");
+    expectRefused({QStringLiteral("linearise"), csv, QStringLiteral("--adc-bits"), QStringLiteral("12")},
+                  QStringLiteral("C locale"));
+}
+
+TEST_F(BadInput, AnExtraColumnIsRefusedByName) {
+    const QString csv =
+        write(QStringLiteral("extra.csv"), "reference_um,adc_code,temperature_c\n-300,100,20\n0,2047,20\n");
+    expectRefused({QStringLiteral("linearise"), csv, QStringLiteral("--adc-bits"), QStringLiteral("12")},
+                  QStringLiteral("temperature_c"));
+}
+
+TEST_F(BadInput, JsonToAFullDiskIsAFailure) {
+    QByteArray text = "x_mm,error_mm\n";
+    for (int i = 0; i <= 13; ++i)
+        text += QByteArray::number(25.0 * i) + ',' + QByteArray::number(0.001 * i * i) + '\n';
+    const QString csv = write(QStringLiteral("ok.csv"), text);
+    for (const QString& format : {QStringLiteral("--json"), QStringLiteral("--degree")}) {
+        QStringList args{QStringLiteral("fit-profile"), csv};
+        if (format == QStringLiteral("--degree"))
+            args << QStringLiteral("--degree") << QStringLiteral("2");
+        else
+            args << format;
+        QProcess process;
+        process.setStandardOutputFile(QStringLiteral("/dev/full"));
+        process.start(QStringLiteral(TRUETURN_EXE), args);
+        ASSERT_TRUE(process.waitForFinished(60000));
+        EXPECT_EQ(process.exitCode(), 1) << qPrintable(args.join(' '));
+        EXPECT_TRUE(
+            QString::fromUtf8(process.readAllStandardError()).contains(QStringLiteral("cannot write the output")));
+    }
+}
+
+}  // namespace
