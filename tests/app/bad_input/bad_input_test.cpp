@@ -94,6 +94,18 @@ TEST_F(BadInput, AnExtraColumnIsRefusedByName) {
                   QStringLiteral("temperature_c"));
 }
 
+TEST_F(BadInput, ProfileValuesOutsideTheirRangeAreRefused) {
+    // Near 1e308 the degree-1 and degree-2 fits overflowed to inf/NaN standard errors and left with exit 0.
+    const QString huge = write(QStringLiteral("huge.csv"), "x_mm,error_mm\n0,1e300\n1,-1e300\n2,1.7e300\n3,-1e300\n");
+    for (const QString& degree : {QStringLiteral("1"), QStringLiteral("2")})
+        expectRefused(
+            {QStringLiteral("fit-profile"), huge, QStringLiteral("--degree"), degree, QStringLiteral("--json")},
+            QStringLiteral("outside -100 .. 100 mm"));
+    const QString far = write(QStringLiteral("far.csv"), "x_mm,error_mm\n0,0.01\n1e300,0.02\n2e300,0.01\n");
+    expectRefused({QStringLiteral("fit-profile"), far, QStringLiteral("--degree"), QStringLiteral("1")},
+                  QStringLiteral("outside -100000 .. 100000 mm"));
+}
+
 TEST_F(BadInput, JsonToAFullDiskIsAFailure) {
     QByteArray text = "x_mm,error_mm\n";
     for (int i = 0; i <= 13; ++i)
