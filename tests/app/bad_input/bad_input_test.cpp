@@ -58,6 +58,19 @@ TEST_F(BadInput, AShortPresetChainStillWorks) {
     EXPECT_EQ(r.exitCode, 0) << qPrintable(r.err);
 }
 
+TEST_F(BadInput, ADisturbanceOfAThousandComponentsIsRefusedAtTheModelLimit) {
+    // 1000 first-order components made a 1000-state model per point, and the run never finished.
+    QByteArray components;
+    for (int i = 0; i < 1000; ++i)
+        components += QByteArray(i == 0 ? "" : ",") + R"({"type": "ar1", "pole": 0.5, "variance_mm2": 1e-5})";
+    const QString preset = write(QStringLiteral("order.json"),
+                                 R"({"name": "order", "description": "test", "based_on": "paper-2012", "plant": {)"
+                                 R"("part_length_mm": 325, "gain": 2, "gauge_noise_variance_mm2": 2.5e-7, )"
+                                 R"("disturbance": [)" +
+                                     components + "]}}");
+    expectRefused(simulate(preset), QStringLiteral("1000 components; the limit is 8"));
+}
+
 TEST_F(BadInput, AnEndlessInputFileIsRefusedAtTheByteLimit) {
     // /dev/zero never ends: the reader stops at the limit of 16 MiB (core/common/bounded_input.h).
     expectRefused({QStringLiteral("fit-profile"), QStringLiteral("/dev/zero")}, QStringLiteral("16777216 bytes"));
