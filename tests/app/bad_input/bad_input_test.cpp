@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QProcessEnvironment>
 
@@ -69,6 +72,22 @@ TEST_F(BadInput, ADisturbanceOfAThousandComponentsIsRefusedAtTheModelLimit) {
                                  R"("disturbance": [)" +
                                      components + "]}}");
     expectRefused(simulate(preset), QStringLiteral("1000 components; the limit is 8"));
+}
+
+TEST_F(BadInput, ABoringPassOfTrillionsOfStepsIsRefusedBeforeItStarts) {
+    // Every value in range, but 5000 mm at 0.01 mm/rev and 1 rpm in 0.01 ms steps is 3e12 steps.
+    QFile file(QStringLiteral(TRUETURN_SOURCE_DIR "/resources/presets/heavy-boring.json"));
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    QJsonObject preset = QJsonDocument::fromJson(file.readAll()).object();
+    QJsonObject cut = preset.value(QStringLiteral("cut")).toObject();
+    cut.insert(QStringLiteral("bore_length_mm"), 5000);
+    cut.insert(QStringLiteral("feed_mm_per_rev"), 0.01);
+    cut.insert(QStringLiteral("spindle_rpm"), 1);
+    preset.insert(QStringLiteral("cut"), cut);
+    preset.insert(QStringLiteral("simulation"), QJsonObject{{QStringLiteral("step_ms"), 0.01}});
+    const QString path = write(QStringLiteral("slow.json"), QJsonDocument(preset).toJson());
+    expectRefused({QStringLiteral("boring"), QStringLiteral("--preset"), path, QStringLiteral("--json")},
+                  QStringLiteral("the limit is 7200 s"));
 }
 
 TEST_F(BadInput, AnEndlessInputFileIsRefusedAtTheByteLimit) {
