@@ -10,7 +10,7 @@
 namespace tt::cli {
 
 /// The whole input file `path` a command reads (CSV, JSON) within `limits` (core/common/bounded_input.h:
-/// tables 16 MiB, 100000 lines of at most 4096 characters; documents 16 MiB); throws UsageError
+/// tables 16 MiB, 1000000 lines of at most 4096 characters; documents 16 MiB); throws UsageError
 /// "<path>: cannot read: <reason>" or "<path>: is larger than the limit of ... bytes" (exit 2).
 QByteArray readInputFile(const QString& path, const core::InputLimits& limits = core::kTableLimits);
 

@@ -11,7 +11,7 @@ namespace tt::core {
 /// A line of at most maxLineLength characters also bounds the columns of a table to that number.
 struct InputLimits {
     std::size_t maxBytes = 16u * 1024u * 1024u;  ///< the whole file, bytes
-    std::size_t maxLines = 100000;               ///< lines (rows, header and comments included); 0: no check
+    std::size_t maxLines = 1000000;              ///< lines (rows, header and comments included); 0: no check
     std::size_t maxLineLength = 4096;            ///< characters of one line, '\n' excluded; 0: no check
 };
 
