@@ -1,5 +1,7 @@
 #include "config/profile_csv.h"
 
+#include "core/common/text_format.h"
+
 #include <QList>
 #include <QString>
 #include <cmath>
@@ -57,7 +59,9 @@ ProfileSamples parseProfileCsv(const QByteArray& text) {
         }
         if (fields.size() < 2) throw lineError(lineNumber, QStringLiteral("missing the error_mm column"));
         if (fields.size() > 2)
-            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 2 (x_mm,error_mm)").arg(fields.size()));
+            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 2 (x_mm,error_mm)%2")
+                                            .arg(fields.size())
+                                            .arg(QLatin1String(core::kCLocaleNote)));
         x.push_back(parseField(fields.at(0), "x_mm", lineNumber, kMaxAbsXMm));
         error.push_back(parseField(fields.at(1), "error_mm", lineNumber, kMaxAbsErrorMm));
     }

@@ -1,5 +1,7 @@
 #include "core/calibration/calibration_csv.h"
 
+#include "core/common/text_format.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -12,7 +14,7 @@ namespace tt::core {
 namespace {
 
 /// Why "12,5" is refused: numbers are read in the C locale only.
-const std::string kCommaDecimal = " (numbers are read in the C locale: the decimal point is '.', not ',')";
+const std::string kCommaDecimal = kCLocaleNote;
 
 /// Refuses a header column other than reference_um and adc_code (it would be silently ignored).
 void requireKnownColumns(const std::vector<std::string_view>& names, std::size_t line) {

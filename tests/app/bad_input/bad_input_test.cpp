@@ -119,6 +119,14 @@ TEST_F(BadInput, CommaDecimalsAreRefusedNamingTheLocale) {
                   QStringLiteral("C locale"));
 }
 
+TEST_F(BadInput, CommaDecimalsInAProfileAreRefusedNamingTheLocale) {
+    const QString csv = write(QStringLiteral("comma_profile.csv"), "x_mm,error_mm\n0,5,0,01\n1,5,0,02\n");
+    expectRefused({QStringLiteral("fit-profile"), csv}, QStringLiteral("C locale"));
+    const QString experiment =
+        write(QStringLiteral("comma_experiment.csv"), "a_mm,f_mm_rev,z_mm,y_um\n0,5,0,1,10,12,5\n");
+    expectRefused({QStringLiteral("fit-deformation"), experiment}, QStringLiteral("C locale"));
+}
+
 TEST_F(BadInput, AnExtraColumnIsRefusedByName) {
     const QString csv =
         write(QStringLiteral("extra.csv"), "reference_um,adc_code,temperature_c\n-300,100,20\n0,2047,20\n");
