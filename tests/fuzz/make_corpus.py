@@ -114,4 +114,19 @@ write("config_csv", "profile_comma_decimal", b"\x00x_mm,error_mm\n0,5,0,01\n")
 write("config_csv", "deformation", b"\x01# preset: feed-scheduling\n# seed: 7\na_mm,f_mm_rev,z_mm,y_um\n"
       b"0.5,0.1,10,12.5\n1.0,0.2,20,30.1\n")
 write("config_csv", "deformation_bad", b"\x01a_mm,f_mm_rev,z_mm,y_um\n0.5,0.1,10\nnan,1,2,3\n")
+# --- preset_json (even first byte: run-to-run plant and controller; odd: boring scenario) -------
+def preset_file(name: str) -> bytes:
+    with open(os.path.join(HERE, "..", "..", "resources", "presets", name + ".json"), "rb") as f:
+        return f.read()
+
+
+write("preset_json", "paper_2012", b"\x00" + preset_file("paper-2012"))
+write("preset_json", "paper_2012_filter", b"\x00" + preset_file("paper-2012-filter"))
+write("preset_json", "heavy_boring", b"\x01" + preset_file("heavy-boring"))
+write("preset_json", "many_components", b"\x00" + b'{"plant": {"part_length_mm": 325, "gain": 2, '
+      b'"gauge_noise_variance_mm2": 2.5e-7, "disturbance": [' + b",".join([b'{"type": "ar1", "pole": 0.5, '
+      b'"variance_mm2": 1e-5}'] * 20) + b"]}}")
+write("preset_json", "boring_slow", b"\x01" + b'{"tool": {"id": "t", "section": "round", "diameter_mm": 40, '
+      b'"overhang_mm": 200}, "cut": {"bore_length_mm": 5000, "feed_mm_per_rev": 0.01, "spindle_rpm": 1}}')
+
 print("corpora written under", os.path.join(HERE, "corpus"))
