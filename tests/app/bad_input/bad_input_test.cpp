@@ -54,6 +54,24 @@ TEST_F(BadInput, APresetChainDeeperThanTheLimitIsRefused) {
     expectRefused(simulate(path(QStringLiteral("p9.json"))), QStringLiteral("deeper than 8"));
 }
 
+TEST_F(BadInput, AResumedRunWhosePresetBecameACycleIsRefused) {
+    // The run keeps its preset's path; the file is then changed to name itself, and the run resumed.
+    const QString preset = path(QStringLiteral("resumed.json"));
+    presetBasedOn(QStringLiteral("resumed.json"), QStringLiteral("paper-2012"));
+    const QString db = path(QStringLiteral("history.db"));
+    QStringList args = simulate(preset);
+    args << QStringLiteral("--db") << db;
+    const CliResult first = runTrueturn(args);
+    ASSERT_EQ(first.exitCode, 0) << qPrintable(first.err);
+    QProcess sqlite;  // an interrupted run: the history says it is still running
+    sqlite.start(QStringLiteral("sqlite3"), {db, QStringLiteral("UPDATE runs SET status = 'running'")});
+    ASSERT_TRUE(sqlite.waitForFinished(30000));
+    ASSERT_EQ(sqlite.exitCode(), 0);
+    presetBasedOn(QStringLiteral("resumed.json"), preset);
+    expectRefused({QStringLiteral("simulate"), QStringLiteral("--resume"), QStringLiteral("--db"), db},
+                  QStringLiteral("based_on: cycle"));
+}
+
 TEST_F(BadInput, AShortPresetChainStillWorks) {
     presetBasedOn(QStringLiteral("p0.json"), QStringLiteral("paper-2012"));
     presetBasedOn(QStringLiteral("p1.json"), path(QStringLiteral("p0.json")));
