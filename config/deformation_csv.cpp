@@ -1,5 +1,7 @@
 #include "config/deformation_csv.h"
 
+#include "core/common/text_format.h"
+
 #include <QString>
 #include <QStringList>
 #include <array>
@@ -79,7 +81,9 @@ DeformationCsv parseDeformationCsv(const QByteArray& text) {
             continue;
         }
         if (fields.size() != 4)
-            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 4 (%2)").arg(fields.size()).arg(kHeader));
+            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 4 (%2)%3")
+                                            .arg(fields.size())
+                                            .arg(kHeader, QLatin1String(core::kCLocaleNote)));
         if (columns[0].size() >= static_cast<std::size_t>(kMaxRows))
             throw lineError(lineNumber, QStringLiteral("more than %1 rows").arg(kMaxRows));
         for (std::size_t c = 0; c < 4; ++c)

@@ -1,5 +1,7 @@
 #include "config/loop_scenario.h"
 
+#include <QFileInfo>
+#include <QStringList>
 #include <stdexcept>
 
 #include "config/json_section.h"
@@ -12,11 +14,32 @@ namespace tt::config {
 
 namespace {
 
-QJsonObject withBase(const QJsonObject& preset) {
+/// What identifies a preset in a based_on chain: a file by its canonical path, a built-in one by name.
+QString presetIdentity(const QString& nameOrPath) {
+    if (!nameOrPath.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) return nameOrPath;
+    const QString canonical = QFileInfo(nameOrPath).canonicalFilePath();
+    return canonical.isEmpty() ? nameOrPath : canonical;
+}
+
+std::string chainText(const QStringList& chain) {
+    return chain.join(QStringLiteral(" -> ")).toStdString();
+}
+
+/// `preset` (loaded as chain.back()) with the sections of its based_on chain merged in; refuses a
+/// cycle and a chain of more than kMaxBasedOnDepth links, naming the chain.
+QJsonObject withBase(const QJsonObject& preset, QStringList& chain, QStringList& identities) {
     const QJsonValue base = preset.value(QStringLiteral("based_on"));
     if (base.isUndefined()) return preset;
     if (!base.isString()) throw std::invalid_argument("based_on: must be the name of a preset");
-    const QJsonObject parent = withBase(PresetLibrary::load(base.toString()));
+    const QString baseName = base.toString();
+    chain << baseName;
+    if (identities.contains(presetIdentity(baseName)))
+        throw std::invalid_argument("based_on: cycle " + chainText(chain));
+    if (chain.size() - 1 > kMaxBasedOnDepth)
+        throw std::invalid_argument("based_on: the chain " + chainText(chain) + " is deeper than " +
+                                    std::to_string(kMaxBasedOnDepth) + " levels");
+    identities << presetIdentity(baseName);
+    const QJsonObject parent = withBase(PresetLibrary::load(baseName), chain, identities);
     QJsonObject merged = preset;
     for (auto it = parent.begin(); it != parent.end(); ++it)
         if (!merged.contains(it.key())) merged.insert(it.key(), it.value());
@@ -26,7 +49,9 @@ QJsonObject withBase(const QJsonObject& preset) {
 LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<int> delay) {
     LoopScenario s;
     s.preset = name;
-    s.json = withBase(preset);
+    QStringList chain{name};
+    QStringList identities{presetIdentity(name)};
+    s.json = withBase(preset, chain, identities);
     s.control = runToRunSetupFromPreset(s.json, delay);
     const QJsonValue lathe = s.json.value(QStringLiteral("lathe"));
     if (!lathe.isUndefined()) {

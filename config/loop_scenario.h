@@ -22,6 +22,10 @@ struct LoopScenario : core::ShaftScenario {
     QJsonObject json;  ///< the preset with the sections of its base merged in
 };
 
+/// The most based_on links from a preset to the end of its chain; a longer chain, or one that comes
+/// back to a preset it passed, is refused with the chain in the message.
+inline constexpr int kMaxBasedOnDepth = 8;
+
 /// Loads `nameOrPath` (PresetLibrary::load, then "based_on") and reads it; `delay` overrides the
 /// plant's. Throws std::invalid_argument naming the preset and the field.
 LoopScenario loadLoopScenario(const QString& nameOrPath, std::optional<int> delay = std::nullopt);

@@ -241,11 +241,19 @@ void controllerAt(const QJsonObject& c, core::RunToRunSetup& setup) {
 core::DisturbanceModel disturbanceFromJson(const QJsonValue& value, const QString& where) {
     if (!value.isArray() || value.toArray().isEmpty())
         throw fieldError(where, "must be a non-empty array of disturbance components");
-    std::vector<DisturbanceComponent> components;
     const QJsonArray a = value.toArray();
+    if (a.size() > kMaxDisturbanceComponents)
+        throw fieldError(where, "has " + std::to_string(a.size()) + " components; the limit is " +
+                                    std::to_string(kMaxDisturbanceComponents));
+    std::vector<DisturbanceComponent> components;
     for (qsizetype i = 0; i < a.size(); ++i)
         components.push_back(componentAt(a.at(i), item(where, i)));
-    return DisturbanceModel(std::move(components));
+    DisturbanceModel model(std::move(components));
+    const Eigen::Index order = model.realise().A.rows();
+    if (order > kMaxDisturbanceOrder)
+        throw fieldError(where, "the model order " + std::to_string(order) + " is above the limit of " +
+                                    std::to_string(kMaxDisturbanceOrder) + " states per control point");
+    return model;
 }
 
 core::RunToRunSetup runToRunSetupFromPreset(const QJsonObject& preset, std::optional<int> delay) {

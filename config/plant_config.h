@@ -42,7 +42,13 @@ core::RunToRunSetup runToRunSetupFromPreset(const QJsonObject& preset, std::opti
 /// Errors name the preset: "preset 'paper-2012': plant.delay: ...".
 core::RunToRunSetup loadRunToRunSetup(const QString& nameOrPath, std::optional<int> delay = std::nullopt);
 
-/// One disturbance model (an array of components) at `where` (for messages).
+/// The most components of one disturbance model (a preset with 1000 of them never finished).
+inline constexpr int kMaxDisturbanceComponents = 8;
+/// The highest order (states per control point) of one disturbance model.
+inline constexpr int kMaxDisturbanceOrder = 12;
+
+/// One disturbance model (an array of components, at most kMaxDisturbanceComponents of total order at
+/// most kMaxDisturbanceOrder) at `where` (for messages).
 core::DisturbanceModel disturbanceFromJson(const QJsonValue& value, const QString& where);
 
 }  // namespace tt::config

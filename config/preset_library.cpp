@@ -7,19 +7,34 @@
 #include <QJsonParseError>
 #include <stdexcept>
 
+#include "core/common/bounded_input.h"
+
 namespace tt::config {
 
 namespace {
 
 const QString kPresetFolder = QStringLiteral(":/presets");
 
+/// The bytes of a built-in preset (a Qt resource) or of a preset file (at most kDocumentLimits).
+QByteArray presetBytes(const QString& path, const QString& shownName) {
+    if (path.startsWith(QStringLiteral(":/"))) {
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly))
+            throw std::invalid_argument("cannot open preset '" + shownName.toStdString() +
+                                        "': " + file.errorString().toStdString());
+        return file.readAll();
+    }
+    try {
+        const std::string text = core::readBoundedFile(QFile::encodeName(path).toStdString(), core::kDocumentLimits);
+        return QByteArray(text.data(), static_cast<qsizetype>(text.size()));
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("preset '" + shownName.toStdString() + "': " + e.what());
+    }
+}
+
 QJsonObject parseFile(const QString& path, const QString& shownName) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw std::invalid_argument("cannot open preset '" + shownName.toStdString() +
-                                    "': " + file.errorString().toStdString());
     QJsonParseError error{};
-    const QJsonDocument doc = QJsonDocument::fromJson(file.readAll(), &error);
+    const QJsonDocument doc = QJsonDocument::fromJson(presetBytes(path, shownName), &error);
     if (error.error != QJsonParseError::NoError)
         throw std::invalid_argument("preset '" + shownName.toStdString() + "' is not valid JSON at byte " +
                                     std::to_string(error.offset) + ": " + error.errorString().toStdString());

@@ -1,5 +1,7 @@
 #include "config/profile_csv.h"
 
+#include "core/common/text_format.h"
+
 #include <QList>
 #include <QString>
 #include <cmath>
@@ -15,7 +17,7 @@ std::invalid_argument lineError(int line, const QString& why) {
     return std::invalid_argument("line " + std::to_string(line) + ": " + why.toStdString());
 }
 
-double parseField(const QString& field, const char* column, int line) {
+double parseField(const QString& field, const char* column, int line, double limitMm) {
     if (field.isEmpty()) throw lineError(line, QStringLiteral("the %1 value is empty").arg(QLatin1String(column)));
     bool ok = false;
     const double v = field.toDouble(&ok);
@@ -24,6 +26,11 @@ double parseField(const QString& field, const char* column, int line) {
     if (!std::isfinite(v))
         throw lineError(line,
                         QStringLiteral("%1 '%2' is not a finite number").arg(QLatin1String(column), field.left(40)));
+    if (std::abs(v) > limitMm)
+        throw lineError(line, QStringLiteral("%1 '%2' is outside %3 .. %4 mm")
+                                  .arg(QLatin1String(column), field.left(40))
+                                  .arg(-limitMm, 0, 'g', 17)
+                                  .arg(limitMm, 0, 'g', 17));
     return v;
 }
 
@@ -52,9 +59,11 @@ ProfileSamples parseProfileCsv(const QByteArray& text) {
         }
         if (fields.size() < 2) throw lineError(lineNumber, QStringLiteral("missing the error_mm column"));
         if (fields.size() > 2)
-            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 2 (x_mm,error_mm)").arg(fields.size()));
-        x.push_back(parseField(fields.at(0), "x_mm", lineNumber));
-        error.push_back(parseField(fields.at(1), "error_mm", lineNumber));
+            throw lineError(lineNumber, QStringLiteral("%1 columns, expected 2 (x_mm,error_mm)%2")
+                                            .arg(fields.size())
+                                            .arg(QLatin1String(core::kCLocaleNote)));
+        x.push_back(parseField(fields.at(0), "x_mm", lineNumber, kMaxAbsXMm));
+        error.push_back(parseField(fields.at(1), "error_mm", lineNumber, kMaxAbsErrorMm));
     }
     if (!headerSeen) throw std::invalid_argument("line 1: the file is empty; expected the header 'x_mm,error_mm'");
     if (x.empty()) throw std::invalid_argument("no data rows after the header 'x_mm,error_mm'");

@@ -210,7 +210,7 @@ int runWork(const QStringList& arguments) {
     if (parser.isSet(QStringLiteral("net"))) {
         const QString path = parser.required(QStringLiteral("net"));
         try {
-            file = config::cornerNetFromBytes(readInputFile(path));
+            file = config::cornerNetFromBytes(readInputFile(path, core::kDocumentLimits));
         } catch (const std::invalid_argument& e) {
             throw inputError(path, e.what());
         }

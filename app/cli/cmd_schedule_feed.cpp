@@ -22,7 +22,7 @@ namespace {
 
 config::DeformationModelFile loadModel(const QString& path) {
     try {
-        const QJsonDocument doc = QJsonDocument::fromJson(readInputFile(path));
+        const QJsonDocument doc = QJsonDocument::fromJson(readInputFile(path, core::kDocumentLimits));
         if (!doc.isObject()) throw std::invalid_argument("not a JSON object (write it with fit-deformation --json)");
         return config::deformationModelFromJson(doc.object());
     } catch (const std::invalid_argument& e) {

@@ -5,11 +5,13 @@
 
 namespace tt::cli {
 
-QByteArray readInputFile(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        throw UsageError(QStringLiteral("cannot read %1: %2").arg(path, file.errorString()).toStdString());
-    return file.readAll();
+QByteArray readInputFile(const QString& path, const core::InputLimits& limits) {
+    try {
+        const std::string text = core::readBoundedFile(QFile::encodeName(path).toStdString(), limits);
+        return QByteArray(text.data(), static_cast<qsizetype>(text.size()));
+    } catch (const std::invalid_argument& e) {
+        throw inputError(path, e.what());
+    }
 }
 
 void writeOutputFile(const QString& path, const QByteArray& bytes) {

@@ -1,8 +1,13 @@
 #include "app/cli/command_parser.h"
 
+#include <QJsonArray>
 #include <QJsonDocument>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "app/cli/command.h"
 
@@ -94,13 +99,42 @@ QStringList CommandParser::positionals(int count) const {
     return args.mid(0, count);
 }
 
+namespace {
+
+/// Throws when stdout did not take everything written so far (a full disk, a closed pipe).
+void flushStdout() {
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+        throw std::runtime_error(std::string("cannot write the output: ") + std::strerror(errno));
+}
+
+/// Throws naming the first number in `value` that is NaN or infinite (JSON would print it as null).
+void requireFinite(const QJsonValue& value, const QString& where) {
+    if (value.isDouble() && !std::isfinite(value.toDouble()))
+        throw std::runtime_error("the result " + where.toStdString() + " is not a finite number");
+    if (value.isArray()) {
+        const QJsonArray array = value.toArray();
+        for (qsizetype i = 0; i < array.size(); ++i)
+            requireFinite(array.at(i), QStringLiteral("%1[%2]").arg(where).arg(i));
+    }
+    if (value.isObject()) {
+        const QJsonObject object = value.toObject();
+        for (auto it = object.begin(); it != object.end(); ++it)
+            requireFinite(it.value(), where.isEmpty() ? it.key() : where + QLatin1Char('.') + it.key());
+    }
+}
+
+}  // namespace
+
 void printJson(const QJsonObject& object) {
+    requireFinite(object, QString());
     std::fputs(QJsonDocument(object).toJson(QJsonDocument::Indented).constData(), stdout);
+    flushStdout();
 }
 
 void printLine(const QString& line) {
     std::fputs(qPrintable(line), stdout);
     std::fputc('\n', stdout);
+    flushStdout();
 }
 
 }  // namespace tt::cli

@@ -53,9 +53,10 @@ private:
     QStringList m_positionalNames;
 };
 
-/// Writes `object` as indented JSON on stdout.
+/// Writes `object` as indented JSON on stdout and flushes it; throws std::runtime_error (exit 1)
+/// when the output cannot be written (a full disk) or a number in it is NaN or infinite.
 void printJson(const QJsonObject& object);
-/// Writes a line on stdout.
+/// Writes a line on stdout and flushes it; throws std::runtime_error when it cannot be written.
 void printLine(const QString& line);
 
 }  // namespace tt::cli

@@ -1,13 +1,28 @@
 #include "core/calibration/calibration_csv.h"
 
+#include "core/common/text_format.h"
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 namespace tt::core {
 
 namespace {
+
+/// Why "12,5" is refused: numbers are read in the C locale only.
+const std::string kCommaDecimal = kCLocaleNote;
+
+/// Refuses a header column other than reference_um and adc_code (it would be silently ignored).
+void requireKnownColumns(const std::vector<std::string_view>& names, std::size_t line) {
+    for (std::string_view name : names)
+        if (name != "reference_um" && name != "adc_code")
+            throw std::invalid_argument("line " + std::to_string(line) + ": unknown column '" + std::string(name) +
+                                        "'; a calibration file has only the columns reference_um and adc_code");
+}
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
@@ -29,7 +44,7 @@ std::vector<std::string_view> split(std::string_view line, char separator) {
     return fields;
 }
 
-double parseNumber(std::string_view field, int line, const char* column) {
+double parseNumber(std::string_view field, std::size_t line, const char* column) {
     double value = 0.0;
     const char* first = field.data();
     const char* last = field.data() + field.size();
@@ -37,7 +52,8 @@ double parseNumber(std::string_view field, int line, const char* column) {
     const auto [ptr, ec] = std::from_chars(first, last, value);
     if (field.empty() || ec != std::errc() || ptr != last || !std::isfinite(value))
         throw std::invalid_argument("line " + std::to_string(line) + ": " + column + " '" + std::string(field) +
-                                    "' is not a number");
+                                    "' is not a number" +
+                                    (field.find(',') != std::string_view::npos ? kCommaDecimal : ""));
     return value;
 }
 
@@ -45,7 +61,8 @@ double parseNumber(std::string_view field, int line, const char* column) {
 
 std::vector<CalibrationPoint> parseCalibrationCsv(std::string_view text) {
     std::vector<CalibrationPoint> points;
-    int lineNumber = 0;
+    std::size_t lineNumber = 0;
+    std::size_t columns = 0;
     int referenceColumn = -1;
     int codeColumn = -1;
     char separator = ',';
@@ -71,17 +88,23 @@ std::vector<CalibrationPoint> parseCalibrationCsv(std::string_view text) {
                 throw std::invalid_argument("line " + std::to_string(lineNumber) +
                                             ": the header must name the columns reference_um and adc_code, got '" +
                                             std::string(line) + "'");
+            requireKnownColumns(names, lineNumber);
+            columns = names.size();
             continue;
         }
         const std::vector<std::string_view> fields = split(line, separator);
         const std::size_t needed = static_cast<std::size_t>(std::max(referenceColumn, codeColumn)) + 1;
+        if (fields.size() > columns)
+            throw std::invalid_argument("line " + std::to_string(lineNumber) + ": " + std::to_string(fields.size()) +
+                                        " fields, the header names " + std::to_string(columns) +
+                                        (separator == ',' ? kCommaDecimal : std::string()));
         if (fields.size() < needed)
             throw std::invalid_argument("line " + std::to_string(lineNumber) + ": expected " + std::to_string(needed) +
                                         " columns, got " + std::to_string(fields.size()));
         CalibrationPoint p;
         p.referenceUm = parseNumber(fields[static_cast<std::size_t>(referenceColumn)], lineNumber, "reference_um");
         p.adcCode = parseNumber(fields[static_cast<std::size_t>(codeColumn)], lineNumber, "adc_code");
-        p.line = lineNumber;
+        p.line = static_cast<int>(std::min<std::size_t>(lineNumber, std::numeric_limits<int>::max()));
         points.push_back(p);
     }
     if (referenceColumn < 0) throw std::invalid_argument("the file is empty: expected a header reference_um,adc_code");

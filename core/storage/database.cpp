@@ -1,5 +1,6 @@
 #include "core/storage/database.h"
 
+#include "core/storage/sqlite_identity.h"
 #include "core/storage/storage_log.h"
 
 #include <QDateTime>
@@ -73,6 +74,7 @@ void Database::openSqlite() {
     const QFileInfo file(m_config.sqlitePath);
     if (file.exists() && !file.isWritable())
         throw StorageError("the history file '" + m_config.sqlitePath.toStdString() + "' is read-only");
+    requireTrueTurnSqliteFile(m_config.sqlitePath);
     QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_connectionName);
     db.setDatabaseName(m_config.sqlitePath);
     if (!db.open())

@@ -16,6 +16,16 @@ namespace tt::storage {
 
 namespace {
 
+/// Refuses a resume point that is not one of the run's stored parts (a history altered outside
+/// TrueTurn), before any arithmetic on it can overflow.
+void requireStoredPart(const core::RunSummary& run, std::int64_t lastPart) {
+    const std::int64_t newest = run.lastPartNumber.value_or(0);
+    if (lastPart < 0 || lastPart > newest)
+        throw StorageError("run " + std::to_string(run.runId) + ": the stored resume point (last part " +
+                           std::to_string(lastPart) + ") is outside the run's parts 0 .. " + std::to_string(newest) +
+                           "; the history file was altered");
+}
+
 QString text(const std::string& s) {
     return QString::fromStdString(s);
 }
@@ -333,6 +343,7 @@ std::optional<core::ResumePoint> SqlHistoryStore::resumePoint(std::optional<std:
     core::ResumePoint point;
     point.run = *summary;
     point.lastPartNumber = q.value(0).toLongLong();
+    requireStoredPart(*summary, point.lastPartNumber);
     point.controllerState.kind = q.value(1).toString().toStdString();
     point.controllerState.values = decodeControllerValues(q.value(2).toString().toStdString());
     q.finish();

@@ -101,4 +101,32 @@ write("modbus_registers", "float_25", bytes([4, 0, 0]) + struct.pack(">HH", 0x41
 write("modbus_registers", "float_nan", bytes([4, 0, 0]) + struct.pack(">HH", 0x7FC0, 0x0000))
 write("modbus_registers", "float_huge_scale", bytes([4, 0, 6]) + struct.pack(">HH", 0x7F7F, 0xFFFF))
 write("modbus_registers", "map", bytes([2, 7, 1]) + bytes([1, 0, 10, 0, 1, 0, 12, 4, 1, 0, 200, 2, 0, 0xFF, 0xFF, 2]))
+# --- bounded_input (max lines % 16, max line length % 64, max bytes, then the text) -----------
+write("bounded_input", "within", bytes([4, 20, 200]) + b"x_mm,error_mm\n0,0.01\n1,0.02\n")
+write("bounded_input", "long_line", bytes([4, 8, 200]) + b"," * 40 + b"\n")
+write("bounded_input", "many_lines", bytes([2, 8, 200]) + b"1\n2\n3\n4\n")
+write("bounded_input", "no_limits", bytes([0, 0, 0]) + b"\n\n\r\n")
+
+# --- config_csv (even first byte: profile CSV; odd: deformation experiment CSV) ---------------
+write("config_csv", "profile", b"\x00\xef\xbb\xbfx_mm,error_mm\r\n# part 1\r\n0,0.071\r\n25,0.1\r\n50,0.13\r\n")
+write("config_csv", "profile_huge", b"\x00x_mm,error_mm\n0,1e308\n1e300,-1e308\n")
+write("config_csv", "profile_comma_decimal", b"\x00x_mm,error_mm\n0,5,0,01\n")
+write("config_csv", "deformation", b"\x01# preset: feed-scheduling\n# seed: 7\na_mm,f_mm_rev,z_mm,y_um\n"
+      b"0.5,0.1,10,12.5\n1.0,0.2,20,30.1\n")
+write("config_csv", "deformation_bad", b"\x01a_mm,f_mm_rev,z_mm,y_um\n0.5,0.1,10\nnan,1,2,3\n")
+# --- preset_json (even first byte: run-to-run plant and controller; odd: boring scenario) -------
+def preset_file(name: str) -> bytes:
+    with open(os.path.join(HERE, "..", "..", "resources", "presets", name + ".json"), "rb") as f:
+        return f.read()
+
+
+write("preset_json", "paper_2012", b"\x00" + preset_file("paper-2012"))
+write("preset_json", "paper_2012_filter", b"\x00" + preset_file("paper-2012-filter"))
+write("preset_json", "heavy_boring", b"\x01" + preset_file("heavy-boring"))
+write("preset_json", "many_components", b"\x00" + b'{"plant": {"part_length_mm": 325, "gain": 2, '
+      b'"gauge_noise_variance_mm2": 2.5e-7, "disturbance": [' + b",".join([b'{"type": "ar1", "pole": 0.5, '
+      b'"variance_mm2": 1e-5}'] * 20) + b"]}}")
+write("preset_json", "boring_slow", b"\x01" + b'{"tool": {"id": "t", "section": "round", "diameter_mm": 40, '
+      b'"overhang_mm": 200}, "cut": {"bore_length_mm": 5000, "feed_mm_per_rev": 0.01, "spindle_rpm": 1}}')
+
 print("corpora written under", os.path.join(HERE, "corpus"))

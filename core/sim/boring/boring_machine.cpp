@@ -1,5 +1,7 @@
 #include "core/sim/boring/boring_machine.h"
 
+#include "core/common/text_format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +16,22 @@ void requireWithin(double v, double lo, double hi, const std::string& what) {
     if (!std::isfinite(v) || v < lo || v > hi)
         throw std::invalid_argument(what + ": " + std::to_string(v) + " is outside " + std::to_string(lo) + " .. " +
                                     std::to_string(hi));
+}
+
+/// Refuses a pass that would take longer than kMaxBoringPassS of simulated time or more than
+/// kMaxBoringSteps simulation steps (every value in range can still ask for 3e12 steps).
+void requireBoundedPass(const BoringScenario& s) {
+    const double feedMmPerS = s.cut.feedMmPerRev * s.cut.spindleRpm / 60.0;
+    const double passS = (s.cut.approachMm + s.cut.boreLengthMm) / feedMmPerS;
+    if (passS > kMaxBoringPassS)
+        throw std::invalid_argument("the pass takes " + formatSignificant(passS, 3) +
+                                    " s of simulated time (approach and bore at feed x spindle speed); the limit is " +
+                                    formatSignificant(kMaxBoringPassS, 6) + " s");
+    const double steps = passS / s.simStepS;
+    if (steps > kMaxBoringSteps)
+        throw std::invalid_argument("the pass needs " + formatSignificant(steps, 3) +
+                                    " simulation steps; the limit is " + formatSignificant(kMaxBoringSteps, 6) +
+                                    " (a longer simulation step or a shorter bore)");
 }
 
 }  // namespace
@@ -39,6 +57,7 @@ void validateScenario(const BoringScenario& s) {
     requireWithin(s.plcCycleS, 0.01, 0.1, "PLC cycle (s)");
     requireWithin(s.simStepS, 1.0e-5, 1.0e-3, "simulation step (s)");
     if (s.simStepS > s.plcCycleS / 10.0) throw std::invalid_argument("the simulation step must be ≤ PLC cycle / 10");
+    requireBoundedPass(s);
     requireWithin(s.calibration.points, 5, 1000, "calibration points");
     requireWithin(s.calibration.readingsPerPoint, 1, 1000, "readings per calibration point");
     requireWithin(s.calibration.spanFraction, 0.1, 1.0, "calibration span fraction");

@@ -65,7 +65,13 @@ struct BoringScenario {
     unsigned long long seed = 1;
 };
 
-/// Throws std::invalid_argument naming the first bad value of the scenario.
+/// The longest simulated boring pass (approach and bore at feed x spindle speed), s: 2 hours.
+inline constexpr double kMaxBoringPassS = 7200.0;
+/// The most simulation steps of one pass (heavy-boring needs 5.3e6).
+inline constexpr double kMaxBoringSteps = 1e8;
+
+/// Throws std::invalid_argument naming the first bad value of the scenario, and a pass longer than
+/// kMaxBoringPassS or kMaxBoringSteps.
 void validateScenario(const BoringScenario& scenario);
 
 /// State of the tool at one instant of the simulation.
