@@ -95,6 +95,11 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
                     {QStringLiteral("points"), points},
                     {QStringLiteral("k_eff"), config::finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
+    out.insert(QStringLiteral("verdicts"),
+               QJsonObject{{QStringLiteral("good"), static_cast<qint64>(r.verdicts.good)},
+                           {QStringLiteral("rework"), static_cast<qint64>(r.verdicts.rework)},
+                           {QStringLiteral("scrap"), static_cast<qint64>(r.verdicts.scrap)}});
+    out.insert(QStringLiteral("tolerance_alarms"), static_cast<qint64>(r.toleranceAlarms));
     if (profile) {
         QJsonArray rows;
         for (std::size_t i = 0; i < r.profileZMm.size(); ++i)
@@ -140,6 +145,11 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("k_eff (all points): %1 simulated, %2 analytic; %3 measured value(s) rejected")
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
+    printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
+                  .arg(r.verdicts.good)
+                  .arg(r.verdicts.rework)
+                  .arg(r.verdicts.scrap)
+                  .arg(r.toleranceAlarms));
     if (!profile) return;
     printLine(
         QStringLiteral("Profile of parts %1 .. %2 (true diameter error):").arg(r.profileFromPart).arg(r.profileToPart));
