@@ -51,6 +51,9 @@ QString stateText(const core::Notice& n) {
                 .arg(n.value, 0, 'f', 1);
         case K::RunComplete:
             return tr("Run complete: part %1 was the last").arg(n.part);
+        case K::PausedOnScrap:
+            return tr("Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction")
+                .arg(n.part);
         case K::PartFinished:
             return tr("Part %1 finished").arg(n.part);
         case K::PartMeasured:
@@ -101,6 +104,16 @@ QString faultText(const core::Notice& n) {
                 .arg(cause(n));
         case K::MachineRefused:
             return tr("The machine did not start part %1: %2").arg(n.part).arg(cause(n));
+        case K::OutOfToleranceRework:
+            return tr("Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework")
+                .arg(n.part)
+                .arg(n.point)
+                .arg(mm(n.zMm, 1), mm(n.value), mm(n.value - n.limit), mm(n.limit));
+        case K::OutOfToleranceScrap:
+            return tr("Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap")
+                .arg(n.part)
+                .arg(n.point)
+                .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
         default:
             return {};
     }
