@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "app/cli/command.h"
+#include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
@@ -201,7 +202,8 @@ int run(const QStringList& arguments) {
                                     "grid and the middle)."),
                      QStringLiteral("mm"), QStringLiteral("12.5"));
     parser.addOption(QStringLiteral("db"),
-                     QStringLiteral("Store the run in this SQLite history (each part one transaction)."),
+                     QStringLiteral("Store the run in this history (each part one transaction): an SQLite file or "
+                                    "postgresql://user@host:port/database."),
                      QStringLiteral("file"));
     parser.addOption(QStringLiteral("resume"),
                      QStringLiteral("Continue the last run stored in --db from its next part, with its own "
@@ -222,10 +224,10 @@ int run(const QStringList& arguments) {
     std::unique_ptr<storage::Database> db;
     std::unique_ptr<storage::SqlHistoryStore> history;
     if (database) {
-        if (resume && !QFileInfo::exists(*database))
+        if (resume && !isPostgresOption(*database) && !QFileInfo::exists(*database))
             throw UsageError("--db: '" + database->toStdString() + "' does not exist, so there is nothing to resume");
         try {
-            db = std::make_unique<storage::Database>(storage::DatabaseConfig::sqlite(*database));
+            db = std::make_unique<storage::Database>(databaseConfigFromOption(*database));
             history = std::make_unique<storage::SqlHistoryStore>(*db);
         } catch (const storage::StorageError& e) {
             throw UsageError(std::string("--db: ") + e.what());
