@@ -1,6 +1,7 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history
 // (storage::queryMeasurements, one SQL join), the statistics from core/quality's analysePoint (chart,
 // run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
+#include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -152,6 +153,56 @@ void writeCsv(const QString& path, const std::vector<storage::MeasurementRow>& r
                                  "' failed: " + file.errorString().toStdString());
 }
 
+/// AQDEF (Q-DAS ASCII transfer format) date/time: DD.MM.YYYY/HH:MM:SS, from the stored ISO 8601 UTC.
+QString dfqTime(const std::string& iso) {
+    const QDateTime t = QDateTime::fromString(QString::fromStdString(iso), Qt::ISODateWithMs);
+    return t.isValid() ? t.toUTC().toString(QStringLiteral("dd.MM.yyyy/HH:mm:ss")) : QString();
+}
+
+/// AQDEF for Q-DAS (one key per line, "/i" = characteristic i): K0100 number of characteristics; K1001/K1002
+/// part number and description; per control point K2001/K2002 characteristic number and description, K2022
+/// decimal places, K2101 nominal, K2110/K2111 lower/upper specification limit, K2142 unit; then each
+/// reading as K0001/i value with K0004/i date/time, part by part.
+void writeDfq(const QString& path, const std::vector<storage::MeasurementRow>& rows,
+              const std::map<int, PointRows>& points) {
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        throw std::runtime_error("--dfq: cannot write '" + path.toStdString() +
+                                 "': " + file.errorString().toStdString());
+    QTextStream out(&file);
+    out.setEncoding(QStringConverter::Latin1);
+    std::map<int, int> characteristic;  // point index -> K-field index 1..
+    for (const auto& [index, point] : points)
+        characteristic[index] = static_cast<int>(characteristic.size()) + 1;
+    out << "K0100 " << characteristic.size() << "\r\n";
+    out << "K1001 "
+        << (rows.front().machine.empty() ? QStringLiteral("shaft") : QString::fromStdString(rows.front().machine))
+        << "\r\n";
+    out << "K1002 TrueTurn shaft, run(s) " << rows.front().runId << ".." << rows.back().runId << "\r\n";
+    for (const auto& [index, point] : points) {
+        const QString k = QStringLiteral("/%1 ").arg(characteristic[index]);
+        const std::optional<core::SpecLimits> spec = specOf(point);
+        out << "K2001" << k << "P" << index + 1 << "\r\n";
+        out << "K2002" << k << "Diameter at x = " << QString::number(point.rows.front()->zMm, 'f', 1) << " mm\r\n";
+        out << "K2022" << k << "4\r\n";
+        out << "K2101" << k << QString::number(point.rows.front()->nominalMm, 'f', 4) << "\r\n";
+        if (spec) {
+            out << "K2110" << k << QString::number(spec->lowerMm, 'f', 4) << "\r\n";
+            out << "K2111" << k << QString::number(spec->upperMm, 'f', 4) << "\r\n";
+        }
+        out << "K2142" << k << "mm\r\n";
+    }
+    for (const storage::MeasurementRow& r : rows) {
+        const QString k = QStringLiteral("/%1 ").arg(characteristic[r.pointIndex]);
+        out << "K0001" << k << QString::number(r.measuredMm, 'f', 4) << "\r\n";
+        out << "K0004" << k << dfqTime(r.recordedAt) << "\r\n";
+    }
+    out.flush();
+    if (file.error() != QFileDevice::NoError)
+        throw std::runtime_error("--dfq: writing '" + path.toStdString() +
+                                 "' failed: " + file.errorString().toStdString());
+}
+
 void printText(const QJsonArray& points) {
     printLine(QStringLiteral("%1 %2 %3 %4 %5 %6 %7 %8 %9")
                   .arg(QStringLiteral("point"), 5)
@@ -192,7 +243,7 @@ int run(const QStringList& arguments) {
                        "X-bar-R of consecutive subgroups) with its limits and Western Electric rule violations, "
                        "capability against the stored tolerance (Cp, Cpk with its 95 % interval, Cpm, Pp, Ppk; "
                        "ISO 22514-2 percentile method when Anderson-Darling rejects normality) and the verdict "
-                       "counts; the readings as CSV."));
+                       "counts; the readings as CSV and AQDEF (DFQ)."));
     parser.addOption(QStringLiteral("db"),
                      QStringLiteral("The history: an SQLite file or postgresql://user@host:port/database."),
                      QStringLiteral("db"));
@@ -207,6 +258,10 @@ int run(const QStringList& arguments) {
     parser.addOption(QStringLiteral("csv"),
                      QStringLiteral("Also write every reading as CSV (run, machine, part, time, point, x_mm, "
                                     "nominal_mm, measured_mm, deviation_mm, verdict)."),
+                     QStringLiteral("file"));
+    parser.addOption(QStringLiteral("dfq"),
+                     QStringLiteral("Also write the readings as AQDEF (DFQ) for Q-DAS: one characteristic per "
+                                    "control point with nominal, limits and unit, values with date and time."),
                      QStringLiteral("file"));
     parser.parse(arguments);
 
@@ -232,9 +287,11 @@ int run(const QStringList& arguments) {
     if (rows.empty()) throw UsageError("the history holds no measured part for this choice of run, machine and point");
 
     QJsonArray points;
-    for (const auto& [index, point] : byPoint(rows))
+    const std::map<int, PointRows> perPoint = byPoint(rows);
+    for (const auto& [index, point] : perPoint)
         points.append(pointJson(point, settings));
     if (parser.isSet(QStringLiteral("csv"))) writeCsv(parser.value(QStringLiteral("csv")), rows);
+    if (parser.isSet(QStringLiteral("dfq"))) writeDfq(parser.value(QStringLiteral("dfq")), rows, perPoint);
     if (parser.json()) {
         QJsonObject out{{QStringLiteral("subgroup"), settings.subgroupSize}, {QStringLiteral("points"), points}};
         if (filter.runId) out.insert(QStringLiteral("run"), static_cast<qint64>(*filter.runId));
@@ -250,7 +307,7 @@ int run(const QStringList& arguments) {
 Command makeReportCommand() {
     return {QStringLiteral("report"),
             QStringLiteral("Quality report of a stored history: control charts, rule violations, capability and "
-                           "verdicts per control point, CSV of the readings"),
+                           "verdicts per control point, CSV and AQDEF (DFQ) of the readings"),
             run};
 }
 

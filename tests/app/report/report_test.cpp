@@ -6,6 +6,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QSqlQuery>
 #include <QStringList>
 #include <algorithm>
@@ -173,6 +174,46 @@ TEST_F(ReportTest, OnePointWithSubgroupsOfFiveAndTheCsvOfTheReadings) {
     const double measured = first[7].toDouble();
     const QString expected = measured > 27.0 ? "rework" : measured < 26.979 ? "scrap" : "good";
     EXPECT_EQ(first[9], expected);
+}
+
+// AQDEF (the Q-DAS transfer format): K0100 the number of characteristics; per characteristic K2001/K2002,
+// K2022 decimal places, K2101 nominal, K2110/K2111 limits, K2142 unit; each value K0001/i with K0004/i date
+// and time DD.MM.YYYY/HH:MM:SS; lines end in CR LF.
+TEST_F(ReportTest, DfqForQdasHasTheCharacteristicsAndEveryValue) {
+    const QString db = history();
+    const QString dfq = path("run.dfq");
+    const CliResult r = runTrueturn({"report", "--db", db, "--dfq", dfq});
+    ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+    QFile file(dfq);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromLatin1(file.readAll());
+    EXPECT_TRUE(text.endsWith(QLatin1String("\r\n")));
+    const QStringList lines = text.split(QStringLiteral("\r\n"), Qt::SkipEmptyParts);
+    ASSERT_FALSE(lines.isEmpty());
+    EXPECT_EQ(lines[0], QStringLiteral("K0100 5"));
+    const auto field = [&](const QString& key) {
+        for (const QString& line : lines)
+            if (line.startsWith(key + QLatin1Char(' '))) return line.mid(key.size() + 1);
+        return QString();
+    };
+    EXPECT_EQ(field("K2001/3"), QStringLiteral("P3"));
+    EXPECT_EQ(field("K2022/3"), QStringLiteral("4"));
+    EXPECT_EQ(field("K2101/3"), QStringLiteral("27.0000"));
+    EXPECT_EQ(field("K2110/3"), QStringLiteral("26.9790"));  // h7 on 27 mm: -0.021 mm (ISO 286-1)
+    EXPECT_EQ(field("K2111/3"), QStringLiteral("27.0000"));
+    EXPECT_EQ(field("K2142/3"), QStringLiteral("mm"));
+    const std::vector<double> x = readings(db, 3);
+    std::vector<double> values;
+    int dates = 0;
+    const QRegularExpression date(QStringLiteral("^\\d{2}\\.\\d{2}\\.\\d{4}/\\d{2}:\\d{2}:\\d{2}$"));
+    for (const QString& line : lines) {
+        if (line.startsWith(QLatin1String("K0001/3 "))) values.push_back(line.mid(8).toDouble());
+        if (line.startsWith(QLatin1String("K0004/3 ")) && date.match(line.mid(8)).hasMatch()) ++dates;
+    }
+    ASSERT_EQ(values.size(), x.size());
+    EXPECT_EQ(dates, static_cast<int>(x.size()));
+    for (std::size_t i = 0; i < x.size(); ++i)
+        EXPECT_NEAR(values[i], x[i], 5e-5) << "four decimals (K2022)";
 }
 
 TEST_F(ReportTest, BadInputIsRefusedWithTheReason) {
