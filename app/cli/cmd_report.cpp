@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QString>
 #include <QTextStream>
+#include <QTimeZone>
 #include <map>
 #include <memory>
 #include <optional>
@@ -236,6 +237,23 @@ void printText(const QJsonArray& points) {
     }
 }
 
+/// A --from/--to value as the stored UTC text: YYYY-MM-DD (the day's start; with `endOfDay` the next day's) or
+/// an ISO 8601 date and time (UTC when it names no zone). Throws UsageError naming the option.
+std::string utcBound(const QString& option, const QString& value, bool endOfDay) {
+    QDateTime t;
+    const QDate day = QDate::fromString(value, Qt::ISODate);
+    if (day.isValid() && value.size() == 10) {
+        t = QDateTime(endOfDay ? day.addDays(1) : day, QTime(0, 0), QTimeZone::utc());
+    } else {
+        t = QDateTime::fromString(value, Qt::ISODateWithMs);
+        if (t.isValid() && t.timeSpec() == Qt::LocalTime) t.setTimeZone(QTimeZone::utc());
+    }
+    if (!t.isValid())
+        throw UsageError("--" + option.toStdString() + ": '" + value.toStdString() +
+                         "' is not a date (YYYY-MM-DD) or an ISO 8601 date and time");
+    return t.toUTC().toString(Qt::ISODateWithMs).toStdString();
+}
+
 int run(const QStringList& arguments) {
     CommandParser parser(
         QStringLiteral("report"),
@@ -250,6 +268,13 @@ int run(const QStringList& arguments) {
     parser.addOption(QStringLiteral("run"), QStringLiteral("Only this run (default: every run)."), QStringLiteral("n"));
     parser.addOption(QStringLiteral("machine"), QStringLiteral("Only the runs of this machine."),
                      QStringLiteral("name"));
+    parser.addOption(QStringLiteral("from"),
+                     QStringLiteral("Only parts stored from this date (YYYY-MM-DD, UTC) or ISO 8601 time."),
+                     QStringLiteral("date"));
+    parser.addOption(QStringLiteral("to"),
+                     QStringLiteral("Only parts stored up to this date (YYYY-MM-DD, the whole day, UTC) or before "
+                                    "this ISO 8601 time."),
+                     QStringLiteral("date"));
     parser.addOption(QStringLiteral("point"), QStringLiteral("Only control point i, 1..16 (default: every point)."),
                      QStringLiteral("i"));
     parser.addOption(QStringLiteral("subgroup"),
@@ -273,6 +298,12 @@ int run(const QStringList& arguments) {
     if (parser.isSet(QStringLiteral("point")))
         filter.pointIndex = static_cast<int>(parser.integer(QStringLiteral("point"), 1, 16)) - 1;
     if (parser.isSet(QStringLiteral("machine"))) filter.machine = parser.value(QStringLiteral("machine")).toStdString();
+    if (parser.isSet(QStringLiteral("from")))
+        filter.fromUtc = utcBound(QStringLiteral("from"), parser.value(QStringLiteral("from")), false);
+    if (parser.isSet(QStringLiteral("to")))
+        filter.toUtc = utcBound(QStringLiteral("to"), parser.value(QStringLiteral("to")), true);
+    if (filter.fromUtc && filter.toUtc && *filter.toUtc <= *filter.fromUtc)
+        throw UsageError("--to: must come after --from");
     core::PointAnalysisSettings settings;
     settings.subgroupSize = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
 
@@ -284,7 +315,8 @@ int run(const QStringList& arguments) {
     } catch (const storage::StorageError& e) {
         throw UsageError(std::string("--db: ") + e.what());
     }
-    if (rows.empty()) throw UsageError("the history holds no measured part for this choice of run, machine and point");
+    if (rows.empty())
+        throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
     QJsonArray points;
     const std::map<int, PointRows> perPoint = byPoint(rows);

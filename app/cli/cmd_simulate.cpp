@@ -205,6 +205,9 @@ int run(const QStringList& arguments) {
                      QStringLiteral("Store the run in this history (each part one transaction): an SQLite file or "
                                     "postgresql://user@host:port/database."),
                      QStringLiteral("file"));
+    parser.addOption(QStringLiteral("machine"),
+                     QStringLiteral("The lathe's name stored with the run (a plant-wide history holds several)."),
+                     QStringLiteral("name"));
     parser.addOption(QStringLiteral("resume"),
                      QStringLiteral("Continue the last run stored in --db from its next part, with its own "
                                     "settings and the stored controller state."));
@@ -298,6 +301,8 @@ int run(const QStringList& arguments) {
                            scenario.partLengthMm,
                            scenario.loopConfig(false, std::nullopt).pointZMm,
                            QJsonDocument(choice.toJson(scenario.delay())).toJson(QJsonDocument::Compact).toStdString()};
+
+    options.description.machine = parser.value(QStringLiteral("machine")).toStdString();
 
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
     // with the reason; what was stored stays stored and the run can be resumed.

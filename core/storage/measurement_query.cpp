@@ -21,6 +21,14 @@ std::vector<MeasurementRow> queryMeasurements(Database& db, const MeasurementFil
         where << QStringLiteral("m.point_index = ?");
         bindings << *filter.pointIndex;
     }
+    if (filter.fromUtc) {
+        where << QStringLiteral("p.recorded_at >= ?");
+        bindings << QString::fromStdString(*filter.fromUtc);
+    }
+    if (filter.toUtc) {
+        where << QStringLiteral("p.recorded_at < ?");
+        bindings << QString::fromStdString(*filter.toUtc);
+    }
     if (filter.machine) {
         where << QStringLiteral("r.machine = ?");
         bindings << QString::fromStdString(*filter.machine);

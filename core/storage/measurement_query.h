@@ -15,6 +15,8 @@ struct MeasurementFilter {
     std::optional<std::int64_t> runId;
     std::optional<int> pointIndex;  ///< 0-based
     std::optional<std::string> machine;
+    std::optional<std::string> fromUtc;  ///< parts stored at or after this ISO 8601 UTC time
+    std::optional<std::string> toUtc;    ///< parts stored before this ISO 8601 UTC time
 };
 
 /// One stored reading of one control point of one part, as the reports use it.

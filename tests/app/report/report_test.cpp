@@ -3,6 +3,7 @@
 // verdict counts as stored, and the CSV of every reading.
 #include <gtest/gtest.h>
 
+#include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
@@ -214,6 +215,30 @@ TEST_F(ReportTest, DfqForQdasHasTheCharacteristicsAndEveryValue) {
     EXPECT_EQ(dates, static_cast<int>(x.size()));
     for (std::size_t i = 0; i < x.size(); ++i)
         EXPECT_NEAR(values[i], x[i], 5e-5) << "four decimals (K2022)";
+}
+
+// A plant-wide history: runs tagged with their machine; the report reads one machine, or a date range.
+TEST_F(ReportTest, MachinesAndDatesChooseTheRuns) {
+    const QString db = path("plant.sqlite");
+    for (const char* machine : {"lathe-a", "lathe-b"}) {
+        const CliResult r = runTrueturn({"simulate", "--preset", "paper-2012", "--parts", "100", "--warmup", "0",
+                                         "--machine", machine, "--db", db, "--json"});
+        ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+    }
+    const auto count = [&](const QStringList& extra) {
+        const CliResult r = runTrueturn(QStringList{"report", "--db", db, "--point", "1", "--json"} + extra);
+        EXPECT_EQ(r.exitCode, 0) << qPrintable(r.err);
+        return r.json()["points"].toArray()[0].toObject()["n"].toInteger();
+    };
+    EXPECT_EQ(count({}), 200);
+    EXPECT_EQ(count({"--machine", "lathe-b"}), 100);
+    const QString today = QDateTime::currentDateTimeUtc().date().toString(Qt::ISODate);
+    const QString tomorrow = QDateTime::currentDateTimeUtc().date().addDays(1).toString(Qt::ISODate);
+    EXPECT_EQ(count({"--from", "2000-01-01", "--to", today}), 200) << "--to a day includes the whole day";
+    test::expectRefused({"report", "--db", db, "--from", tomorrow}, "no measured part");
+    test::expectRefused({"report", "--db", db, "--machine", "lathe-c"}, "no measured part");
+    test::expectRefused({"report", "--db", db, "--from", "yesterday"}, "--from");
+    test::expectRefused({"report", "--db", db, "--from", today, "--to", "2000-01-01"}, "--to");
 }
 
 TEST_F(ReportTest, BadInputIsRefusedWithTheReason) {
