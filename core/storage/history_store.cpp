@@ -91,12 +91,16 @@ SchemaModule historySchema() {
              exec(db, "ALTER TABLE measurements ADD COLUMN reason_limit {real}");
          }});
     module.migrations.push_back(
-        {3, QStringLiteral("tolerance verdicts (good, rework, scrap) with their limits; the machine of a run"),
+        {3,
+         QStringLiteral(
+             "tolerance verdicts (good, rework, scrap) with their limits; the machine of a run; readings by point"),
          [](Database& db) {
              exec(db, "ALTER TABLE measurements ADD COLUMN verdict TEXT");
              exec(db, "ALTER TABLE measurements ADD COLUMN lower_limit_mm {real}");
              exec(db, "ALTER TABLE measurements ADD COLUMN upper_limit_mm {real}");
              exec(db, "ALTER TABLE runs ADD COLUMN machine TEXT NOT NULL DEFAULT ''");
+             // The report of one control point over the whole history reads the measurements of that point.
+             exec(db, "CREATE INDEX measurements_by_point ON measurements (point_index, part_id)");
          }});
     return module;
 }
