@@ -42,9 +42,10 @@ TEST_F(SimulateVerdicts, ATightToleranceGivesReworkScrapAlarmsAndStoredVerdicts)
     storage::Database history(storage::DatabaseConfig::sqlite(db));
     // The part's verdict is the worst of its points: counted from the stored readings.
     const auto partsWith = [&](const char* verdict, const char* worse) {
-        return scalar(history, QStringLiteral("SELECT COUNT(DISTINCT part_id) FROM measurements WHERE verdict = '%1'"
-                                              " AND part_id NOT IN (SELECT part_id FROM measurements WHERE verdict IN (%2))")
-                                   .arg(QLatin1String(verdict), QLatin1String(worse)));
+        return scalar(history,
+                      QStringLiteral("SELECT COUNT(DISTINCT part_id) FROM measurements WHERE verdict = '%1'"
+                                     " AND part_id NOT IN (SELECT part_id FROM measurements WHERE verdict IN (%2))")
+                          .arg(QLatin1String(verdict), QLatin1String(worse)));
     };
     EXPECT_EQ(partsWith("scrap", "''"), scrap);
     EXPECT_EQ(partsWith("rework", "'scrap'"), rework);
@@ -53,24 +54,28 @@ TEST_F(SimulateVerdicts, ATightToleranceGivesReworkScrapAlarmsAndStoredVerdicts)
               r.json()["tolerance_alarms"].toInteger());
     EXPECT_EQ(scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict <> 'good'"),
               r.json()["tolerance_alarms"].toInteger());
-    EXPECT_EQ(scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict IS NOT NULL AND"
-                              " (ABS(upper_limit_mm - 27.0) > 1e-9 OR ABS(lower_limit_mm - 26.987) > 1e-9)"),
+    EXPECT_EQ(scalar(history,
+                     "SELECT COUNT(*) FROM measurements WHERE verdict IS NOT NULL AND"
+                     " (ABS(upper_limit_mm - 27.0) > 1e-9 OR ABS(lower_limit_mm - 26.987) > 1e-9)"),
               0);
     // Verdicts are kept apart from "accepted": scrap readings the controller still used.
     EXPECT_GT(scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict = 'scrap' AND accepted = 1"), 0);
     // The verdict agrees with the stored reading and limits.
-    EXPECT_EQ(scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict = 'scrap' AND measured_mm >= lower_limit_mm"),
-              0);
-    EXPECT_EQ(scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict = 'rework' AND measured_mm <= upper_limit_mm"),
-              0);
+    EXPECT_EQ(
+        scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict = 'scrap' AND measured_mm >= lower_limit_mm"),
+        0);
+    EXPECT_EQ(
+        scalar(history, "SELECT COUNT(*) FROM measurements WHERE verdict = 'rework' AND measured_mm <= upper_limit_mm"),
+        0);
 }
 
 TEST_F(SimulateVerdicts, ABadToleranceIsRefusedNamingTheField) {
-    const QString hole = write("hole.json", R"({"based_on": "paper-2012-group1", "loop": {"tolerance": {"fit": "H7"}}})");
+    const QString hole =
+        write("hole.json", R"({"based_on": "paper-2012-group1", "loop": {"tolerance": {"fit": "H7"}}})");
     test::expectRefused({"simulate", "--preset", hole, "--parts", "100"}, "loop.tolerance");
-    const QString inverted = write(
-        "inverted.json",
-        R"({"based_on": "paper-2012-group1", "loop": {"tolerance": {"upper_mm": -0.05, "lower_mm": 0.01}}})");
+    const QString inverted =
+        write("inverted.json",
+              R"({"based_on": "paper-2012-group1", "loop": {"tolerance": {"upper_mm": -0.05, "lower_mm": 0.01}}})");
     test::expectRefused({"simulate", "--preset", inverted, "--parts", "100"}, "lower deviation");
 }
 
