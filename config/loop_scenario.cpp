@@ -1,6 +1,7 @@
 #include "config/loop_scenario.h"
 
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QStringList>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 #include "config/plant_config.h"
 #include "config/preset_library.h"
 #include "config/profile_model_config.h"
+#include "core/quality/iso286.h"
 
 namespace tt::config {
 
@@ -46,6 +48,49 @@ QJsonObject withBase(const QJsonObject& preset, QStringList& chain, QStringList&
     return merged;
 }
 
+/// One tolerance entry: {"fit": "h9"} (ISO 286 shaft class) or {"upper_mm": 0.0, "lower_mm": -0.052}
+/// (deviations from the nominal), with an optional "nominal_mm" (default: the loop's nominal diameter).
+core::ToleranceZone toleranceFrom(const JsonSection& entry, double loopNominalMm) {
+    const double nominal = entry.number(QStringLiteral("nominal_mm"), loopNominalMm, 0.1, 1e4);
+    core::ToleranceZone zone{nominal, 0.0, 0.0};
+    try {
+        if (entry.has(QStringLiteral("fit"))) {
+            if (entry.has(QStringLiteral("upper_mm")) || entry.has(QStringLiteral("lower_mm")))
+                entry.fail(QStringLiteral("fit"), "give either an ISO 286 class or upper_mm and lower_mm, not both");
+            zone = core::iso286ShaftZone(nominal, entry.text(QStringLiteral("fit"), {}));
+        } else {
+            zone.upperDeviationMm = entry.required(QStringLiteral("upper_mm"), -100.0, 100.0);
+            zone.lowerDeviationMm = entry.required(QStringLiteral("lower_mm"), -100.0, 100.0);
+        }
+        core::checkToleranceZone(zone);
+    } catch (const std::invalid_argument& e) {
+        if (std::string(e.what()).rfind(entry.name().toStdString(), 0) == 0) throw;
+        entry.fail(QString(), e.what());
+    }
+    return zone;
+}
+
+/// "loop.tolerance": one entry for every control point, or an array with one entry per point.
+std::vector<core::ToleranceZone> tolerancesFrom(const JsonSection& loop, double nominalMm, std::size_t points) {
+    const QJsonValue value = loop.value(QStringLiteral("tolerance"));
+    if (value.isUndefined()) return {};
+    if (value.isObject())
+        return std::vector<core::ToleranceZone>(
+            points,
+            toleranceFrom(JsonSection::of(value.toObject(), loop.name() + QStringLiteral(".tolerance")), nominalMm));
+    if (!value.isArray() || static_cast<std::size_t>(value.toArray().size()) != points)
+        loop.fail(QStringLiteral("tolerance"), "must be one object for every control point or an array of " +
+                                                   std::to_string(points) + " objects, one per point");
+    std::vector<core::ToleranceZone> zones;
+    for (qsizetype i = 0; i < value.toArray().size(); ++i) {
+        const QJsonValue entry = value.toArray().at(i);
+        const QString name = loop.name() + QStringLiteral(".tolerance[%1]").arg(i);
+        if (!entry.isObject()) throw std::invalid_argument(name.toStdString() + ": must be an object");
+        zones.push_back(toleranceFrom(JsonSection::of(entry.toObject(), name), nominalMm));
+    }
+    return zones;
+}
+
 LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<int> delay) {
     LoopScenario s;
     s.preset = name;
@@ -76,6 +121,8 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
     s.pathStepMm = loop.number(QStringLiteral("path_step_mm"), s.pathStepMm, 0.01, 100.0);
     s.gaugeTimeoutS = loop.number(QStringLiteral("gauge_timeout_s"), s.gaugeTimeoutS, 1.0, 1e7);
     s.toleranceMm = loop.number(QStringLiteral("tolerance_mm"), s.toleranceMm, 1e-4, 100.0);
+    s.tolerances = tolerancesFrom(loop, s.nominalDiameterMm, s.control.plant.points.size());
+    s.pauseOnScrap = loop.flag(QStringLiteral("pause_on_scrap"), false);
     if (loop.has(QStringLiteral("interpolation"))) {
         const QJsonValue method = loop.value(QStringLiteral("interpolation"));
         if (!method.isString()) throw std::invalid_argument("loop.interpolation: must be \"pchip\" or \"spline\"");

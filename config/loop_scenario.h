@@ -16,7 +16,11 @@ namespace tt::config {
 ///
 ///   "based_on": "paper-2012",          sections this preset does not have come from that preset
 ///   "loop": {"nominal_diameter_mm", "part_length_mm", "plausible_range_mm": 0.5, "path_step_mm": 0.5,
-///            "interpolation": "pchip" | "spline", "gauge_timeout_s": 600, "tolerance_mm": 0.03}
+///            "interpolation": "pchip" | "spline", "gauge_timeout_s": 600, "tolerance_mm": 0.03,
+///            "tolerance": {"fit": "h9"} | {"upper_mm": 0.0, "lower_mm": -0.052} | [one per control point],
+///            "pause_on_scrap": false}
+///   "tolerance" entries may name their own "nominal_mm" (default: the loop's); without "tolerance" the
+///   verdicts use nominal ± tolerance_mm at every point.
 struct LoopScenario : core::ShaftScenario {
     QString preset;    ///< name or path it was loaded from
     QJsonObject json;  ///< the preset with the sections of its base merged in

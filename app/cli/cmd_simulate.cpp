@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "app/cli/command.h"
+#include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
@@ -95,6 +96,11 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
                     {QStringLiteral("points"), points},
                     {QStringLiteral("k_eff"), config::finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
+    out.insert(QStringLiteral("verdicts"),
+               QJsonObject{{QStringLiteral("good"), static_cast<qint64>(r.verdicts.good)},
+                           {QStringLiteral("rework"), static_cast<qint64>(r.verdicts.rework)},
+                           {QStringLiteral("scrap"), static_cast<qint64>(r.verdicts.scrap)}});
+    out.insert(QStringLiteral("tolerance_alarms"), static_cast<qint64>(r.toleranceAlarms));
     if (profile) {
         QJsonArray rows;
         for (std::size_t i = 0; i < r.profileZMm.size(); ++i)
@@ -140,6 +146,11 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("k_eff (all points): %1 simulated, %2 analytic; %3 measured value(s) rejected")
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
+    printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
+                  .arg(r.verdicts.good)
+                  .arg(r.verdicts.rework)
+                  .arg(r.verdicts.scrap)
+                  .arg(r.toleranceAlarms));
     if (!profile) return;
     printLine(
         QStringLiteral("Profile of parts %1 .. %2 (true diameter error):").arg(r.profileFromPart).arg(r.profileToPart));
@@ -191,8 +202,12 @@ int run(const QStringList& arguments) {
                                     "grid and the middle)."),
                      QStringLiteral("mm"), QStringLiteral("12.5"));
     parser.addOption(QStringLiteral("db"),
-                     QStringLiteral("Store the run in this SQLite history (each part one transaction)."),
+                     QStringLiteral("Store the run in this history (each part one transaction): an SQLite file or "
+                                    "postgresql://user@host:port/database."),
                      QStringLiteral("file"));
+    parser.addOption(QStringLiteral("machine"),
+                     QStringLiteral("The lathe's name stored with the run (a plant-wide history holds several)."),
+                     QStringLiteral("name"));
     parser.addOption(QStringLiteral("resume"),
                      QStringLiteral("Continue the last run stored in --db from its next part, with its own "
                                     "settings and the stored controller state."));
@@ -212,10 +227,10 @@ int run(const QStringList& arguments) {
     std::unique_ptr<storage::Database> db;
     std::unique_ptr<storage::SqlHistoryStore> history;
     if (database) {
-        if (resume && !QFileInfo::exists(*database))
+        if (resume && !isPostgresOption(*database) && !QFileInfo::exists(*database))
             throw UsageError("--db: '" + database->toStdString() + "' does not exist, so there is nothing to resume");
         try {
-            db = std::make_unique<storage::Database>(storage::DatabaseConfig::sqlite(*database));
+            db = std::make_unique<storage::Database>(databaseConfigFromOption(*database));
             history = std::make_unique<storage::SqlHistoryStore>(*db);
         } catch (const storage::StorageError& e) {
             throw UsageError(std::string("--db: ") + e.what());
@@ -286,6 +301,8 @@ int run(const QStringList& arguments) {
                            scenario.partLengthMm,
                            scenario.loopConfig(false, std::nullopt).pointZMm,
                            QJsonDocument(choice.toJson(scenario.delay())).toJson(QJsonDocument::Compact).toStdString()};
+
+    options.description.machine = parser.value(QStringLiteral("machine")).toStdString();
 
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
     // with the reason; what was stored stays stored and the run can be resumed.

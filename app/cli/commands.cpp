@@ -14,6 +14,7 @@ Command makeDeformationExperimentCommand();
 Command makeFitDeformationCommand();
 Command makeScheduleFeedCommand();
 Command makeCornerCommand();
+Command makeReportCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -28,6 +29,7 @@ const std::vector<Command>& commands() {
         makeScheduleFeedCommand(),
         makeCornerCommand(),
         makeFeedStabiliseCommand(),
+        makeReportCommand(),
     };
     return all;
 }

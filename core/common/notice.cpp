@@ -44,6 +44,8 @@ std::string stateText(const Notice& n) {
                    " min. Paused, the CNC keeps the last correction";
         case NoticeKind::RunComplete:
             return "run complete: " + partText(n.part) + " was the last";
+        case NoticeKind::PausedOnScrap:
+            return "paused: " + partText(n.part) + " is scrap; check the machine, then continue" + kHeld;
         case NoticeKind::PartFinished:
             return partText(n.part) + " finished";
         case NoticeKind::PartMeasured:
@@ -81,6 +83,14 @@ std::string alarmText(const Notice& n) {
                    "; it keeps the last correction";
         case NoticeKind::MachineRefused:
             return "the machine did not start " + partText(n.part) + ": " + n.cause;
+        case NoticeKind::OutOfToleranceRework:
+            return partText(n.part) + ", " + pointText(n) + ": " + formatFixed(n.value, 3) + " mm is " +
+                   formatFixed(n.value - n.limit, 3) + " mm above the upper limit " + formatFixed(n.limit, 3) +
+                   " mm (deviation " + formatFixed(n.value - n.reference, 3) + " mm from the nominal): rework";
+        case NoticeKind::OutOfToleranceScrap:
+            return partText(n.part) + ", " + pointText(n) + ": " + formatFixed(n.value, 3) + " mm is " +
+                   formatFixed(n.limit - n.value, 3) + " mm below the lower limit " + formatFixed(n.limit, 3) +
+                   " mm (deviation " + formatFixed(n.value - n.reference, 3) + " mm from the nominal): scrap";
         default:
             return {};
     }
@@ -166,9 +176,12 @@ constexpr const char* kKindNames[] = {"none",
                                       "outlier",
                                       "alarm-band",
                                       "controller-failed",
-                                      "controller-rejected"};
+                                      "controller-rejected",
+                                      "out-of-tolerance-rework",
+                                      "out-of-tolerance-scrap",
+                                      "paused-on-scrap"};
 constexpr std::size_t kKinds = sizeof kKindNames / sizeof kKindNames[0];
-static_assert(kKinds == static_cast<std::size_t>(NoticeKind::ControllerRejected) + 1, "one name per kind");
+static_assert(kKinds == static_cast<std::size_t>(NoticeKind::PausedOnScrap) + 1, "one name per kind");
 
 }  // namespace
 

@@ -54,6 +54,10 @@ enum class NoticeKind {
     AlarmBand,           ///< value: |deviation|, limit: the alarm band, mm
     ControllerFailed,    ///< cause: the controller's words
     ControllerRejected,  ///< cause: the controller's own reason (a controller without kinds)
+    // ---- tolerances (after the rejections: the stored names and the order above never change) ----
+    OutOfToleranceRework,  ///< part, point, z, value: measured, reference: nominal, limit: upper limit (mm)
+    OutOfToleranceScrap,   ///< part, point, z, value: measured, reference: nominal, limit: lower limit (mm)
+    PausedOnScrap,         ///< part: the scrap part (state: the loop paused itself, the operator continues)
 };
 
 /// One notice with its data (which fields are set depends on the kind, see NoticeKind).

@@ -31,6 +31,18 @@ void validateLoopConfig(const LoopConfig& c) {
     if (c.firstPartNumber < 1) throw std::invalid_argument("part numbers start at 1");
     if (c.lastPartNumber && *c.lastPartNumber < c.firstPartNumber)
         throw std::invalid_argument("the last part number comes before the first");
+    if (!c.tolerances.empty() && c.tolerances.size() != c.pointZMm.size())
+        throw std::invalid_argument("the job has " + std::to_string(c.tolerances.size()) + " tolerance(s) for " +
+                                    std::to_string(c.pointZMm.size()) + " control points; give one per point");
+    for (std::size_t i = 0; i < c.tolerances.size(); ++i) {
+        try {
+            checkToleranceZone(c.tolerances[i]);
+        } catch (const std::invalid_argument& e) {
+            throw std::invalid_argument("control point " + std::to_string(i + 1) + ": " + e.what());
+        }
+    }
+    if (c.pauseOnScrap && c.tolerances.empty())
+        throw std::invalid_argument("pausing on scrap needs the tolerances of the control points");
 }
 
 }  // namespace tt::core

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/common/tolerance.h"
 #include "core/control/correction_limits.h"
 #include "core/control/profile_interpolation.h"
 #include "core/model/scaled_polynomial.h"
@@ -30,6 +31,10 @@ struct LoopConfig {
     std::int64_t firstPartNumber = 1;
     /// The run ends after this part is machined and every part is measured; none = until stopped.
     std::optional<std::int64_t> lastPartNumber;
+    /// The tolerance zone of each control point (empty: no verdicts); every plausible reading gets a
+    /// verdict and an out-of-tolerance one raises an "out-of-tolerance" alarm.
+    std::vector<ToleranceZone> tolerances;
+    bool pauseOnScrap = false;  ///< a scrap part pauses the loop (the operator continues it)
 };
 
 /// Throws std::invalid_argument naming the first bad value.

@@ -282,8 +282,33 @@ PartMeasurementRecord LoopEngine::judge(std::int64_t partNumber, const std::vect
         verdict.refusal.point = static_cast<int>(i) + 1;
         record.points.push_back(verdict.accepted ? acceptedPoint(i, *diameters[i])
                                                  : rejectedPoint(i, diameters[i], verdict.refusal));
+        // The tolerance verdict is on the part, not on the reading: every plausible reading gets one.
+        if (verdict.accepted && !m_config.tolerances.empty()) {
+            record.points.back().tolerance = m_config.tolerances[i];
+            record.points.back().verdict = outerDiameterVerdict(m_config.tolerances[i], *diameters[i]);
+        }
     }
     return record;
+}
+
+void LoopEngine::judgeTolerances(const PartMeasurementRecord& record) {
+    bool scrap = false;
+    for (const PointMeasurementRecord& p : record.points) {
+        if (!p.verdict || *p.verdict == ToleranceVerdict::Good || !p.tolerance || !p.measuredMm) continue;
+        const bool rework = *p.verdict == ToleranceVerdict::Rework;
+        Notice out(rework ? NoticeKind::OutOfToleranceRework : NoticeKind::OutOfToleranceScrap, record.partNumber);
+        out.point = p.pointIndex + 1;
+        out.zMm = p.zMm;
+        out.value = *p.measuredMm;
+        out.reference = p.tolerance->nominalMm;
+        out.limit = rework ? p.tolerance->upperLimitMm() : p.tolerance->lowerLimitMm();
+        alarm("out-of-tolerance", out, record.partNumber);
+        scrap = scrap || !rework;
+    }
+    if (scrap && m_config.pauseOnScrap && m_state == LoopState::Running) {
+        m_pauseCause = PauseCause::Operator;
+        setState(LoopState::Paused, notice(NoticeKind::PausedOnScrap, record.partNumber));
+    }
 }
 
 void LoopEngine::completeMeasurement(PartMeasurementRecord record) {
@@ -301,6 +326,7 @@ void LoopEngine::completeMeasurement(PartMeasurementRecord record) {
     }
     for (const PointMeasurementRecord& p : record.points)
         if (!p.accepted && p.measuredMm) alarm("measurement-rejected", p.rejection, record.partNumber);
+    judgeTolerances(record);
     const bool willBeUsed =
         !m_config.lastPartNumber || record.partNumber + m_config.delayParts <= *m_config.lastPartNumber;
     LoopEvent event = makeEvent(LoopEvent::Kind::PartMeasured, record.partNumber,
@@ -338,7 +364,11 @@ void LoopEngine::offerMeasurement(PartMeasurementRecord& record) {
         why.part = record.partNumber;
         why.point = p.pointIndex + 1;
         why.zMm = p.zMm;
+        const auto tolerance = p.tolerance;
+        const auto toleranceVerdict = p.verdict;
         p = rejectedPoint(i, p.measuredMm, why);
+        p.tolerance = tolerance;
+        p.verdict = toleranceVerdict;
         alarm("measurement-rejected", p.rejection, record.partNumber);
     }
 }

@@ -129,6 +129,7 @@ private:
     PartMeasurementRecord judge(std::int64_t partNumber, const std::vector<std::optional<double>>& diameters,
                                 double timeS) const;
     void offerMeasurement(PartMeasurementRecord& record);
+    void judgeTolerances(const PartMeasurementRecord& record);  // out-of-tolerance alarms, pause on scrap
     void setState(LoopState state, const Notice& status);
     void alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part = std::nullopt);
     void fault(const Notice& what);

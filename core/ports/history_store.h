@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/common/notice.h"
+#include "core/common/tolerance.h"
 
 #include <cstdint>
 #include <optional>
@@ -20,6 +21,7 @@ struct RunDescription {
     double partLengthMm = 0.0;
     std::vector<double> pointZMm;  ///< control points, mm
     std::string settingsJson;      ///< everything needed to set the run up again (for resume), JSON text
+    std::string machine = {};      ///< which lathe ran it (a plant-wide history holds several); may be empty
 };
 
 /// The gauged diameter of one part at one control point, with the verdict.
@@ -31,6 +33,11 @@ struct PointMeasurementRecord {
     bool accepted = false;  ///< used by the controller
     std::string reason;     ///< why not, in stable English (stored); empty when accepted
     Notice rejection = {};  ///< why not, as a kind with data (kind None when accepted)
+    /// The tolerance zone of the point and the verdict on the reading (good / rework / scrap), for every
+    /// plausible reading of a job with tolerances; independent of `accepted` (a part can be scrap and its
+    /// reading still used by the controller). None: no tolerance, or no plausible reading.
+    std::optional<ToleranceZone> tolerance = std::nullopt;
+    std::optional<ToleranceVerdict> verdict = std::nullopt;
 };
 
 /// All control points of one measured part.
@@ -38,6 +45,14 @@ struct PartMeasurementRecord {
     std::int64_t partNumber = 0;
     double timeS = 0.0;  ///< when the last reading arrived (Clock), s
     std::vector<PointMeasurementRecord> points;
+
+    /// The part's verdict: the worst verdict of its points; none when no point has one.
+    std::optional<ToleranceVerdict> verdict() const {
+        std::optional<ToleranceVerdict> worst;
+        for (const PointMeasurementRecord& p : points)
+            if (p.verdict) worst = worst ? worseVerdict(*worst, *p.verdict) : *p.verdict;
+        return worst;
+    }
 };
 
 /// The correction at one control point for one part.

@@ -24,6 +24,9 @@ public:
         if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
             for (const PointMeasurementRecord& p : event.measurement->points)
                 if (!p.accepted && p.measuredMm) ++m_record.rejectedValues;
+        if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
+            if (const auto verdict = event.measurement->verdict()) m_record.verdicts.add(*verdict);
+        if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == "out-of-tolerance") ++m_record.toleranceAlarms;
         if (m_next) m_next->onLoopEvent(event);
     }
 

@@ -38,6 +38,8 @@ struct LatheRunRecord {
     std::vector<Eigen::VectorXd> profileDeviationMm;  ///< per part: at LatheRunSpec::profileZMm
     std::vector<bool> seen;                           ///< per part: finished (or re-created after a resume)
     std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
+    VerdictCounts verdicts;                           ///< measured parts by tolerance verdict (this session)
+    std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
 };
 
 /// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until

@@ -27,8 +27,16 @@ LoopConfig ShaftScenario::loopConfig(bool feedForward, std::optional<std::int64_
     c.limits = control.limits;
     c.gaugeTimeoutS = gaugeTimeoutS;
     c.lastPartNumber = lastPartNumber;
+    c.tolerances = pointTolerances();
+    c.pauseOnScrap = pauseOnScrap;
     validateLoopConfig(c);
     return c;
+}
+
+std::vector<ToleranceZone> ShaftScenario::pointTolerances() const {
+    if (!tolerances.empty()) return tolerances;
+    return std::vector<ToleranceZone>(control.plant.points.size(),
+                                      ToleranceZone{nominalDiameterMm, toleranceMm, -toleranceMm});
 }
 
 }  // namespace tt::core

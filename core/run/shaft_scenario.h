@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/control/profile_interpolation.h"
 #include "core/control/run_to_run_setup.h"
@@ -28,6 +29,9 @@ struct ShaftScenario {
     double pathStepMm = 0.5;
     double gaugeTimeoutS = 600.0;
     double toleranceMm = 0.03;  ///< ± band on diameter shown with the profile
+    /// The tolerance zone per control point for the verdicts (empty: nominal ± toleranceMm at every point).
+    std::vector<ToleranceZone> tolerances;
+    bool pauseOnScrap = false;  ///< the loop pauses on a scrap part
     InterpolationMethod interpolation = InterpolationMethod::Pchip;
 
     /// The transport delay z of the plant (after any override).
@@ -37,6 +41,8 @@ struct ShaftScenario {
     /// The loop settings; the feed-forward only when `feedForward` and the scenario has a model.
     /// Throws std::invalid_argument (validateLoopConfig) on a bad value.
     LoopConfig loopConfig(bool feedForward, std::optional<std::int64_t> lastPartNumber) const;
+    /// The tolerance zone of each control point (`tolerances`, or nominal ± toleranceMm).
+    std::vector<ToleranceZone> pointTolerances() const;
 };
 
 }  // namespace tt::core

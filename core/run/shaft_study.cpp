@@ -54,6 +54,8 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.runId = closed.runId;
     result.outcome = closed.outcome;
     result.rejectedValues = closed.rejectedValues;
+    result.verdicts = closed.verdicts;
+    result.toleranceAlarms = closed.toleranceAlarms;
 
     const std::int64_t from = options.warmupParts + 1;
     const Eigen::VectorXd varClosed = deviationVariance(closed.pointDeviationMm, from, total);

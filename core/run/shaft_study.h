@@ -44,6 +44,8 @@ struct LatheStudyResult {
     double kEff = 0.0;          ///< sum open / sum closed
     double kEffAnalytic = 0.0;  ///< NaN when unavailable
     std::int64_t rejectedValues = 0;
+    VerdictCounts verdicts;            ///< the closed run's measured parts by tolerance verdict (warm-up included)
+    std::int64_t toleranceAlarms = 0;  ///< its out-of-tolerance alarms
     /// Profile of the closed run's parts: mean and standard deviation of the true diameter error at
     /// profileZMm over parts [profileFromPart, profileToPart] (after the first 2z + 5, the loop's start-up).
     std::vector<double> profileZMm, profileMeanMm, profileStdMm;

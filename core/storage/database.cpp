@@ -77,6 +77,9 @@ void Database::openSqlite() {
     requireTrueTurnSqliteFile(m_config.sqlitePath);
     QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), m_connectionName);
     db.setDatabaseName(m_config.sqlitePath);
+    // A writer waits for another (several lathes or processes on one file) instead of failing at once
+    // with "database is locked"; set before the first statement, which may already need a lock.
+    db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kSqliteBusyTimeoutMs));
     if (!db.open())
         throw StorageError("cannot open the history file '" + m_config.sqlitePath.toStdString() +
                            "': " + sqlError(db.lastError()).toStdString());
@@ -94,8 +97,11 @@ void Database::configureSqlite() {
                            "); it was left untouched");
     }
     check.finish();  // an active statement holds a read transaction; WAL cannot be switched on inside one
-    for (const char* pragma : {"PRAGMA journal_mode=WAL", "PRAGMA foreign_keys=ON", "PRAGMA synchronous=NORMAL",
-                               "PRAGMA busy_timeout=5000"}) {
+    for (const char* pragma : {
+             "PRAGMA journal_mode=WAL",
+             "PRAGMA foreign_keys=ON",
+             "PRAGMA synchronous=NORMAL",
+         }) {
         QSqlQuery q(connection());
         if (!q.exec(QString::fromLatin1(pragma)))
             throw StorageError("cannot configure the history file: " + sqlError(q.lastError()).toStdString());
@@ -118,10 +124,31 @@ void Database::openPostgres() {
 }
 
 void Database::ensureVersionTable() {
-    exec(
-        QStringLiteral("CREATE TABLE IF NOT EXISTS schema_versions ("
-                       " module TEXT NOT NULL, version INTEGER NOT NULL, description TEXT NOT NULL,"
-                       " applied_at TEXT NOT NULL, PRIMARY KEY (module, version))"));
+    withSchemaLock([this] {
+        exec(
+            QStringLiteral("CREATE TABLE IF NOT EXISTS schema_versions ("
+                           " module TEXT NOT NULL, version INTEGER NOT NULL, description TEXT NOT NULL,"
+                           " applied_at TEXT NOT NULL, PRIMARY KEY (module, version))"));
+    });
+}
+
+void Database::withSchemaLock(const std::function<void()>& work) {
+    if (isPostgres()) {
+        // A session-level advisory lock: clients connecting at the same moment create and migrate the
+        // schema one after the other (CREATE TABLE IF NOT EXISTS alone races on the catalogue).
+        exec(QStringLiteral("SELECT pg_advisory_lock(%1)").arg(kSchemaLockKey));
+        try {
+            work();
+        } catch (...) {
+            exec(QStringLiteral("SELECT pg_advisory_unlock(%1)").arg(kSchemaLockKey));
+            throw;
+        }
+        exec(QStringLiteral("SELECT pg_advisory_unlock(%1)").arg(kSchemaLockKey));
+        return;
+    }
+    // SQLite: one write transaction taken at once (BEGIN IMMEDIATE) around reading the version and
+    // applying what is missing; DDL is transactional there.
+    transaction(work);
 }
 
 QString Database::dialectSql(const QString& sql) const {
@@ -174,7 +201,16 @@ void Database::transaction(const std::function<void()>& work) {
         return;
     }
     QSqlDatabase db = connection();
-    if (!db.transaction()) throw StorageError("cannot start a transaction: " + sqlError(db.lastError()).toStdString());
+    if (isPostgres()) {
+        if (!db.transaction())
+            throw StorageError("cannot start a transaction: " + sqlError(db.lastError()).toStdString());
+    } else {
+        // SQLite: take the write lock at the start (waiting up to the busy timeout), so a transaction that
+        // reads before it writes is never refused because another writer committed in between (WAL).
+        QSqlQuery begin(db);
+        if (!begin.exec(QStringLiteral("BEGIN IMMEDIATE")))
+            throw StorageError("cannot start a transaction: " + sqlError(begin.lastError()).toStdString());
+    }
     ++m_transactionDepth;
     try {
         work();
@@ -197,23 +233,32 @@ int Database::schemaVersion(const QString& module) {
 }
 
 void Database::migrate(const SchemaModule& module) {
-    const int current = schemaVersion(module.name);
     const int known = module.migrations.empty() ? 0 : module.migrations.back().version;
-    if (current > known)
-        throw StorageError("the database holds '" + module.name.toStdString() + "' schema version " +
-                           std::to_string(current) + ", newer than this TrueTurn knows (" + std::to_string(known) +
-                           "); update TrueTurn — the data was left untouched");
-    for (const Migration& m : module.migrations) {
-        if (m.version <= current) continue;
-        transaction([&] {
-            qCInfo(lcStorage).noquote() << "migrating" << module.name << "to version" << m.version << "-"
-                                        << m.description;
-            m.apply(*this);
-            exec(QStringLiteral("INSERT INTO schema_versions (module, version, description, applied_at) "
-                                "VALUES (?, ?, ?, ?)"),
-                 {module.name, m.version, m.description, utcNowText()});
-        });
-    }
+    const auto checkNotNewer = [&](int current) {
+        if (current > known)
+            throw StorageError("the database holds '" + module.name.toStdString() + "' schema version " +
+                               std::to_string(current) + ", newer than this TrueTurn knows (" + std::to_string(known) +
+                               "); update TrueTurn — the data was left untouched");
+    };
+    const int seen = schemaVersion(module.name);
+    checkNotNewer(seen);
+    if (seen == known) return;
+    // Another client may be migrating at this moment: under the schema lock, read the version again.
+    withSchemaLock([&] {
+        const int current = schemaVersion(module.name);
+        checkNotNewer(current);
+        for (const Migration& m : module.migrations) {
+            if (m.version <= current) continue;
+            transaction([&] {
+                qCInfo(lcStorage).noquote()
+                    << "migrating" << module.name << "to version" << m.version << "-" << m.description;
+                m.apply(*this);
+                exec(QStringLiteral("INSERT INTO schema_versions (module, version, description, applied_at) "
+                                    "VALUES (?, ?, ?, ?)"),
+                     {module.name, m.version, m.description, utcNowText()});
+            });
+        }
+    });
 }
 
 QString utcNowText() {

@@ -99,11 +99,19 @@ private:
     void openPostgres();
     void configureSqlite();
     void ensureVersionTable();
+    /// Runs `work` while no other client creates or migrates the schema: a PostgreSQL advisory lock
+    /// (kSchemaLockKey), an immediate write transaction on SQLite.
+    void withSchemaLock(const std::function<void()>& work);
 
     DatabaseConfig m_config;
     QString m_connectionName;
     int m_transactionDepth = 0;
 };
+
+/// How long an SQLite writer waits for another one before giving up, ms.
+inline constexpr int kSqliteBusyTimeoutMs = 30000;
+/// The PostgreSQL advisory lock key held while the schema is created or migrated ("TTSCHEMA" in ASCII).
+inline constexpr long long kSchemaLockKey = 0x5454534348454D41LL;
 
 /// Now in UTC as every table stores times: ISO 8601 with milliseconds ("2026-11-21T14:50:01.123Z").
 QString utcNowText();

@@ -100,6 +100,18 @@ SchemaModule historySchema() {
              exec(db, "ALTER TABLE measurements ADD COLUMN reason_reference {real}");
              exec(db, "ALTER TABLE measurements ADD COLUMN reason_limit {real}");
          }});
+    module.migrations.push_back(
+        {3,
+         QStringLiteral(
+             "tolerance verdicts (good, rework, scrap) with their limits; the machine of a run; readings by point"),
+         [](Database& db) {
+             exec(db, "ALTER TABLE measurements ADD COLUMN verdict TEXT");
+             exec(db, "ALTER TABLE measurements ADD COLUMN lower_limit_mm {real}");
+             exec(db, "ALTER TABLE measurements ADD COLUMN upper_limit_mm {real}");
+             exec(db, "ALTER TABLE runs ADD COLUMN machine TEXT NOT NULL DEFAULT ''");
+             // The report of one control point over the whole history reads the measurements of that point.
+             exec(db, "CREATE INDEX measurements_by_point ON measurements (point_index, part_id)");
+         }});
     return module;
 }
 
@@ -141,9 +153,9 @@ std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
     m_db.transaction([&] {
         QSqlQuery insert = m_db.exec(
             QStringLiteral("INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
-                           " part_length_mm, settings) VALUES (?, 'running', ?, ?, ?, ?, ?, ?)"),
+                           " part_length_mm, settings, machine) VALUES (?, 'running', ?, ?, ?, ?, ?, ?, ?)"),
             {utcNowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm,
-             run.partLengthMm, text(run.settingsJson)});
+             run.partLengthMm, text(run.settingsJson), text(run.machine)});
         runId = m_db.lastInsertId(insert);
         for (std::size_t i = 0; i < run.pointZMm.size(); ++i)
             m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
@@ -167,12 +179,17 @@ void SqlHistoryStore::writeMeasurement(qint64 part, const core::PartMeasurementR
         m_db.exec(
             QStringLiteral("INSERT INTO measurements (part_id, point_index, z_mm, measured_mm, nominal_mm,"
                            " accepted, reason, measured_s, reason_kind, reason_value, reason_reference,"
-                           " reason_limit) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+                           " reason_limit, verdict, lower_limit_mm, upper_limit_mm)"
+                           " VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
             {part, p.pointIndex, p.zMm, nullable<double>(p.measuredMm), p.nominalMm, p.accepted ? 1 : 0, text(p.reason),
              m.timeS,
              p.rejection ? QVariant(QString::fromStdString(core::noticeKindName(p.rejection.kind)))
                          : QVariant(QMetaType::fromType<QString>()),
-             finiteOrNull(p.rejection.value), finiteOrNull(p.rejection.reference), finiteOrNull(p.rejection.limit)});
+             finiteOrNull(p.rejection.value), finiteOrNull(p.rejection.reference), finiteOrNull(p.rejection.limit),
+             p.verdict ? QVariant(QString::fromStdString(core::toleranceVerdictName(*p.verdict)))
+                       : QVariant(QMetaType::fromType<QString>()),
+             p.tolerance ? QVariant(p.tolerance->lowerLimitMm()) : QVariant(QMetaType::fromType<double>()),
+             p.tolerance ? QVariant(p.tolerance->upperLimitMm()) : QVariant(QMetaType::fromType<double>())});
 }
 
 void SqlHistoryStore::recordPart(std::int64_t runId, const core::PartCompletionRecord& part) {
@@ -220,7 +237,7 @@ std::vector<core::RunSummary> SqlHistoryStore::runs() {
         QStringLiteral("SELECT r.id, r.started_at, r.finished_at, r.status, r.preset, r.controller, r.delay_parts,"
                        " r.nominal_diameter_mm, r.part_length_mm, r.settings,"
                        " (SELECT COUNT(*) FROM parts p WHERE p.run_id = r.id),"
-                       " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id)"
+                       " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id), r.machine"
                        " FROM runs r ORDER BY r.id DESC"));
     while (q.next()) {
         core::RunSummary s;
@@ -236,6 +253,7 @@ std::vector<core::RunSummary> SqlHistoryStore::runs() {
         s.description.settingsJson = q.value(9).toString().toStdString();
         s.partCount = q.value(10).toLongLong();
         if (!q.value(11).isNull()) s.lastPartNumber = q.value(11).toLongLong();
+        s.description.machine = q.value(12).toString().toStdString();
         out.push_back(std::move(s));
     }
     q.finish();
@@ -282,7 +300,8 @@ std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std
     {
         QSqlQuery q = m_db.exec(
             QStringLiteral("SELECT m.part_id, m.point_index, m.z_mm, m.measured_mm, m.nominal_mm, m.accepted, m.reason,"
-                           " m.measured_s, m.reason_kind, m.reason_value, m.reason_reference, m.reason_limit"
+                           " m.measured_s, m.reason_kind, m.reason_value, m.reason_reference, m.reason_limit,"
+                           " m.verdict, m.lower_limit_mm, m.upper_limit_mm"
                            " FROM measurements m JOIN parts p ON p.id = m.part_id"
                            " WHERE p.run_id = ? AND p.part_number >= ? ORDER BY p.part_number, m.point_index"),
             {id(runId), id(fromPartNumber)});
@@ -300,6 +319,10 @@ std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std
             p.accepted = q.value(5).toInt() != 0;
             p.reason = q.value(6).toString().toStdString();
             p.rejection = storedRejection(p, part.partNumber, q.value(8), {q.value(9), q.value(10), q.value(11)});
+            if (!q.value(12).isNull()) p.verdict = core::toleranceVerdictFromName(q.value(12).toString().toStdString());
+            if (!q.value(13).isNull() && !q.value(14).isNull())
+                p.tolerance = core::ToleranceZone{p.nominalMm, q.value(14).toDouble() - p.nominalMm,
+                                                  q.value(13).toDouble() - p.nominalMm};
             part.measurement->points.push_back(std::move(p));
         }
     }

@@ -4914,6 +4914,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::ShaftRunPanel</name>
     <message>
+        <source>Pause on scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>ready</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5562,6 +5566,47 @@ Your edits are still here.</source>
         <source>Apply changes</source>
         <comment>button</comment>
         <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Notice</name>
+    <message>
+        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::VerdictCounter</name>
+    <message>
+        <source>Good: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rework: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scrap: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Yield: no part yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Yield: %1 % of %n part(s)</source>
+        <translation>
+            <numerusform>Yield: %1 % of %n part</numerusform>
+            <numerusform>Yield: %1 % of %n parts</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

@@ -4939,6 +4939,10 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
 <context>
     <name>tt::ui::ShaftRunPanel</name>
     <message>
+        <source>Pause on scrap</source>
+        <translation>Пауза при браке</translation>
+    </message>
+    <message>
         <source>ready</source>
         <translation>готов</translation>
     </message>
@@ -5589,6 +5593,48 @@ Your edits are still here.</source>
         <source>Apply changes</source>
         <comment>button</comment>
         <translation>Применить</translation>
+    </message>
+</context>
+<context>
+    <name>Notice</name>
+    <message>
+        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
+        <translation>Пауза: деталь %1 — брак; проверьте станок и продолжите. ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
+        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм больше верхнего предела %6 мм: исправимый брак</translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
+        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм меньше нижнего предела %6 мм: неисправимый брак</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::VerdictCounter</name>
+    <message>
+        <source>Good: %1</source>
+        <translation>Годных: %1</translation>
+    </message>
+    <message>
+        <source>Rework: %1</source>
+        <translation>Доработка: %1</translation>
+    </message>
+    <message>
+        <source>Scrap: %1</source>
+        <translation>Брак: %1</translation>
+    </message>
+    <message>
+        <source>Yield: no part yet</source>
+        <translation>Выход годных: деталей ещё нет</translation>
+    </message>
+    <message numerus="yes">
+        <source>Yield: %1 % of %n part(s)</source>
+        <translation>
+            <numerusform>Выход годных: %1 % из %n детали</numerusform>
+            <numerusform>Выход годных: %1 % из %n деталей</numerusform>
+            <numerusform>Выход годных: %1 % из %n деталей</numerusform>
+        </translation>
     </message>
 </context>
 </TS>

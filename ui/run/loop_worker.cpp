@@ -70,6 +70,7 @@ void LoopWorker::openHistory(const QString& path) {
 std::unique_ptr<LoopWorker::Run> LoopWorker::build(const RunSettings& settings, const MachineMaker& makeMachine) {
     auto run = std::make_unique<Run>();
     run->scenario = config::loadLoopScenario(settings.preset, settings.delay);
+    run->scenario.pauseOnScrap = run->scenario.pauseOnScrap || settings.pauseOnScrap;
     run->plan = core::planShaftRun(
         run->scenario, {core::controllerKindFromName(settings.controller.toStdString()), std::nullopt, std::nullopt});
     run->machine = makeMachine(run->scenario);

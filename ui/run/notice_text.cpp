@@ -50,6 +50,11 @@ QString stateText(const core::Notice& n) {
                 .arg(n.value, 0, 'f', 1);
         case K::RunComplete:
             return QCoreApplication::translate("Notice", "Run complete: part %1 was the last").arg(n.part);
+        case K::PausedOnScrap:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction")
+                .arg(n.part);
         case K::PartFinished:
             return QCoreApplication::translate("Notice", "Part %1 finished").arg(n.part);
         case K::PartMeasured:
@@ -116,6 +121,18 @@ QString faultText(const core::Notice& n) {
             return QCoreApplication::translate("Notice", "The machine did not start part %1: %2")
                 .arg(n.part)
                 .arg(cause(n));
+        case K::OutOfToleranceRework:
+            return QCoreApplication::translate(
+                       "Notice", "Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework")
+                .arg(n.part)
+                .arg(n.point)
+                .arg(mm(n.zMm, 1), mm(n.value), mm(n.value - n.limit), mm(n.limit));
+        case K::OutOfToleranceScrap:
+            return QCoreApplication::translate(
+                       "Notice", "Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap")
+                .arg(n.part)
+                .arg(n.point)
+                .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
         default:
             return {};
     }

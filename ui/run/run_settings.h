@@ -40,6 +40,8 @@ struct RunSettings {
     QString gaugeDeviceId;     ///< assembled lathe: the gauge (id on the Devices page); empty: diameters typed by hand
     QString outputName;        ///< their names on the Devices page (stored with the run)
     QString gaugeName;
+    /// The loop pauses on a scrap part (besides the preset's loop.pause_on_scrap).
+    bool pauseOnScrap = false;
 };
 
 /// The loop as the page shows it, sent by the loop thread after every change.

@@ -23,6 +23,7 @@
 #include "ui/run/notice_text.h"
 #include "ui/run/profile_panel.h"
 #include "ui/run/run_session.h"
+#include "ui/run/verdict_counter.h"
 
 namespace tt::ui {
 
@@ -98,6 +99,8 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
       m_gaugeLabel(new QLabel(this)),
       m_gauge(new QComboBox(this)),
       m_partCounter(new QLabel(this)),
+      m_verdicts(new VerdictCounter(this)),
+      m_pauseOnScrap(new QCheckBox(this)),
       m_profile(new ProfilePanel(this)),
       m_lathePanel(new LathePanel(this)),
       m_state(new QLabel(this)),
@@ -296,6 +299,10 @@ QWidget* ShaftRunPanel::buildSide() {
     stateRow->addWidget(m_state, 1);
     stateRow->addWidget(m_partCounter, 0, Qt::AlignRight | Qt::AlignTop);
     column->addLayout(stateRow);
+    m_pauseOnScrap->setObjectName(QStringLiteral("pauseOnScrapCheck"));
+    m_pauseOnScrap->setStyleSheet(m_manualMode->styleSheet());
+    column->addWidget(m_verdicts);
+    column->addWidget(m_pauseOnScrap);
     column->addWidget(m_detail);
     column->addWidget(m_devices);
     column->addWidget(m_skip);
@@ -311,6 +318,7 @@ void ShaftRunPanel::retranslate() {
     m_presetLabel->setText(tr("Set-up"));
     m_controllerLabel->setText(tr("Controller"));
     m_delayLabel->setText(tr("Delay z, parts"));
+    m_pauseOnScrap->setText(tr("Pause on scrap"));
     m_speedLabel->setText(tr("Speed"));
     m_controller->setItemText(0, tr("LQG"));
     m_controller->setItemText(1, tr("EWMA"));
@@ -411,6 +419,7 @@ RunSettings ShaftRunPanel::settings() const {
     s.delay = m_delay->value();
     s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
     s.manualEntry = m_manualMode->isChecked();
+    s.pauseOnScrap = m_pauseOnScrap->isChecked();
     s.databasePath = m_context.databasePath;
     s.seed = QRandomGenerator::global()->generate64() >> 12;
     if (s.operatorCycle) {
@@ -474,6 +483,7 @@ void ShaftRunPanel::onStarted(const RunLayout& layout) {
     m_layout = layout;
     m_haveRun = true;
     m_profile->setRun(layout);
+    m_verdicts->reset();
     m_manual->setPoints(layout.pointZMm, layout.nominalDiameterMm, layout.plausibleRangeMm);
     addAlarm(tr("Run started: %1, %2, z = %3, %4")
                  .arg(layout.preset, m_controller->itemText(m_controller->findData(layout.controller)))
@@ -501,6 +511,7 @@ void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
 
 void ShaftRunPanel::onLoopEvent(const core::LoopEvent& event) {
     m_profile->onLoopEvent(event);
+    m_verdicts->onLoopEvent(event);
     if (event.kind == core::LoopEvent::Kind::Alarm)
         addAlarm(alarmText(event.notice), event.alarmKind != "correction-limited");
     if (event.kind == core::LoopEvent::Kind::PartStarted) updateLathePanel();
@@ -523,7 +534,8 @@ void ShaftRunPanel::updateControls() {
     m_start->setEnabled(idle);
     m_pause->setEnabled(s == core::LoopState::Running || s == core::LoopState::Paused);
     m_stop->setEnabled(!idle);
-    for (QWidget* w : std::initializer_list<QWidget*>{m_preset, m_controller, m_delay, m_machine, m_output, m_gauge})
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{m_preset, m_controller, m_delay, m_machine, m_output, m_gauge, m_pauseOnScrap})
         w->setEnabled(idle);
     m_pause->setText(s == core::LoopState::Paused ? tr("Continue") : tr("Pause"));
     // While a run goes, the page shows its machine; otherwise the one chosen.

@@ -24,6 +24,7 @@ class LathePanel;
 class ManualEntryPanel;
 class ProfilePanel;
 class RunSession;
+class VerdictCounter;
 
 /// Run-to-run control of the shaft profile (paper 000), the Run page's first tab: the closed loop with the
 /// run history. Start / Pause / Stop, the set-up, the controller, the delay z and the speed (machines whose
@@ -110,6 +111,8 @@ private:
     QComboBox* m_gauge;
     QWidget* m_devicePicker = nullptr;
     QLabel* m_partCounter;
+    VerdictCounter* m_verdicts;
+    QCheckBox* m_pauseOnScrap;
     ProfilePanel* m_profile;
     LathePanel* m_lathePanel;
     QLabel* m_state;

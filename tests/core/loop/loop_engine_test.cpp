@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include "core/control/run_to_run_plant.h"
@@ -36,7 +38,7 @@ public:
 /// its station, an in-memory history and the engine with a test integrator.
 struct Rig {
     explicit Rig(int delay, std::int64_t parts, double disturbanceVariance = 0.0, std::uint64_t seed = 3,
-                 double gain = 0.5) {
+                 double gain = 0.5, const std::function<void(LoopConfig&)>& adjust = {}) {
         setup.beamElementMm = 2.5;
         setup.seed = seed;
         const std::vector<double> points = paperControlPointsMm(325.0);
@@ -51,6 +53,7 @@ struct Rig {
         config.nominalDiameterMm = 27.0;
         config.delayParts = delay;
         config.lastPartNumber = parts;
+        if (adjust) adjust(config);
         auto c = std::make_unique<test::IntegratorController>(5, gain);
         controller = c.get();
         engine = std::make_unique<LoopEngine>(
@@ -351,6 +354,66 @@ TEST(LoopEngine, RefusesAControllerForOtherPoints) {
                    LoopPorts{rig.station->machine(), rig.station->output(), rig.station->gauge(), rig.clock, nullptr},
                    std::make_unique<test::IntegratorController>(5, 0.5)),
         std::invalid_argument);
+}
+
+// Tolerance verdicts (issue 12): a zone of 27 +-0.005 mm, tighter than the barrel of the first parts (about
+// +0.1 mm mid-shaft before the integrator takes it out) and than the scatter of an AR(1) disturbance of variance
+// 1e-4 mm^2 (sigma 0.01 mm), gives rework and scrap parts; each stored reading carries its verdict, consistent
+// with its limits, independent of "accepted", and each point out of tolerance raised one alarm.
+TEST(LoopEngine, ToleranceVerdictsAreStoredAndOutOfTolerancePointsRaiseAlarms) {
+    const auto tight = [](LoopConfig& c) { c.tolerances.assign(5, ToleranceZone{27.0, 0.005, -0.005}); };
+    Rig rig(1, 40, 1e-4, 3, 0.5, tight);
+    rig.engine->start(rig.run());
+    ASSERT_TRUE(runSimulation(*rig.engine, rig.clock, *rig.station).complete);
+    VerdictCounts parts;
+    int outOfTolerance = 0, scrapButAccepted = 0;
+    for (const StoredPart& part : rig.history.parts(1)) {
+        ASSERT_TRUE(part.measurement);
+        for (const PointMeasurementRecord& p : part.measurement->points) {
+            ASSERT_TRUE(p.verdict && p.tolerance && p.measuredMm) << "part " << part.partNumber;
+            EXPECT_EQ(*p.verdict, outerDiameterVerdict(*p.tolerance, *p.measuredMm));
+            outOfTolerance += *p.verdict != ToleranceVerdict::Good;
+            scrapButAccepted += *p.verdict == ToleranceVerdict::Scrap && p.accepted;
+        }
+        parts.add(*part.measurement->verdict());
+    }
+    EXPECT_GT(parts.rework, 0);
+    EXPECT_GT(parts.scrap, 0);
+    EXPECT_EQ(parts.total(), 40);
+    EXPECT_GT(scrapButAccepted, 0) << "a scrap part's plausible reading is still used by the controller";
+    const auto alarms = rig.history.alarms(1);
+    EXPECT_EQ(std::count_if(alarms.begin(), alarms.end(), [](const auto& a) { return a.kind == "out-of-tolerance"; }),
+              outOfTolerance);
+    // The first parts: material left mid-shaft (the barrel) is rework, named with its point and deviation.
+    EXPECT_EQ(rig.history.parts(1).front().measurement->verdict(), ToleranceVerdict::Rework);
+    const auto first =
+        std::find_if(alarms.begin(), alarms.end(), [](const auto& a) { return a.kind == "out-of-tolerance"; });
+    ASSERT_NE(first, alarms.end());
+    EXPECT_NE(first->message.find("above the upper limit 27.005 mm"), std::string::npos) << first->message;
+}
+
+TEST(LoopEngine, TheLoopPausesOnAScrapPartWhenAskedAndContinuesWhenTheOperatorSaysSo) {
+    const auto tight = [](LoopConfig& c) {
+        c.tolerances.assign(5, ToleranceZone{27.0, 0.005, -0.005});
+        c.pauseOnScrap = true;
+    };
+    Rig rig(1, 40, 1e-4, 3, 0.5, tight);
+    rig.engine->start(rig.run());
+    rig.runUntil(1e7);
+    ASSERT_EQ(rig.engine->state(), LoopState::Paused) << rig.engine->detail();
+    EXPECT_EQ(rig.engine->status().kind, NoticeKind::PausedOnScrap);
+    const std::int64_t scrapPart = rig.engine->status().part;
+    std::int64_t firstScrap = 0;
+    for (const StoredPart& part : rig.history.parts(1))
+        if (!firstScrap && part.measurement && part.measurement->verdict() == ToleranceVerdict::Scrap)
+            firstScrap = part.partNumber;
+    EXPECT_EQ(scrapPart, firstScrap);
+    const std::int64_t next = rig.engine->nextPartNumber();
+    rig.runUntil(rig.clock.nowS() + 3600.0);
+    EXPECT_EQ(rig.engine->nextPartNumber(), next) << "no new part while paused";
+    rig.engine->continueRun();
+    rig.runUntil(rig.clock.nowS() + 3600.0);
+    EXPECT_GT(rig.engine->nextPartNumber(), next);
 }
 
 }  // namespace

@@ -52,7 +52,7 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     TT_REQUIRE_BACKEND(scratch);
     Database db(scratch.config());
     SqlHistoryStore store(db);
-    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 2) << "version 2 keeps the kind of a rejection";
+    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 3) << "version 3 keeps the tolerance verdicts";
     const std::int64_t run = store.beginRun(paperRun(2));
     store.recordPart(run, finished(1));
     store.recordMeasurement(run, measured(1, 0.012));
@@ -102,6 +102,36 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     store.finishRun(run, "complete");
     EXPECT_EQ(store.runs()[0].status, "complete");
     EXPECT_FALSE(store.runs()[0].finishedAt.empty());
+}
+
+// Version 3: each reading's tolerance verdict and limits, apart from "accepted", and the machine of a run.
+TEST_P(HistoryStoreTest, StoresTheToleranceVerdictsApartFromAcceptedAndTheMachine) {
+    test::ScratchDatabase scratch(GetParam());
+    TT_REQUIRE_BACKEND(scratch);
+    Database db(scratch.config());
+    SqlHistoryStore store(db);
+    core::RunDescription description = paperRun(1);
+    description.machine = "lathe-7";
+    const std::int64_t run = store.beginRun(description);
+    store.recordPart(run, finished(1));
+    auto m = measured(1, 0.0);
+    const core::ToleranceZone h9{27.0, 0.0, -0.052};
+    m.points[0].tolerance = h9;
+    m.points[0].verdict = core::ToleranceVerdict::Scrap;  // accepted all the same: a plausible reading
+    m.points[1].tolerance = h9;
+    m.points[1].verdict = core::ToleranceVerdict::Rework;
+    store.recordMeasurement(run, m);
+    EXPECT_EQ(store.runs()[0].description.machine, "lathe-7");
+    const auto& p = store.parts(run)[0].measurement->points;
+    EXPECT_EQ(p[0].verdict, core::ToleranceVerdict::Scrap);
+    EXPECT_TRUE(p[0].accepted);
+    EXPECT_EQ(p[1].verdict, core::ToleranceVerdict::Rework);
+    ASSERT_TRUE(p[1].tolerance);
+    EXPECT_NEAR(p[1].tolerance->upperLimitMm(), 27.0, 1e-12);
+    EXPECT_NEAR(p[1].tolerance->lowerLimitMm(), 26.948, 1e-12);
+    EXPECT_FALSE(p[2].verdict) << "no tolerance: no verdict";
+    EXPECT_FALSE(p[2].tolerance);
+    EXPECT_EQ(store.parts(run)[0].measurement->verdict(), core::ToleranceVerdict::Scrap);
 }
 
 TEST_P(HistoryStoreTest, APartIsOneTransaction) {
