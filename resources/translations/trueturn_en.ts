@@ -1087,6 +1087,18 @@
         <source>rejected by the controller: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -5565,21 +5577,6 @@ Your edits are still here.</source>
     <message>
         <source>Apply changes</source>
         <comment>button</comment>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>Notice</name>
-    <message>
-        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1089,6 +1089,18 @@
         <source>rejected by the controller: %1</source>
         <translation>отклонено регулятором: %1</translation>
     </message>
+    <message>
+        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
+        <translation>Пауза: деталь %1 — брак; проверьте станок и продолжите. ЧПУ сохраняет последнюю коррекцию</translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
+        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм больше верхнего предела %6 мм: исправимый брак</translation>
+    </message>
+    <message>
+        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
+        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм меньше нижнего предела %6 мм: неисправимый брак</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -5593,21 +5605,6 @@ Your edits are still here.</source>
         <source>Apply changes</source>
         <comment>button</comment>
         <translation>Применить</translation>
-    </message>
-</context>
-<context>
-    <name>Notice</name>
-    <message>
-        <source>Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction</source>
-        <translation>Пауза: деталь %1 — брак; проверьте станок и продолжите. ЧПУ сохраняет последнюю коррекцию</translation>
-    </message>
-    <message>
-        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm above the upper limit %6 mm: rework</source>
-        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм больше верхнего предела %6 мм: исправимый брак</translation>
-    </message>
-    <message>
-        <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
-        <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм меньше нижнего предела %6 мм: неисправимый брак</translation>
     </message>
 </context>
 <context>
