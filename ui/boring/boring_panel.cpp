@@ -23,7 +23,6 @@
 #include "ui/boring/hold_reason.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 
@@ -318,9 +317,10 @@ void BoringPanel::rebuildTools() {
     m_tools.clear();
     m_toolProblem.clear();
     try {
-        const std::unique_ptr<storage::Database> db = openContextDatabase(m_context.databasePath);
-        storage::ToolStore store(*db);
-        m_tools = store.tools();
+        if (storage::ToolStore* store = m_context.data().tools())
+            m_tools = store->tools();
+        else
+            m_toolProblem = m_context.data().problem();
     } catch (const std::exception& e) {
         m_toolProblem = QString::fromStdString(e.what());
     }

@@ -18,7 +18,6 @@
 #include "ui/calibration/probe_wizard.h"
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 
@@ -185,16 +184,9 @@ QString CalibrationPage::deviceNotice() const {
 }
 
 void CalibrationPage::openStores() {
-    try {
-        m_db = openContextDatabase(context().databasePath);
-        m_calibrations = std::make_unique<storage::CalibrationStore>(*m_db);
-        m_tools = std::make_unique<storage::ToolStore>(*m_db);
-    } catch (const std::exception& e) {
-        m_calibrations.reset();
-        m_tools.reset();
-        m_db.reset();
-        m_storeError = QString::fromStdString(e.what());
-    }
+    m_calibrations = context().data().calibration();
+    m_tools = context().data().tools();
+    if (!m_calibrations || !m_tools) m_storeError = context().data().problem();
 }
 
 std::vector<DeviceCalibrationProbe*> CalibrationPage::offeredProbes() const {
@@ -237,8 +229,7 @@ void CalibrationPage::showOverview() {
 void CalibrationPage::startProbeCalibration() {
     m_deviceNotice->hide();
     if (!m_probeWizard) {
-        m_probeWizard =
-            new ProbeCalibrationWizard(context(), m_probeSession, offeredProbes(), m_calibrations.get(), this);
+        m_probeWizard = new ProbeCalibrationWizard(context(), m_probeSession, offeredProbes(), m_calibrations, this);
         m_probeWizard->setWindowFlags(Qt::Widget);  // a page of the main window, not a dialog
         m_stack->addWidget(m_probeWizard);
         connect(m_probeWizard, &QWizard::accepted, this, [this] {
@@ -255,8 +246,7 @@ void CalibrationPage::startProbeCalibration() {
 void CalibrationPage::startKpCalibration() {
     m_deviceNotice->hide();
     if (!m_kpWizard) {
-        m_kpWizard =
-            new KpCalibrationWizard(context(), m_kpSession, offeredDrives(), m_calibrations.get(), m_tools.get(), this);
+        m_kpWizard = new KpCalibrationWizard(context(), m_kpSession, offeredDrives(), m_calibrations, m_tools, this);
         m_kpWizard->setWindowFlags(Qt::Widget);
         m_stack->addWidget(m_kpWizard);
         connect(m_kpWizard, &QWizard::accepted, this, [this] {

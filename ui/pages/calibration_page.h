@@ -80,9 +80,8 @@ private:
     void refreshLists();
     void showOverview();
 
-    std::unique_ptr<storage::Database> m_db;
-    std::unique_ptr<storage::CalibrationStore> m_calibrations;
-    std::unique_ptr<storage::ToolStore> m_tools;
+    storage::CalibrationStore* m_calibrations = nullptr;  ///< from the application's data access object
+    storage::ToolStore* m_tools = nullptr;
     QString m_storeError;
     QPointer<devices::DeviceManager> m_devices;
     std::vector<std::unique_ptr<DeviceCalibrationProbe>> m_deviceProbes;  ///< adapters of the devices' probes

@@ -27,7 +27,6 @@
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/plot/chart.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 namespace {
@@ -56,8 +55,7 @@ protected:
         t.material = "Steel";
         t.youngsModulusMpa = 210000.0;
         t.currentToForceGainNPerA = 150.0;
-        const auto db = openContextDatabase(context.databasePath);
-        storage::ToolStore(*db).apply({{std::nullopt, t}}, QStringLiteral("Anna Test"));
+        context.data().tools()->apply({{std::nullopt, t}}, QStringLiteral("Anna Test"));
     }
     QString addSimulator(devices::DeviceKind kind, const QString& name) {
         const QString id = manager.addDevice(QStringLiteral("simulator"), kind, name, {});

@@ -22,7 +22,6 @@
 #include "ui/app_state.h"
 #include "ui/boring/boring_panel.h"
 #include "ui/boring/compensation_session.h"
-#include "ui/tools/database_connection.h"
 
 namespace tt::ui {
 namespace {
@@ -47,7 +46,7 @@ protected:
         t.overhangMm = 300.0;
         t.youngsModulusMpa = 210000.0;
         t.currentToForceGainNPerA = 150.0;
-        storage::ToolStore(*openContextDatabase(context.databasePath)).apply({{std::nullopt, t}}, QStringLiteral("T"));
+        context.data().tools()->apply({{std::nullopt, t}}, QStringLiteral("T"));
         drive = manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
                                   QStringLiteral("Cross feed"), {{QStringLiteral("pollMs"), 10}});
         output = manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::CorrectionOutput,
