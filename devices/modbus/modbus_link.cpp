@@ -2,10 +2,13 @@
 
 #include <QCoreApplication>
 #include <QModbusReply>
+
 #include <QModbusRtuSerialClient>
 #include <QModbusTcpClient>
 #include <QSerialPort>
+#include "devices/api/device_log.h"
 
+#include "devices/api/device_log.h"
 #include "devices/api/serial_settings.h"
 #include "devices/modbus/modbus_settings.h"
 
@@ -141,6 +144,7 @@ bool ModbusLink::write(std::uint16_t start, const std::vector<std::uint16_t>& wo
 
 void ModbusLink::watch(QModbusReply* reply, const QString& what, Done done) {
     ++m_inFlight;
+    qCDebug(lcDeviceTraffic).noquote() << m_endpoint << "->" << what;
     auto finish = [this, reply, what, done = std::move(done)] {
         --m_inFlight;
         ModbusResult r;
@@ -175,6 +179,10 @@ void ModbusLink::watch(QModbusReply* reply, const QString& what, Done done) {
                               .arg(what, m_endpoint, reply->errorString());
                 break;
         }
+        if (r.ok)
+            qCDebug(lcDeviceTraffic).noquote() << m_endpoint << "<-" << r.words;
+        else
+            qCWarning(lcDevices).noquote() << r.error;
         reply->deleteLater();
         done(r);
     };
