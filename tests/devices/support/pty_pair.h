@@ -60,6 +60,9 @@ public:
         if (m_slaveHold >= 0) ::close(m_slaveHold);
         m_master = -1;
         m_slaveHold = -1;
+        // The name leads nowhere until plug(): the closed pseudo-terminal's number may be given to another
+        // test's pair meanwhile, and a device reopening the old path would find that one.
+        if (!m_link.isEmpty()) QFile::remove(m_link);
     }
 
     /// Plugs the cable in again: a new pair behind the same name.
