@@ -6,8 +6,8 @@
 #include <optional>
 #include <vector>
 
-#include "devices/simulator/simulated_boring_station.h"
 #include "core/sim/rigs/known_load_rig.h"
+#include "devices/simulator/simulated_boring_station.h"
 #include "devices/simulator/simulated_device.h"
 
 namespace tt::devices {

@@ -11,8 +11,8 @@
 #include <QTest>
 
 #include "boring_tab.h"
-#include "english_words.h"
 #include "devices/api/device_manager.h"
+#include "english_words.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"

@@ -19,6 +19,7 @@
 
 #include "core/storage/database.h"
 #include "devices/api/device_manager.h"
+#include "run_window.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -42,29 +43,13 @@ bool waitFor(const std::function<bool()>& done, int timeoutMs) {
     return true;
 }
 
-void typeAndEnter(QLineEdit* field, const QString& text) {
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClicks(field, text);
-    QTest::keyClick(field, Qt::Key_Return);
-}
+using test::typeAndEnter;
 
-class RunPageTest : public ::testing::Test {
-protected:
-    QTemporaryDir dir;
-    test::ScriptedPrompt prompt;
-    AppState state;
-    LanguageSwitcher language;
-    devices::DeviceManager devices;
-    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
-};
+class RunPageTest : public test::RunWindowTest {};
 
 TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
     MainWindow window(context);
-    window.resize(1280, 800);
-    window.show();
-    window.showPage(PageId::Run);
-    auto* page = qobject_cast<RunPage*>(window.page(PageId::Run));
+    RunPage* page = showRunPage(window);
     ASSERT_NE(page, nullptr);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_page_idle")));
     EXPECT_NE(page->session().loopThread(), QThread::currentThread()) << "the loop has its own thread";

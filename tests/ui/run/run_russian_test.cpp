@@ -16,6 +16,7 @@
 
 #include "devices/api/device_manager.h"
 #include "english_words.h"
+#include "run_window.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -45,35 +46,20 @@ bool anyAlarmContains(const QListWidget* alarms, const QString& text) {
     return false;
 }
 
-void typeAndEnter(QLineEdit* field, const QString& text) {
-    field->setFocus();
-    field->selectAll();
-    QTest::keyClicks(field, text);
-    QTest::keyClick(field, Qt::Key_Return);
-}
+using test::typeAndEnter;
 
-class RunTabInRussian : public ::testing::Test {
+class RunTabInRussian : public test::RunWindowTest {
 protected:
     void SetUp() override {
         QSettings().remove(QStringLiteral("run"));
         ASSERT_TRUE(language.apply(QStringLiteral("ru")));
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
-
-    QTemporaryDir dir;
-    test::ScriptedPrompt prompt;
-    AppState state;
-    LanguageSwitcher language;
-    devices::DeviceManager devices;
-    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 
 TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
     MainWindow window(context);
-    window.resize(1280, 800);
-    window.show();
-    window.showPage(PageId::Run);
-    auto* page = qobject_cast<RunPage*>(window.page(PageId::Run));
+    RunPage* page = showRunPage(window);
     ASSERT_NE(page, nullptr);
     ShaftRunPanel& shaft = page->shaft();
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600

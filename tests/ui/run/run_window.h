@@ -1,0 +1,46 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QLineEdit>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "devices/api/device_manager.h"
+#include "scripted_prompt.h"
+#include "ui/app_state.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/pages/run_page.h"
+
+namespace tt::ui::test {
+
+/// The services of a main window for the Run page tests: a scratch history, a scripted prompt, the
+/// device manager with the built-in simulator.
+class RunWindowTest : public ::testing::Test {
+protected:
+    /// The window at 1280 x 800 showing the Run page; the page, or null.
+    RunPage* showRunPage(MainWindow& window) {
+        window.resize(1280, 800);
+        window.show();
+        window.showPage(PageId::Run);
+        return qobject_cast<RunPage*>(window.page(PageId::Run));
+    }
+
+    QTemporaryDir dir;
+    ScriptedPrompt prompt;
+    AppState state;
+    LanguageSwitcher language;
+    devices::DeviceManager devices;
+    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
+};
+
+/// Types `text` into `field` as the operator does and presses Enter.
+inline void typeAndEnter(QLineEdit* field, const QString& text) {
+    field->setFocus();
+    field->selectAll();
+    QTest::keyClicks(field, text);
+    QTest::keyClick(field, Qt::Key_Return);
+}
+
+}  // namespace tt::ui::test
