@@ -87,6 +87,8 @@ installed_by_us=1
 "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends \
     -o DPkg::Lock::Timeout=300 "$deb" >/dev/null || fail "apt-get install $deb"
 say "installed trueturn $version"
+# The installed files are the ones the package's md5sums list (the staging edits happen before).
+"${sudo_cmd[@]}" dpkg --verify trueturn || fail "dpkg --verify trueturn: installed files differ from the package"
 
 # The installed program, away from the user's settings and history, with no override of the plugins.
 home="$work/home"
