@@ -38,6 +38,10 @@ cleanup() {
 trap cleanup EXIT
 
 # --- Build the packages --------------------------------------------------------------------------
+# A tree configured before help2man was installed learns of it (and of the manual page) here.
+if ! grep -q '^TRUETURN_HELP2MAN:FILEPATH=/' "$build_dir/CMakeCache.txt"; then
+    cmake "$build_dir" >/dev/null
+fi
 # The manual page and the changelog are built with the executable; the plugins are its dependencies.
 cmake --build "$build_dir" --target trueturn trueturn_manpage trueturn_changelog -j "$(nproc)" >/dev/null
 cpack --config "$build_dir/CPackConfig.cmake" -B "$work/out" >/dev/null
