@@ -82,7 +82,10 @@ appstreamcli validate --no-net "$work/root/usr/share/metainfo/io.trueturn.TrueTu
 
 # --- Install into the machine --------------------------------------------------------------------
 # One check at a time on this machine: the package is installed system-wide.
-exec 9>/tmp/trueturn-check-package.lock
+# (A read-only descriptor is enough for flock, so root's and a sudo user's runs share the lock file.)
+lock=/tmp/trueturn-check-package.lock
+[[ -e $lock ]] || (umask 0 && : >"$lock")
+exec 9<"$lock"
 flock 9
 if dpkg-query -W -f='${Status}' trueturn 2>/dev/null | grep -q 'install ok installed'; then
     fail "trueturn $(dpkg-query -W -f='${Version}' trueturn) is already installed; remove it first (apt-get purge trueturn)"
