@@ -2,7 +2,8 @@
 # Builds the TrueTurn packages (.deb and .tar.gz, CPack), checks them (lintian without errors,
 # desktop-file-validate, appstreamcli validate), installs the .deb into this machine, runs the
 # INSTALLED trueturn (--version, a 200-part simulation as JSON, the offscreen GUI with the installed
-# device plugins), then purges the package and checks nothing of it is left.
+# device plugins; the .tar.gz unpacked anywhere does the same), then purges the package and checks
+# nothing of it is left.
 # Needs root or sudo, and an already configured build tree (./test.sh makes one).
 # Usage: scripts/check-package.sh [build-dir]        (default: build)
 set -euo pipefail
@@ -80,6 +81,42 @@ desktop-file-validate "$work/root/usr/share/applications/trueturn.desktop" || fa
 appstreamcli validate --no-net "$work/root/usr/share/metainfo/io.trueturn.TrueTurn.metainfo.xml" ||
     fail "appstreamcli validate"
 
+# --- The .tar.gz, unpacked anywhere -------------------------------------------------------------
+# A program away from the user's settings and history, with no override of the plugin folder.
+home="$work/home"
+mkdir -p "$home" && chmod 700 "$home"
+run_isolated() {
+    env -u TRUETURN_PLUGIN_DIR -u DISPLAY -u WAYLAND_DISPLAY HOME="$home" XDG_CONFIG_HOME="$home/.config" \
+        XDG_DATA_HOME="$home/.local/share" XDG_RUNTIME_DIR="$home" "$@"
+}
+# smoke_gui <executable> <plugin folder> <label>: the operator terminal, offscreen, renders every page
+# and loads every device plugin of the package from <plugin folder> (Qt's plugin loader reports each
+# library it loads; the application reports any file that is not a TrueTurn device plugin, or a missing
+# folder, as "trueturn: devices: ...").
+smoke_gui() {
+    local exe=$1 folder=$2 label=$3 out="$work/gui-$3"
+    QT_QPA_PLATFORM=offscreen QT_DEBUG_PLUGINS=1 run_isolated "$exe" --lang en --db "$out.sqlite" \
+        --screenshots "$out.shots" >"$out.out" 2>"$out.err" || {
+        tail -20 "$out.err" >&2
+        fail "the $label operator terminal did not render its pages"
+    }
+    local pages
+    pages=$(find "$out.shots" -name '*.png' | wc -l)
+    [[ $pages -ge 1 ]] && grep -q "trueturn: $pages page screenshots written" "$out.out" ||
+        fail "$label screenshots: $(cat "$out.out")"
+    if grep '^trueturn: devices:' "$out.err" >&2; then fail "the $label terminal reports device problems"; fi
+    local plugin
+    for plugin in $(grep '^/usr/lib/trueturn/plugins/' "$work/files" | xargs -n1 basename); do
+        grep -q "\"$folder/$plugin\" loaded library" "$out.err" || fail "the $label terminal did not load $folder/$plugin"
+    done
+    say "$label terminal: $pages pages rendered, $plugins device plugins loaded from $folder"
+}
+mkdir "$work/tgz"
+tar -xzf "$tgz" -C "$work/tgz"
+unpacked=$(dirname "$(dirname "$(find "$work/tgz" -path '*/bin/trueturn')")")
+[[ $(run_isolated "$unpacked/bin/trueturn" --version) == "TrueTurn $version" ]] || fail "the .tar.gz's trueturn --version"
+smoke_gui "$unpacked/bin/trueturn" "$unpacked/lib/trueturn/plugins" unpacked
+
 # --- Install into the machine --------------------------------------------------------------------
 # One check at a time on this machine: the package is installed system-wide.
 # (A read-only descriptor is enough for flock, so root's and a sudo user's runs share the lock file.)
@@ -97,13 +134,7 @@ say "installed trueturn $version"
 # The installed files are the ones the package's md5sums list (the staging edits happen before).
 "${sudo_cmd[@]}" dpkg --verify trueturn || fail "dpkg --verify trueturn: installed files differ from the package"
 
-# The installed program, away from the user's settings and history, with no override of the plugins.
-home="$work/home"
-mkdir -p "$home" && chmod 700 "$home"
-run_installed() {
-    env -u TRUETURN_PLUGIN_DIR -u DISPLAY -u WAYLAND_DISPLAY HOME="$home" XDG_CONFIG_HOME="$home/.config" \
-        XDG_DATA_HOME="$home/.local/share" XDG_RUNTIME_DIR="$home" /usr/bin/trueturn "$@"
-}
+run_installed() { run_isolated /usr/bin/trueturn "$@"; }
 [[ $(command -v trueturn) == /usr/bin/trueturn ]] || fail "trueturn on the PATH is $(command -v trueturn)"
 [[ $(run_installed --version) == "TrueTurn $version" ]] || fail "trueturn --version says '$(run_installed --version)'"
 zcat /usr/share/man/man1/trueturn.1.gz | grep -q '^\.TH TRUETURN "1"' || fail "the installed manual page"
@@ -123,23 +154,7 @@ assert 1.0 < d["k_eff"] and abs(d["k_eff"] - analytic) < 0.3 * analytic, (d["k_e
 print(f"check-package: simulate: k_eff {d['k_eff']:.2f} (analytic {analytic:.2f}) over 200 parts")
 EOF
 
-# The operator terminal, offscreen: every page rendered, and every installed device plugin loaded from
-# /usr/lib/trueturn/plugins (Qt's plugin loader reports each library it loads; the application reports
-# any file that is not a TrueTurn device plugin as "trueturn: devices: ...").
-QT_QPA_PLATFORM=offscreen QT_DEBUG_PLUGINS=1 run_installed --lang en --db "$work/history.sqlite" \
-    --screenshots "$work/shots" >"$work/gui.out" 2>"$work/gui.err" || {
-    tail -20 "$work/gui.err" >&2
-    fail "the installed operator terminal did not render its pages"
-}
-pages=$(find "$work/shots" -name '*.png' | wc -l)
-[[ $pages -ge 1 ]] && grep -q "trueturn: $pages page screenshots written" "$work/gui.out" ||
-    fail "screenshots: $(cat "$work/gui.out")"
-if grep '^trueturn: devices:' "$work/gui.err" >&2; then fail "the installed terminal reports device problems"; fi
-for plugin in $(grep '^/usr/lib/trueturn/plugins/' "$work/files"); do
-    grep -q "\"$plugin\" loaded library" "$work/gui.err" || fail "the installed terminal did not load $plugin"
-done
-say "installed terminal: $pages pages rendered, $plugins device plugins loaded from /usr/lib/trueturn/plugins"
-
+smoke_gui /usr/bin/trueturn /usr/lib/trueturn/plugins installed
 # --- Remove it cleanly ---------------------------------------------------------------------------
 "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get purge -y -qq -o DPkg::Lock::Timeout=300 trueturn >/dev/null ||
     fail "apt-get purge trueturn"
