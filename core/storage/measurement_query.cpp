@@ -1,45 +1,213 @@
 #include "core/storage/measurement_query.h"
 
+#include <QSqlError>
 #include <QSqlQuery>
 #include <QStringList>
+#include <cmath>
+#include <map>
 
 #include "core/storage/history_store.h"
 
 namespace tt::storage {
 
-std::vector<MeasurementRow> queryMeasurements(Database& db, const MeasurementFilter& filter) {
-    db.migrate(historySchema());
+namespace {
+
+/// The FROM and WHERE of the plausible readings a filter chooses (a value measured and not refused as
+/// implausible or not a number), with their bindings.
+struct Selection {
+    QString from;
+    QString where;
+    QVariantList bindings;
+};
+
+/// `withParts`: join the parts (their numbers and order are read); else only when the filter needs them.
+Selection selectionOf(const MeasurementFilter& filter, bool withParts) {
     QStringList where{QStringLiteral("m.measured_mm IS NOT NULL"),
                       QStringLiteral("(m.reason_kind IS NULL OR m.reason_kind NOT IN ('implausible', 'not-finite', "
                                      "'not-a-number'))")};
-    QVariantList bindings;
+    Selection s;
     if (filter.runId) {
-        where << QStringLiteral("r.id = ?");
-        bindings << QVariant(static_cast<qlonglong>(*filter.runId));
+        where << QStringLiteral("p.run_id = ?");
+        s.bindings << QVariant(static_cast<qlonglong>(*filter.runId));
     }
     if (filter.pointIndex) {
         where << QStringLiteral("m.point_index = ?");
-        bindings << *filter.pointIndex;
+        s.bindings << *filter.pointIndex;
     }
     if (filter.fromUtc) {
         where << QStringLiteral("p.recorded_at >= ?");
-        bindings << QString::fromStdString(*filter.fromUtc);
+        s.bindings << QString::fromStdString(*filter.fromUtc);
     }
     if (filter.toUtc) {
         where << QStringLiteral("p.recorded_at < ?");
-        bindings << QString::fromStdString(*filter.toUtc);
+        s.bindings << QString::fromStdString(*filter.toUtc);
     }
     if (filter.machine) {
         where << QStringLiteral("r.machine = ?");
-        bindings << QString::fromStdString(*filter.machine);
+        s.bindings << QString::fromStdString(*filter.machine);
     }
-    QSqlQuery q = db.exec(
-        QStringLiteral("SELECT r.id, r.machine, p.part_number, p.recorded_at, m.measured_s, m.point_index, m.z_mm,"
-                       " m.nominal_mm, m.measured_mm, m.accepted, m.verdict, m.lower_limit_mm, m.upper_limit_mm"
-                       " FROM measurements m JOIN parts p ON p.id = m.part_id JOIN runs r ON r.id = p.run_id"
-                       " WHERE ") +
-            where.join(QStringLiteral(" AND ")) + QStringLiteral(" ORDER BY r.id, p.part_number, m.point_index"),
-        bindings);
+    const bool parts = withParts || filter.runId || filter.fromUtc || filter.toUtc || filter.machine;
+    s.from = QStringLiteral(" FROM measurements m");
+    if (parts) s.from += QStringLiteral(" JOIN parts p ON p.id = m.part_id");
+    if (filter.machine) s.from += QStringLiteral(" JOIN runs r ON r.id = p.run_id");
+    s.where = QStringLiteral(" WHERE ") + where.join(QStringLiteral(" AND "));
+    return s;
+}
+
+/// A read whose rows are taken once, front to back: SQLite then keeps no copy of the rows already read.
+QSqlQuery select(Database& db, const QString& sql, const QVariantList& bindings) {
+    QSqlQuery q(db.connection());
+    if (!db.isPostgres()) q.setForwardOnly(true);
+    bool ok = q.prepare(db.dialectSql(sql));
+    if (ok) {
+        for (const QVariant& value : bindings)
+            q.addBindValue(value);
+        ok = q.exec();
+    }
+    if (!ok)
+        throw StorageError("reading the history failed: " + q.lastError().text().trimmed().toStdString() + " [" +
+                           sql.left(80).toStdString() + "]");
+    return q;
+}
+
+/// The verdicts of the chosen readings counted per point in SQL.
+std::map<int, core::VerdictCounts> verdictCounts(Database& db, const MeasurementFilter& filter) {
+    const Selection s = selectionOf(filter, false);
+    QSqlQuery q = select(db,
+                         QStringLiteral("SELECT m.point_index, m.verdict, COUNT(*)") + s.from + s.where +
+                             QStringLiteral(" AND m.verdict IS NOT NULL GROUP BY m.point_index, m.verdict"),
+                         s.bindings);
+    std::map<int, core::VerdictCounts> counts;
+    while (q.next()) {
+        const std::optional<core::ToleranceVerdict> verdict =
+            core::toleranceVerdictFromName(q.value(1).toString().toStdString());
+        if (!verdict) continue;  // a name this program does not know is not counted (as in the rows' reading)
+        core::VerdictCounts& c = counts[q.value(0).toInt()];
+        const std::int64_t n = q.value(2).toLongLong();
+        if (*verdict == core::ToleranceVerdict::Good)
+            c.good += n;
+        else if (*verdict == core::ToleranceVerdict::Rework)
+            c.rework += n;
+        else
+            c.scrap += n;
+    }
+    return counts;
+}
+
+/// Where the point is and its nominal (its first chosen reading), and the tolerance of its latest chosen reading
+/// that has one.
+void readPointFacts(Database& db, const MeasurementFilter& filter, PointReadings& point) {
+    MeasurementFilter one = filter;
+    one.pointIndex = point.pointIndex;
+    const Selection s = selectionOf(one, true);
+    {
+        QSqlQuery q = select(db,
+                             QStringLiteral("SELECT m.z_mm, m.nominal_mm") + s.from + s.where +
+                                 QStringLiteral(" ORDER BY p.run_id, p.part_number LIMIT 1"),
+                             s.bindings);
+        if (q.next()) {
+            point.zMm = q.value(0).toDouble();
+            point.nominalMm = q.value(1).toDouble();
+        }
+    }
+    QSqlQuery q = select(db,
+                         QStringLiteral("SELECT m.lower_limit_mm, m.upper_limit_mm, m.nominal_mm") + s.from + s.where +
+                             QStringLiteral(" AND m.lower_limit_mm IS NOT NULL AND m.upper_limit_mm IS NOT NULL"
+                                            " ORDER BY p.run_id DESC, p.part_number DESC LIMIT 1"),
+                         s.bindings);
+    if (q.next()) {
+        point.lowerLimitMm = q.value(0).toDouble();
+        point.upperLimitMm = q.value(1).toDouble();
+        point.limitsNominalMm = q.value(2).toDouble();
+    }
+}
+
+}  // namespace
+
+std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFilter& filter) {
+    db.migrate(historySchema());
+    std::vector<PointReadings> points;
+    {
+        const Selection s = selectionOf(filter, true);
+        // The verdict as a small number in the same pass (no string per reading, no second scan).
+        QSqlQuery q = select(db,
+                             QStringLiteral("SELECT m.point_index, p.part_number, m.measured_s, m.measured_mm,"
+                                            " CASE m.verdict WHEN 'good' THEN 1 WHEN 'rework' THEN 2"
+                                            " WHEN 'scrap' THEN 3 ELSE 0 END") +
+                                 s.from + s.where + QStringLiteral(" ORDER BY m.point_index, p.run_id, p.part_number"),
+                             s.bindings);
+        while (q.next()) {
+            const int index = q.value(0).toInt();
+            if (points.empty() || points.back().pointIndex != index) {
+                points.emplace_back();
+                points.back().pointIndex = index;
+            }
+            PointReadings& p = points.back();
+            p.partNumbers.push_back(q.value(1).toLongLong());
+            p.timesS.push_back(q.value(2).toDouble());
+            p.valuesMm.push_back(q.value(3).toDouble());
+            switch (q.value(4).toInt()) {
+                case 1:
+                    ++p.verdicts.good;
+                    break;
+                case 2:
+                    ++p.verdicts.rework;
+                    break;
+                case 3:
+                    ++p.verdicts.scrap;
+                    break;
+                default:
+                    break;
+            }
+        }
+    }
+    for (PointReadings& p : points)
+        readPointFacts(db, filter, p);
+    return points;
+}
+
+std::vector<PointAggregate> queryPointAggregates(Database& db, const MeasurementFilter& filter) {
+    db.migrate(historySchema());
+    const Selection s = selectionOf(filter, false);
+    // Two passes (the mean, then the squared deviations from it): no cancellation of sum(x^2) - n mean^2.
+    QSqlQuery q = select(
+        db,
+        QStringLiteral("WITH a AS (SELECT m.point_index AS point_index, COUNT(*) AS n, AVG(m.measured_mm) AS mean_mm,"
+                       " MIN(m.measured_mm) AS min_mm, MAX(m.measured_mm) AS max_mm") +
+            s.from + s.where +
+            QStringLiteral(" GROUP BY m.point_index) SELECT a.point_index, a.n, a.mean_mm, a.min_mm, a.max_mm,"
+                           " SUM((m.measured_mm - a.mean_mm) * (m.measured_mm - a.mean_mm))") +
+            s.from + QStringLiteral(" JOIN a ON a.point_index = m.point_index") + s.where +
+            QStringLiteral(" GROUP BY a.point_index, a.n, a.mean_mm, a.min_mm, a.max_mm ORDER BY a.point_index"),
+        s.bindings + s.bindings);
+    std::vector<PointAggregate> out;
+    while (q.next()) {
+        PointAggregate a;
+        a.pointIndex = q.value(0).toInt();
+        a.count = q.value(1).toLongLong();
+        a.meanMm = q.value(2).toDouble();
+        a.minMm = q.value(3).toDouble();
+        a.maxMm = q.value(4).toDouble();
+        a.sigmaOverallMm = a.count > 1 ? std::sqrt(q.value(5).toDouble() / static_cast<double>(a.count - 1)) : 0.0;
+        out.push_back(a);
+    }
+    q.finish();
+    const std::map<int, core::VerdictCounts> verdicts = verdictCounts(db, filter);
+    for (PointAggregate& a : out)
+        if (const auto it = verdicts.find(a.pointIndex); it != verdicts.end()) a.verdicts = it->second;
+    return out;
+}
+
+std::vector<MeasurementRow> queryMeasurements(Database& db, const MeasurementFilter& filter) {
+    db.migrate(historySchema());
+    const Selection s = selectionOf(filter, true);
+    QSqlQuery q = select(
+        db,
+        QStringLiteral("SELECT p.run_id, r.machine, p.part_number, p.recorded_at, m.measured_s, m.point_index, m.z_mm,"
+                       " m.nominal_mm, m.measured_mm, m.accepted, m.verdict, m.lower_limit_mm, m.upper_limit_mm") +
+            s.from + (filter.machine ? QString() : QStringLiteral(" JOIN runs r ON r.id = p.run_id")) + s.where +
+            QStringLiteral(" ORDER BY p.run_id, p.part_number, m.point_index"),
+        s.bindings);
     std::vector<MeasurementRow> rows;
     while (q.next()) {
         MeasurementRow row;
