@@ -20,8 +20,15 @@ struct Selection {
     QVariantList bindings;
 };
 
-/// `withParts`: join the parts (their numbers and order are read); else only when the filter needs them.
-Selection selectionOf(const MeasurementFilter& filter, bool withParts) {
+/// How the readings meet their parts.
+enum class PartsJoin {
+    AsNeeded,    ///< only when the filter names runs, machines or dates
+    Always,      ///< the parts' numbers and order are read
+    PartsFirst,  ///< walk the parts in their index order (run, part) and look up each one's reading: the first or
+                 ///< last reading in production order (ORDER BY ... LIMIT 1) without visiting the others
+};
+
+Selection selectionOf(const MeasurementFilter& filter, PartsJoin join) {
     QStringList where{QStringLiteral("m.measured_mm IS NOT NULL"),
                       QStringLiteral("(m.reason_kind IS NULL OR m.reason_kind NOT IN ('implausible', 'not-finite', "
                                      "'not-a-number'))")};
@@ -46,9 +53,15 @@ Selection selectionOf(const MeasurementFilter& filter, bool withParts) {
         where << QStringLiteral("r.machine = ?");
         s.bindings << QString::fromStdString(*filter.machine);
     }
-    const bool parts = withParts || filter.runId || filter.fromUtc || filter.toUtc || filter.machine;
-    s.from = QStringLiteral(" FROM measurements m");
-    if (parts) s.from += QStringLiteral(" JOIN parts p ON p.id = m.part_id");
+    if (join == PartsJoin::PartsFirst) {
+        // SQLite keeps the order of a CROSS JOIN; PostgreSQL plans it like any inner join.
+        s.from = QStringLiteral(" FROM parts p CROSS JOIN measurements m");
+        where << QStringLiteral("p.id = m.part_id");
+    } else {
+        s.from = QStringLiteral(" FROM measurements m");
+        if (join == PartsJoin::Always || filter.runId || filter.fromUtc || filter.toUtc || filter.machine)
+            s.from += QStringLiteral(" JOIN parts p ON p.id = m.part_id");
+    }
     if (filter.machine) s.from += QStringLiteral(" JOIN runs r ON r.id = p.run_id");
     s.where = QStringLiteral(" WHERE ") + where.join(QStringLiteral(" AND "));
     return s;
@@ -72,7 +85,7 @@ QSqlQuery select(Database& db, const QString& sql, const QVariantList& bindings)
 
 /// The verdicts of the chosen readings counted per point in SQL.
 std::map<int, core::VerdictCounts> verdictCounts(Database& db, const MeasurementFilter& filter) {
-    const Selection s = selectionOf(filter, false);
+    const Selection s = selectionOf(filter, PartsJoin::AsNeeded);
     QSqlQuery q = select(db,
                          QStringLiteral("SELECT m.point_index, m.verdict, COUNT(*)") + s.from + s.where +
                              QStringLiteral(" AND m.verdict IS NOT NULL GROUP BY m.point_index, m.verdict"),
@@ -99,7 +112,7 @@ std::map<int, core::VerdictCounts> verdictCounts(Database& db, const Measurement
 void readPointFacts(Database& db, const MeasurementFilter& filter, PointReadings& point) {
     MeasurementFilter one = filter;
     one.pointIndex = point.pointIndex;
-    const Selection s = selectionOf(one, true);
+    const Selection s = selectionOf(one, PartsJoin::PartsFirst);
     {
         QSqlQuery q = select(db,
                              QStringLiteral("SELECT m.z_mm, m.nominal_mm") + s.from + s.where +
@@ -128,7 +141,7 @@ std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFil
     db.migrate(historySchema());
     std::vector<PointReadings> points;
     {
-        const Selection s = selectionOf(filter, true);
+        const Selection s = selectionOf(filter, PartsJoin::Always);
         // The verdict as a small number in the same pass (no string per reading, no second scan).
         QSqlQuery q = select(db,
                              QStringLiteral("SELECT m.point_index, p.part_number, m.measured_s, m.measured_mm,"
@@ -168,7 +181,7 @@ std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFil
 
 std::vector<PointAggregate> queryPointAggregates(Database& db, const MeasurementFilter& filter) {
     db.migrate(historySchema());
-    const Selection s = selectionOf(filter, false);
+    const Selection s = selectionOf(filter, PartsJoin::AsNeeded);
     // Two passes (the mean, then the squared deviations from it): no cancellation of sum(x^2) - n mean^2.
     QSqlQuery q = select(
         db,
@@ -200,7 +213,7 @@ std::vector<PointAggregate> queryPointAggregates(Database& db, const Measurement
 
 std::vector<MeasurementRow> queryMeasurements(Database& db, const MeasurementFilter& filter) {
     db.migrate(historySchema());
-    const Selection s = selectionOf(filter, true);
+    const Selection s = selectionOf(filter, PartsJoin::Always);
     QSqlQuery q = select(
         db,
         QStringLiteral("SELECT p.run_id, r.machine, p.part_number, p.recorded_at, m.measured_s, m.point_index, m.z_mm,"
