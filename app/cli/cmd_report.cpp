@@ -1,5 +1,5 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
-// values the statistics need and the verdicts counted in SQL: storage::queryPointReadings; every column of every
+// values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
 // reading for the CSV and DFQ files: storage::queryMeasurements), the statistics from core/quality's analysePoint
 // (chart, run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
 #include <QDateTime>
