@@ -1,6 +1,7 @@
-// `trueturn report`: argument parsing and output only. The readings come from the history
-// (storage::queryMeasurements, one SQL join), the statistics from core/quality's analysePoint (chart,
-// run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
+// `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
+// values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
+// reading for the CSV and DFQ files: storage::queryMeasurements), the statistics from core/quality's analysePoint
+// (chart, run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
@@ -23,38 +24,19 @@ namespace tt::cli {
 
 namespace {
 
-/// The readings of one control point, in production order.
-struct PointRows {
-    int pointIndex = 0;
-    std::vector<const storage::MeasurementRow*> rows;
-};
-
-std::map<int, PointRows> byPoint(const std::vector<storage::MeasurementRow>& rows) {
-    std::map<int, PointRows> points;
-    for (const storage::MeasurementRow& row : rows) {
-        PointRows& p = points[row.pointIndex];
-        p.pointIndex = row.pointIndex;
-        p.rows.push_back(&row);
-    }
-    return points;
-}
-
 /// The specification limits of a point: the stored tolerance of its latest reading that has one, the
 /// nominal as target; none when no reading has a tolerance.
-std::optional<core::SpecLimits> specOf(const PointRows& point) {
-    for (auto it = point.rows.rbegin(); it != point.rows.rend(); ++it)
-        if ((*it)->lowerLimitMm && (*it)->upperLimitMm)
-            return core::SpecLimits{*(*it)->lowerLimitMm, *(*it)->upperLimitMm, (*it)->nominalMm};
+std::optional<core::SpecLimits> specOf(const storage::PointReadings& point) {
+    if (point.lowerLimitMm && point.upperLimitMm)
+        return core::SpecLimits{*point.lowerLimitMm, *point.upperLimitMm, point.limitsNominalMm};
     return std::nullopt;
 }
 
-core::MeasuredSeries seriesOf(const PointRows& point) {
+core::MeasuredSeries seriesOf(const storage::PointReadings& point) {
     core::MeasuredSeries series;
-    for (const storage::MeasurementRow* row : point.rows) {
-        series.valuesMm.push_back(row->measuredMm);
-        series.partNumbers.push_back(row->partNumber);
-        series.timesS.push_back(row->timeS);
-    }
+    series.valuesMm = point.valuesMm;
+    series.partNumbers = point.partNumbers;
+    series.timesS = point.timesS;
     return series;
 }
 
@@ -62,16 +44,13 @@ QJsonValue orNull(const std::optional<double>& v) {
     return v ? config::finiteOrNull(*v) : QJsonValue();
 }
 
-QJsonObject verdictsJson(const PointRows& point) {
-    core::VerdictCounts counts;
-    for (const storage::MeasurementRow* row : point.rows)
-        if (row->verdict) counts.add(*row->verdict);
-    return {{QStringLiteral("good"), static_cast<qint64>(counts.good)},
-            {QStringLiteral("rework"), static_cast<qint64>(counts.rework)},
-            {QStringLiteral("scrap"), static_cast<qint64>(counts.scrap)}};
+QJsonObject verdictsJson(const storage::PointReadings& point) {
+    return {{QStringLiteral("good"), static_cast<qint64>(point.verdicts.good)},
+            {QStringLiteral("rework"), static_cast<qint64>(point.verdicts.rework)},
+            {QStringLiteral("scrap"), static_cast<qint64>(point.verdicts.scrap)}};
 }
 
-QJsonObject pointJson(const PointRows& point, const core::PointAnalysisSettings& base) {
+QJsonObject pointJson(const storage::PointReadings& point, const core::PointAnalysisSettings& base) {
     core::PointAnalysisSettings settings = base;
     settings.spec = specOf(point);
     core::PointAnalysis a;
@@ -100,7 +79,7 @@ QJsonObject pointJson(const PointRows& point, const core::PointAnalysisSettings&
                                  config::finiteOrNull(c->indices.cpkInterval->upper)};
     return {
         {QStringLiteral("point"), point.pointIndex + 1},
-        {QStringLiteral("x_mm"), point.rows.front()->zMm},
+        {QStringLiteral("x_mm"), point.zMm},
         {QStringLiteral("n"), static_cast<qint64>(a.count)},
         {QStringLiteral("mean_mm"), config::finiteOrNull(a.meanMm)},
         {QStringLiteral("sigma_within_mm"), config::finiteOrNull(c ? c->sigmaWithinMm : l.sigmaWithinMm)},
@@ -165,7 +144,7 @@ QString dfqTime(const std::string& iso) {
 /// decimal places, K2101 nominal, K2110/K2111 lower/upper specification limit, K2142 unit; then each
 /// reading as K0001/i value with K0004/i date/time, part by part.
 void writeDfq(const QString& path, const std::vector<storage::MeasurementRow>& rows,
-              const std::map<int, PointRows>& points) {
+              const std::vector<storage::PointReadings>& points) {
     QFile file(path);
     if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
         throw std::runtime_error("--dfq: cannot write '" + path.toStdString() +
@@ -173,20 +152,21 @@ void writeDfq(const QString& path, const std::vector<storage::MeasurementRow>& r
     QTextStream out(&file);
     out.setEncoding(QStringConverter::Latin1);
     std::map<int, int> characteristic;  // point index -> K-field index 1..
-    for (const auto& [index, point] : points)
-        characteristic[index] = static_cast<int>(characteristic.size()) + 1;
+    for (const storage::PointReadings& point : points)
+        characteristic[point.pointIndex] = static_cast<int>(characteristic.size()) + 1;
     out << "K0100 " << characteristic.size() << "\r\n";
     out << "K1001 "
         << (rows.front().machine.empty() ? QStringLiteral("shaft") : QString::fromStdString(rows.front().machine))
         << "\r\n";
     out << "K1002 TrueTurn shaft, run(s) " << rows.front().runId << ".." << rows.back().runId << "\r\n";
-    for (const auto& [index, point] : points) {
+    for (const storage::PointReadings& point : points) {
+        const int index = point.pointIndex;
         const QString k = QStringLiteral("/%1 ").arg(characteristic[index]);
         const std::optional<core::SpecLimits> spec = specOf(point);
         out << "K2001" << k << "P" << index + 1 << "\r\n";
-        out << "K2002" << k << "Diameter at x = " << QString::number(point.rows.front()->zMm, 'f', 1) << " mm\r\n";
+        out << "K2002" << k << "Diameter at x = " << QString::number(point.zMm, 'f', 1) << " mm\r\n";
         out << "K2022" << k << "4\r\n";
-        out << "K2101" << k << QString::number(point.rows.front()->nominalMm, 'f', 4) << "\r\n";
+        out << "K2101" << k << QString::number(point.nominalMm, 'f', 4) << "\r\n";
         if (spec) {
             out << "K2110" << k << QString::number(spec->lowerMm, 'f', 4) << "\r\n";
             out << "K2111" << k << QString::number(spec->upperMm, 'f', 4) << "\r\n";
@@ -308,22 +288,24 @@ int run(const QStringList& arguments) {
     settings.subgroupSize = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
 
     std::unique_ptr<storage::Database> db;
-    std::vector<storage::MeasurementRow> rows;
+    std::vector<storage::PointReadings> readings;
+    std::vector<storage::MeasurementRow> rows;  // every column of every reading: only for the CSV and DFQ files
+    const bool files = parser.isSet(QStringLiteral("csv")) || parser.isSet(QStringLiteral("dfq"));
     try {
         db = std::make_unique<storage::Database>(databaseConfigFromOption(dbValue));
-        rows = storage::queryMeasurements(*db, filter);
+        readings = storage::queryPointReadings(*db, filter);
+        if (files) rows = storage::queryMeasurements(*db, filter);
     } catch (const storage::StorageError& e) {
         throw UsageError(std::string("--db: ") + e.what());
     }
-    if (rows.empty())
+    if (readings.empty() || (files && rows.empty()))
         throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
     QJsonArray points;
-    const std::map<int, PointRows> perPoint = byPoint(rows);
-    for (const auto& [index, point] : perPoint)
+    for (const storage::PointReadings& point : readings)
         points.append(pointJson(point, settings));
     if (parser.isSet(QStringLiteral("csv"))) writeCsv(parser.value(QStringLiteral("csv")), rows);
-    if (parser.isSet(QStringLiteral("dfq"))) writeDfq(parser.value(QStringLiteral("dfq")), rows, perPoint);
+    if (parser.isSet(QStringLiteral("dfq"))) writeDfq(parser.value(QStringLiteral("dfq")), rows, readings);
     if (parser.json()) {
         QJsonObject out{{QStringLiteral("subgroup"), settings.subgroupSize}, {QStringLiteral("points"), points}};
         if (filter.runId) out.insert(QStringLiteral("run"), static_cast<qint64>(*filter.runId));
