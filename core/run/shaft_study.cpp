@@ -3,8 +3,11 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "core/control/run_to_run_plant.h"
+#include "core/run/run_limits.h"
 #include "core/run/shaft_run.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
 
@@ -13,6 +16,29 @@ namespace tt::core {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Passes each finished part on to a progress callback.
+class ProgressRelay final : public LoopListener {
+public:
+    ProgressRelay(const std::function<void(const std::string&, std::int64_t, std::int64_t)>& progress,
+                  std::string stage, std::int64_t total)
+        : m_progress(progress), m_stage(std::move(stage)), m_total(total) {}
+    void onLoopEvent(const LoopEvent& event) override {
+        if (event.kind == LoopEvent::Kind::PartFinished && m_progress) m_progress(m_stage, event.partNumber, m_total);
+    }
+
+private:
+    const std::function<void(const std::string&, std::int64_t, std::int64_t)>& m_progress;
+    std::string m_stage;
+    std::int64_t m_total;
+};
+
+/// The highest part number the record saw finished (0: none).
+std::int64_t lastFinishedPart(const LatheRunRecord& record) {
+    for (std::size_t i = record.seen.size(); i > 0; --i)
+        if (record.seen[i - 1]) return static_cast<std::int64_t>(i);
+    return 0;
+}
 
 LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftRunPlan plan,
                        const LatheStudyOptions& options, bool stored) {
@@ -27,7 +53,12 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
         spec.resume = options.resume;
         spec.speed = options.speed;
     }
+    spec.stop = options.stop;
+    ProgressRelay relay(options.progress, stored ? "closed loop" : "open-loop reference",
+                        spec.plan.loop.lastPartNumber.value_or(0));
+    if (options.progress) spec.listener = &relay;
     LatheRunRecord record = runLatheLoop(std::move(spec));
+    if (record.outcome.interrupted) throw StudyInterrupted(stored, record.runId, lastFinishedPart(record));
     if (!record.outcome.complete)
         throw std::runtime_error("the simulated run stopped before its last part: " + record.outcome.stopReason);
     return record;
@@ -36,8 +67,7 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
 }  // namespace
 
 LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
-    if (options.parts < 2) throw std::invalid_argument("a study needs at least 2 counted parts");
-    if (options.warmupParts < 0) throw std::invalid_argument("the warm-up cannot be negative");
+    checkRunParts(options.parts, options.warmupParts);
     const std::int64_t total = options.warmupParts + options.parts;
     const ShaftRunPlan closedPlan = planShaftRun(scenario, {options.controller, options.ewmaWeight, total});
     const LoopConfig& loop = closedPlan.loop;
