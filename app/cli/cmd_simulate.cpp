@@ -149,6 +149,7 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("k_eff (all points): %1 simulated, %2 analytic; %3 measured value(s) rejected")
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
+    if (!std::isfinite(r.kEff)) printLine(kEffUndefinedNote());
     printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
                   .arg(r.verdicts.good)
                   .arg(r.verdicts.rework)

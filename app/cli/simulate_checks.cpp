@@ -83,6 +83,12 @@ void checkStoredParts(std::int64_t parts, std::int64_t warmupParts) {
     }
 }
 
+QString kEffUndefinedNote() {
+    return QStringLiteral(
+        "k_eff n/a: the open- or closed-loop variance is below 1e-12 mm² (σ 1 nm): the parts do "
+        "not vary from one to the next, so their ratio is no effectiveness");
+}
+
 int reportInterrupted(const core::StudyInterrupted& stop, const QString& database) {
     std::string why = "trueturn simulate: interrupted after part " + std::to_string(stop.lastPart);
     if (!stop.closedLoop)

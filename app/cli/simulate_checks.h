@@ -33,6 +33,9 @@ core::ResumePoint findResumePoint(core::HistoryStore& history, std::optional<std
 /// been edited in the database); a UsageError names the value and the limit.
 void checkStoredParts(std::int64_t parts, std::int64_t warmupParts);
 
+/// Why k_eff is "n/a": a variance (open or closed loop) below 1e-12 mm², as on a lathe without variation.
+QString kEffUndefinedNote();
+
 /// Reports an interrupted study on stderr (what is stored, how to resume) and returns kExitInterrupted.
 int reportInterrupted(const core::StudyInterrupted& stop, const QString& database);
 

@@ -17,6 +17,15 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// Below this variance a part-to-part variation is not there (σ = 1 nm, under any gauge's resolution), mm².
+constexpr double kMinVarianceMm2 = 1e-12;
+
+/// k_eff = open / closed variance; NaN (not available) when either is below kMinVarianceMm2: a lathe
+/// without variation would give 0 or infinity, neither of which is an effectiveness.
+double varianceRatio(double openMm2, double closedMm2) {
+    return openMm2 >= kMinVarianceMm2 && closedMm2 >= kMinVarianceMm2 ? openMm2 / closedMm2 : kNaN;
+}
+
 /// Passes each finished part on to a progress callback.
 class ProgressRelay final : public LoopListener {
 public:
@@ -99,10 +108,10 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     }
     for (std::size_t i = 0; i < loop.pointZMm.size(); ++i) {
         const auto k = static_cast<Eigen::Index>(i);
-        result.points.push_back({loop.pointZMm[i], varOpen(k), varClosed(k), varOpen(k) / varClosed(k),
+        result.points.push_back({loop.pointZMm[i], varOpen(k), varClosed(k), varianceRatio(varOpen(k), varClosed(k)),
                                  analytic.available ? analytic.kEff(k) : kNaN});
     }
-    result.kEff = varOpen.sum() / varClosed.sum();
+    result.kEff = varianceRatio(varOpen.sum(), varClosed.sum());
     result.kEffAnalytic = analytic.available ? analytic.kEffOverall : kNaN;
 
     if (!options.profileZMm.empty()) {

@@ -52,7 +52,7 @@ struct LatheStudyPoint {
     double xMm = 0.0;
     double varOpenMm2 = 0.0;    ///< true diameter deviation, open loop on the same disturbance
     double varClosedMm2 = 0.0;  ///< with the controller
-    double kEff = 0.0;          ///< varOpen / varClosed (paper 000, Table 2)
+    double kEff = 0.0;          ///< varOpen / varClosed (paper 000, Table 2); NaN when either is below 1e-12 mm²
     double kEffAnalytic = 0.0;  ///< the controller's design model, closed-loop Lyapunov (NaN when unavailable)
 };
 
@@ -63,7 +63,7 @@ struct LatheStudyResult {
     std::int64_t parts = 0;
     std::optional<double> ewmaWeight;
     std::vector<LatheStudyPoint> points;
-    double kEff = 0.0;          ///< sum open / sum closed
+    double kEff = 0.0;          ///< sum open / sum closed; NaN when either is below 1e-12 mm² (no variation)
     double kEffAnalytic = 0.0;  ///< NaN when unavailable
     std::int64_t rejectedValues = 0;
     VerdictCounts verdicts;            ///< the closed run's measured parts by tolerance verdict (warm-up included)

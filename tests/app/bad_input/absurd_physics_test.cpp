@@ -98,6 +98,34 @@ TEST_F(AbsurdPhysics, ABoringProbeCharacteristicOfAbsurdSizeIsRefused) {
                   QStringLiteral("bridge_coefficients: 1e+300 is outside -10 .. 10"));
 }
 
+TEST_F(AbsurdPhysics, ALatheWithoutVariationPrintsNoKeffOfZero) {
+    // No random variation, no wear, no warm-up, a perfect micrometer: the open loop's parts are all alike
+    // (variance 0), and k_eff = 0 / closed used to be printed as 0 (and 0 / 0 as NaN).
+    QString preset = presetWith(QStringLiteral("paper-2012-group1"), QStringLiteral("lathe/random_scale"), 0);
+    QFile file(preset);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    QJsonValue json = QJsonDocument::fromJson(file.readAll()).object();
+    file.close();
+    for (const char* path : {"lathe/micrometer/resolution_mm", "lathe/micrometer/error95_mm",
+                             "lathe/tool_wear/diameter_growth_mm", "lathe/warm_up/diameter_shift_mm"})
+        json = withValue(json, QString::fromLatin1(path).split(QLatin1Char('/')), 0);
+    preset = write(QStringLiteral("still.json"), QJsonDocument(json.toObject()).toJson());
+    for (const char* controller : {"lqg", "open"}) {
+        QStringList args = simulate(preset);
+        args << QStringLiteral("--controller") << QString::fromLatin1(controller);
+        const tt::test::CliResult r = tt::test::runTrueturn(args);
+        ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+        EXPECT_TRUE(r.json().value(QStringLiteral("k_eff")).isNull()) << qPrintable(r.out);
+        for (const QJsonValue& point : r.json().value(QStringLiteral("points")).toArray())
+            EXPECT_TRUE(point.toObject().value(QStringLiteral("k_eff")).isNull()) << qPrintable(r.out);
+        args.removeAll(QStringLiteral("--json"));
+        const tt::test::CliResult text = tt::test::runTrueturn(args);
+        EXPECT_TRUE(text.out.contains(QStringLiteral("k_eff n/a: the open- or closed-loop variance is below")))
+            << qPrintable(text.out);
+        EXPECT_FALSE(text.out.contains(QStringLiteral("k_eff (all points): 0 "))) << qPrintable(text.out);
+    }
+}
+
 TEST_F(AbsurdPhysics, APartLengthOfThePlantOutsideItsRangeIsRefusedBeforeTheRun) {
     // It used to start and stop at part 1 with exit 1 (the correction path could not be sampled).
     expectRefused(simulate(presetWith(QStringLiteral("paper-2012"), QStringLiteral("plant/part_length_mm"), 1e300)),
