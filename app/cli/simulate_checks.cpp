@@ -57,7 +57,11 @@ double simulationSpeed(const CommandParser& parser) {
 std::optional<std::int64_t> resumeRunId(const CommandParser& parser) {
     if (!parser.isSet(QStringLiteral("run"))) return std::nullopt;
     if (!parser.isSet(QStringLiteral("resume"))) throw UsageError("--run: only with --resume, the run to continue");
-    return parser.integer(QStringLiteral("run"), 1, 1LL << 53);
+    try {
+        return parser.integer(QStringLiteral("run"), 1, 1LL << 53);
+    } catch (const UsageError& e) {  // written as --resume N by the user
+        throw UsageError(std::string("--resume N: the run number ") + std::string(e.what()).substr(7));
+    }
 }
 
 core::ResumePoint findResumePoint(core::HistoryStore& history, std::optional<std::int64_t> runId) {

@@ -69,7 +69,10 @@ TEST_F(RunControl, ResumeNamesTheRunToContinue) {
     expectRefused(resume + QStringList{QStringLiteral("7")},
                   QStringLiteral("there is no run 7; the history holds run(s) 2 (complete, 100 parts), 1 (running, "
                                  "100 parts)"));
-    expectRefused(resume + QStringList{QStringLiteral("x")}, QStringLiteral("--run: 'x'"));
+    expectRefused(resume + QStringList{QStringLiteral("x")},
+                  QStringLiteral("--resume N: the run number 'x' is not a whole number"));
+    expectRefused(resume + QStringList{QStringLiteral("0")},
+                  QStringLiteral("--resume N: the run number 0 is outside 1 .. 9007199254740992"));
     const CliResult r = runTrueturn(resume + QStringList{QStringLiteral("1"), QStringLiteral("--json")});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     EXPECT_EQ(r.json().value(QStringLiteral("run_id")).toInt(), 1);
