@@ -5,6 +5,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <utility>
+
+#include "app/cli/command_parser.h"
 
 namespace tt::cli {
 
@@ -45,7 +48,8 @@ const std::atomic<bool>& InterruptGuard::stopRequested() {
     return g_stop;
 }
 
-ProgressPrinter::ProgressPrinter(bool forced) : m_terminal(isatty(STDERR_FILENO) == 1) {
+ProgressPrinter::ProgressPrinter(bool forced, std::string unit)
+    : m_terminal(isatty(STDERR_FILENO) == 1), m_unit(std::move(unit)) {
     m_enabled = forced || m_terminal;
 }
 
@@ -62,10 +66,22 @@ void ProgressPrinter::report(const std::string& stage, std::int64_t done, std::i
     m_stage = stage;
     m_lastMs = now;
     const double percent = total > 0 ? 100.0 * static_cast<double>(done) / static_cast<double>(total) : 0.0;
-    std::fprintf(stderr, "%s%s: part %lld of %lld (%.0f %%)%s", m_terminal ? "\r" : "", stage.c_str(),
-                 static_cast<long long>(done), static_cast<long long>(total), percent, m_terminal ? "" : "\n");
+    std::fprintf(stderr, "%s%s: %s%s%lld of %lld (%.0f %%)%s", m_terminal ? "\r" : "", stage.c_str(), m_unit.c_str(),
+                 m_unit.empty() ? "" : " ", static_cast<long long>(done), static_cast<long long>(total), percent,
+                 m_terminal ? "" : "\n");
     std::fflush(stderr);
     m_lineOpen = m_terminal;
+}
+
+int reportCancelled(ProgressPrinter& progress, const char* command, const char* kept) {
+    progress.finish();
+    std::fprintf(stderr, "trueturn %s: interrupted; %s\n", command, kept);
+    return kExitInterrupted;
+}
+
+void addProgressOption(CommandParser& parser) {
+    parser.addOption(QStringLiteral("progress"),
+                     QStringLiteral("Report the work done on stderr (always when stderr is a terminal)."));
 }
 
 void ProgressPrinter::finish() {

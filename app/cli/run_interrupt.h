@@ -25,12 +25,13 @@ public:
     static const std::atomic<bool>& stopRequested();
 };
 
-/// Progress of long work on stderr: `label: part N of M (P %)`, at most every 0.25 s. On a terminal one
+/// Progress of long work on stderr: `stage: part N of M (P %)`, at most every 0.25 s. On a terminal one
 /// line is rewritten in place; with `--progress` and stderr not a terminal (a log) each report is a line.
 class ProgressPrinter {
 public:
-    /// Prints when stderr is a terminal or `forced` (--progress).
-    explicit ProgressPrinter(bool forced);
+    /// Prints when stderr is a terminal or `forced` (--progress); `unit` names what is counted ("part"; empty:
+    /// the stage says it).
+    explicit ProgressPrinter(bool forced, std::string unit = "part");
     ~ProgressPrinter();
     ProgressPrinter(const ProgressPrinter&) = delete;
     ProgressPrinter& operator=(const ProgressPrinter&) = delete;
@@ -48,6 +49,16 @@ private:
     bool m_lineOpen = false;
     std::int64_t m_lastMs = -1;
     std::string m_stage;
+    std::string m_unit;
 };
+
+class CommandParser;
+
+/// Adds `--progress` to a command's options (progress on stderr also when it is not a terminal).
+void addProgressOption(CommandParser& parser);
+
+/// For work stopped by Ctrl-C or SIGTERM before it finished: ends the progress line, says on stderr
+/// that `command` was interrupted and `kept` (what stays as it was), returns kExitInterrupted.
+int reportCancelled(ProgressPrinter& progress, const char* command, const char* kept);
 
 }  // namespace tt::cli

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <QElapsedTimer>
+#include <QFile>
 #include <QProcess>
 #include <QThread>
 #include <csignal>
@@ -129,6 +130,32 @@ TEST_F(RunControl, CtrlCStopsAfterAPartAndTheRunResumesWithEveryPartOnce) {
                                      "MAX(part_number) FROM parts")),
               QStringLiteral("%1|%1|1|%1").arg(parts));
     EXPECT_EQ(sql(db, QStringLiteral("SELECT status FROM runs")), QStringLiteral("complete"));
+}
+
+TEST_F(RunControl, CtrlCStopsCornerTrainingWithProgressAndWritesNothing) {
+    // 2000 training moves take about a minute; the progress on stderr says where it is.
+    const QString net = path(QStringLiteral("net.json"));
+    QProcess process;
+    process.start(QStringLiteral(TRUETURN_EXE),
+                  {QStringLiteral("corner"), QStringLiteral("train"), QStringLiteral("--moves"), QStringLiteral("2000"),
+                   QStringLiteral("--progress"), QStringLiteral("--out"), net});
+    ASSERT_TRUE(process.waitForStarted());
+    QElapsedTimer timer;
+    timer.start();
+    QByteArray err;
+    while (!err.contains("targets: 2") && timer.elapsed() < 60000 && process.state() == QProcess::Running) {
+        process.waitForReadyRead(100);
+        err += process.readAllStandardError();
+    }
+    ASSERT_EQ(process.state(), QProcess::Running) << "the training ended before it could be interrupted";
+    EXPECT_TRUE(err.contains(" of 2000 (")) << err.constData();
+    ASSERT_EQ(::kill(static_cast<pid_t>(process.processId()), SIGINT), 0);
+    ASSERT_TRUE(process.waitForFinished(60000));
+    err += process.readAllStandardError();
+    EXPECT_EQ(process.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(process.exitCode(), 130) << err.constData();
+    EXPECT_TRUE(err.contains("trueturn corner train: interrupted; no network was written")) << err.constData();
+    EXPECT_FALSE(QFile::exists(net));
 }
 
 }  // namespace
