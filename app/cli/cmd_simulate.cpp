@@ -217,8 +217,7 @@ int run(const QStringList& arguments) {
                                     "stored controller state: --resume N continues run N, --resume alone the newest."));
     parser.addOption(QStringLiteral("run"), QStringLiteral("With --resume: the run to continue (as --resume N)."),
                      QStringLiteral("N"));
-    parser.addOption(QStringLiteral("progress"),
-                     QStringLiteral("Report the parts done on stderr (always when stderr is a terminal)."));
+    addProgressOption(parser);
     parser.addOption(QStringLiteral("speed"),
                      QStringLiteral("Simulated time per wall time: 0 (the default: as fast as possible) or 1..1e9 "
                                     "(1: the lathe's own pace; 360: a 6-minute part per second)."),
@@ -312,21 +311,10 @@ int run(const QStringList& arguments) {
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
     // with the reason; what was stored stays stored and the run can be resumed.
     // Ctrl-C or SIGTERM: the run stops after its current part, everything stored is committed, exit 130.
-    const InterruptGuard interrupts;
-    options.stop = &InterruptGuard::stopRequested();
-    ProgressPrinter progress(parser.isSet(QStringLiteral("progress")));
-    if (progress.enabled())
-        options.progress = [&progress](const std::string& stage, std::int64_t part, std::int64_t total) {
-            progress.report(stage, part, total);
-        };
-    core::LatheStudyResult result;
-    try {
-        result = core::runLatheStudy(scenario, choice.seed, options);
-    } catch (const core::StudyInterrupted& stop) {
-        progress.finish();
-        return reportInterrupted(stop, database.value_or(QString()));
-    }
-    progress.finish();
+    const std::optional<core::LatheStudyResult> study = runStudyUntilStopped(
+        scenario, choice.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
+    if (!study) return kExitInterrupted;
+    const core::LatheStudyResult& result = *study;
     if (parser.json())
         printJson(toJson(result, parser.isSet(QStringLiteral("profile")), database));
     else

@@ -93,6 +93,27 @@ QString kEffUndefinedNote() {
         "not vary from one to the next, so their ratio is no effectiveness");
 }
 
+std::optional<core::LatheStudyResult> runStudyUntilStopped(const core::ShaftScenario& scenario, std::uint64_t seed,
+                                                           core::LatheStudyOptions options, bool progress,
+                                                           const QString& database) {
+    const InterruptGuard interrupts;
+    options.stop = &InterruptGuard::stopRequested();
+    ProgressPrinter printer(progress);
+    if (printer.enabled())
+        options.progress = [&printer](const std::string& stage, std::int64_t part, std::int64_t total) {
+            printer.report(stage, part, total);
+        };
+    try {
+        core::LatheStudyResult result = core::runLatheStudy(scenario, seed, options);
+        printer.finish();
+        return result;
+    } catch (const core::StudyInterrupted& stop) {
+        printer.finish();
+        reportInterrupted(stop, database);
+        return std::nullopt;
+    }
+}
+
 int reportInterrupted(const core::StudyInterrupted& stop, const QString& database) {
     std::string why = "trueturn simulate: interrupted after part " + std::to_string(stop.lastPart);
     if (!stop.closedLoop)

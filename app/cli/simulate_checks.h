@@ -36,6 +36,13 @@ void checkStoredParts(std::int64_t parts, std::int64_t warmupParts);
 /// Why k_eff is "n/a": a variance (open or closed loop) below 1e-12 mm², as on a lathe without variation.
 QString kEffUndefinedNote();
 
+/// Runs the study with SIGINT/SIGTERM as a stop after the current part (InterruptGuard) and the parts
+/// done on stderr when `progress` or stderr is a terminal; none after an interruption, which is
+/// reported on stderr (reportInterrupted).
+std::optional<core::LatheStudyResult> runStudyUntilStopped(const core::ShaftScenario& scenario, std::uint64_t seed,
+                                                           core::LatheStudyOptions options, bool progress,
+                                                           const QString& database);
+
 /// Reports an interrupted study on stderr (what is stored, how to resume) and returns kExitInterrupted.
 int reportInterrupted(const core::StudyInterrupted& stop, const QString& database);
 
