@@ -1,7 +1,6 @@
 // Who holds an SQLite file's write lock, from /proc/locks (core/storage/sqlite_lock_holder.h).
 #include <gtest/gtest.h>
 
-
 #include <QByteArray>
 #include <QProcess>
 #include <QTemporaryDir>
