@@ -1,0 +1,108 @@
+#pragma once
+
+#include <QAbstractButton>
+#include <QAbstractScrollArea>
+#include <QApplication>
+#include <QLabel>
+#include <QLayout>
+#include <QMainWindow>
+#include <QStackedWidget>
+#include <QStringList>
+#include <QWidget>
+
+namespace tt::ui::test {
+
+/// The terminal's screen, px.
+inline constexpr int kScreenWidth = 1280;
+inline constexpr int kScreenHeight = 800;
+
+/// What of `window` does not fit the 1280 x 800 screen: its size and its minimum size; `where` names
+/// the state ("ru, calibration, probe wizard page 3").
+inline QStringList sizeProblems(QWidget& window, const QString& where) {
+    QApplication::processEvents();
+    QStringList problems;
+    const QSize size = window.size();
+    const QSize need = window.minimumSizeHint().expandedTo(window.minimumSize());
+    if (size.width() > kScreenWidth || size.height() > kScreenHeight)
+        problems << QStringLiteral("%1: the window is %2 x %3 px").arg(where).arg(size.width()).arg(size.height());
+    if (need.width() > kScreenWidth || need.height() > kScreenHeight) {
+        QString widest;
+        if (auto* main = qobject_cast<QMainWindow*>(&window))
+            if (auto* stack = main->centralWidget()->findChild<QStackedWidget*>())
+                for (int i = 0; i < stack->count(); ++i)
+                    widest += QStringLiteral(" %1 %2x%3;")
+                                  .arg(stack->widget(i)->metaObject()->className())
+                                  .arg(stack->widget(i)->minimumSizeHint().width())
+                                  .arg(stack->widget(i)->minimumSizeHint().height());
+        problems << QStringLiteral("%1: the window needs %2 x %3 px (pages:%4)")
+                        .arg(where)
+                        .arg(need.width())
+                        .arg(need.height())
+                        .arg(widest);
+    }
+    return problems;
+}
+
+/// Buttons and one-line labels under `root` narrower than their text (cut off), and widgets that reach
+/// beyond the window's right or bottom edge.
+inline QStringList cutOffProblems(QWidget* root, const QString& where) {
+    QStringList problems;
+    QWidget* window = root->window();
+    const QRect screen(QPoint(0, 0), window->size());
+    for (QWidget* w : root->findChildren<QWidget*>()) {
+        if (!w->isVisible() || w->width() <= 0) continue;
+        const QString name =
+            QStringLiteral("%1 '%2'").arg(QString::fromLatin1(w->metaObject()->className()), w->objectName());
+        QString text;
+        int need = 0;
+        if (auto* label = qobject_cast<QLabel*>(w)) {
+            if (!label->wordWrap() && !label->text().isEmpty() && label->textFormat() != Qt::RichText &&
+                !label->text().contains(QLatin1Char('<')))
+                need = label->sizeHint().width(), text = label->text();
+        } else if (auto* button = qobject_cast<QAbstractButton*>(w)) {
+            if (!button->text().isEmpty()) need = button->sizeHint().width(), text = button->text();
+        }
+        if (need > w->width() + 1)
+            problems << QStringLiteral("%1: cut off \"%2\" in %3 (%4 px of %5 px)")
+                            .arg(where, text, name)
+                            .arg(w->width())
+                            .arg(need);
+        bool scrolled = false;  // inside a scroll area: reached by scrolling
+        for (QWidget* p = w->parentWidget(); p && !scrolled; p = p->parentWidget())
+            scrolled = qobject_cast<QAbstractScrollArea*>(p) != nullptr;
+        const QRect onWindow(w->mapTo(window, QPoint(0, 0)), w->size());
+        if (!text.isEmpty() && !scrolled && !screen.contains(onWindow))
+            problems << QStringLiteral("%1: \"%2\" in %3 reaches beyond the window").arg(where, text, name);
+    }
+    return problems;
+}
+
+/// Visible widgets under `root` that overlap a visible sibling placed by the same layout (a layout squeezed
+/// below what its word-wrapped texts need draws them over each other).
+inline QStringList overlapProblems(QWidget* root, const QString& where) {
+    QStringList problems;
+    QList<QWidget*> parents = root->findChildren<QWidget*>();
+    parents.prepend(root);
+    for (QWidget* parent : parents) {
+        if (!parent->isVisible() || !parent->layout()) continue;
+        QList<QWidget*> placed;
+        for (QWidget* child : parent->findChildren<QWidget*>(Qt::FindDirectChildrenOnly))
+            if (child->isVisible() && !child->isWindow()) placed << child;
+        // Widgets of nested layouts are direct children of `parent` too: every pair is checked.
+        for (int i = 0; i < placed.size(); ++i)
+            for (int j = i + 1; j < placed.size(); ++j) {
+                const QRect both = placed[i]->geometry().intersected(placed[j]->geometry());
+                if (both.width() > 1 && both.height() > 1)
+                    problems << QStringLiteral("%1: %2 '%3' and %4 '%5' overlap by %6 x %7 px")
+                                    .arg(where, QString::fromLatin1(placed[i]->metaObject()->className()),
+                                         placed[i]->objectName(),
+                                         QString::fromLatin1(placed[j]->metaObject()->className()),
+                                         placed[j]->objectName())
+                                    .arg(both.width())
+                                    .arg(both.height());
+            }
+    }
+    return problems;
+}
+
+}  // namespace tt::ui::test
