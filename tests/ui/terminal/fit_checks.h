@@ -2,9 +2,11 @@
 
 #include <QAbstractButton>
 #include <QAbstractScrollArea>
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QLabel>
 #include <QLayout>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QStackedWidget>
 #include <QStringList>
@@ -61,6 +63,17 @@ inline QStringList cutOffProblems(QWidget* root, const QString& where) {
                 need = label->sizeHint().width(), text = label->text();
         } else if (auto* button = qobject_cast<QAbstractButton*>(w)) {
             if (!button->text().isEmpty()) need = button->sizeHint().width(), text = button->text();
+        } else if (auto* edit = qobject_cast<QLineEdit*>(w);
+                   edit && qobject_cast<QAbstractSpinBox*>(w->parentWidget())) {
+            // A spin box's number and unit beside its arrows: the text must fit its edit field.
+            text = edit->text();
+            const int fits = edit->fontMetrics().horizontalAdvance(text) + 4;  // the edit's 2 px text margins
+            if (fits > edit->width() + 1)
+                problems << QStringLiteral("%1: cut off \"%2\" in the spin box '%3' (%4 px of %5 px)")
+                                .arg(where, text, w->parentWidget()->objectName())
+                                .arg(edit->width())
+                                .arg(fits);
+            continue;
         }
         if (need > w->width() + 1)
             problems << QStringLiteral("%1: cut off \"%2\" in %3 (%4 px of %5 px)")

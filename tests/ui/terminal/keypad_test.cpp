@@ -126,6 +126,8 @@ TEST_F(Keypad, OpensFromTheWindowWithTheSettingOrOnATouch) {
     field.setSuffix(QStringLiteral(" мм/об"));
     NumericKeypad russian(&field);
     russian.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&russian));
+    russian.adjustSize();
     EXPECT_TRUE(russian.limitsText().startsWith(QStringLiteral("Пределы"))) << russian.limitsText().toStdString();
     EXPECT_TRUE(test::saveScreenshot(russian, QStringLiteral("terminal_keypad_ru")));
 }
