@@ -4,10 +4,12 @@
 #include <QAbstractScrollArea>
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QComboBox>
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
 #include <QMainWindow>
+#include <QPushButton>
 #include <QStackedWidget>
 #include <QStringList>
 #include <QWidget>
@@ -114,6 +116,29 @@ inline QStringList overlapProblems(QWidget* root, const QString& where) {
                                     .arg(both.width())
                                     .arg(both.height());
             }
+    }
+    return problems;
+}
+
+/// The touch target's least height, px: about 10 mm on the terminal's 15" 1280 x 800 panel (0.24 mm a
+/// pixel), near WCAG 2.1's 44 px (success criterion 2.5.5) and wide enough for a gloved finger.
+inline constexpr int kTouchTargetPx = 40;
+
+/// Visible, enabled push buttons, combo boxes, spin boxes and line edits under `root` lower than a touch
+/// target (kTouchTargetPx).
+inline QStringList touchTargetProblems(QWidget* root, const QString& where) {
+    QStringList problems;
+    for (QWidget* w : root->findChildren<QWidget*>()) {
+        if (!w->isVisible() || !w->isEnabled()) continue;
+        const bool target = qobject_cast<QPushButton*>(w) || qobject_cast<QComboBox*>(w) ||
+                            qobject_cast<QAbstractSpinBox*>(w) ||
+                            (qobject_cast<QLineEdit*>(w) && !qobject_cast<QAbstractSpinBox*>(w->parentWidget()) &&
+                             !qobject_cast<QComboBox*>(w->parentWidget()));
+        if (target && w->height() < kTouchTargetPx)
+            problems << QStringLiteral("%1: %2 '%3' is %4 px high (a touch target needs %5 px)")
+                            .arg(where, QString::fromLatin1(w->metaObject()->className()), w->objectName())
+                            .arg(w->height())
+                            .arg(kTouchTargetPx);
     }
     return problems;
 }

@@ -1,7 +1,8 @@
 // The window fits the terminal's 1280 x 800 screen at every page, every tab of the Run and Process
 // pages and every page of both calibration wizards, in English and in Russian (issue 17, item 7): the
 // window's size and its minimum size stay within 1280 x 800, no button or one-line label is cut off or
-// reaches beyond the window, and no two widgets overlap. Screenshots of every page and tab in both
+// reaches beyond the window, no two widgets overlap, and every button, combo box, spin box and line edit
+// is at least a touch target high (40 px). Screenshots of every page and tab in both
 // languages: screenshots/terminal_<page>[_tab<n>]_<en|ru>.png.
 #include <QCheckBox>
 #include <QStatusBar>
@@ -33,7 +34,7 @@ protected:
     void check(MainWindow& window, QWidget* root, const QString& where) {
         const QString full = lang() + QStringLiteral(", ") + where;
         problems << test::sizeProblems(window, full) << test::cutOffProblems(root, full)
-                 << test::overlapProblems(root, full);
+                 << test::overlapProblems(root, full) << test::touchTargetProblems(root, full);
     }
     QStringList problems;
 };
