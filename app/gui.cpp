@@ -14,6 +14,7 @@
 #include "ui/app_state.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/history_check.h"
+#include "ui/kiosk.h"
 #include "ui/language.h"
 #include "ui/log_file.h"
 #include "ui/main_window.h"
@@ -92,7 +93,11 @@ int runGui(int argc, char** argv) {
     ui::MainWindow window(context);
     for (ui::PageId id : ui::kAllPages)
         if (ui::pageKey(id) == options.page) window.showPage(id);
-    window.show();
+    window.setKiosk(options.kiosk);
+    if (options.kiosk)
+        ui::showAsKiosk(&window);
+    else
+        window.show();
 
     if (options.screenshotDir.isEmpty())
         QTimer::singleShot(0, &window, [&] { ui::checkHistoryAtStart(context, &window, &prompt); });
@@ -104,7 +109,9 @@ int runGui(int argc, char** argv) {
         std::printf("trueturn: %d page screenshots written to %s\n", written, qPrintable(options.screenshotDir));
         return written == static_cast<int>(window.pages().size()) ? 0 : 1;
     }
-    if (options.quitAfterMs >= 0) QTimer::singleShot(options.quitAfterMs, &app, &QCoreApplication::quit);
+    // The test hook ends the event loop directly: quit() would close the window, which in kiosk mode or with a
+    // run going asks the user first.
+    if (options.quitAfterMs >= 0) QTimer::singleShot(options.quitAfterMs, &app, [] { QCoreApplication::exit(0); });
     return QApplication::exec();
 }
 

@@ -34,6 +34,8 @@ void addOptions(QCommandLineParser& parser) {
     parser.addOption({QStringLiteral("db"), QStringLiteral("Run history database file."), QStringLiteral("file")});
     parser.addOption({QStringLiteral("screenshots"), QStringLiteral("Save every page as PNG into the folder and quit."),
                       QStringLiteral("dir")});
+    parser.addOption({QStringLiteral("kiosk"),
+                      QStringLiteral("Kiosk mode: full screen, no window decorations; only an engineer may quit.")});
     parser.addOption(
         {QStringLiteral("quit-after-ms"), QStringLiteral("Quit after the given time (tests)."), QStringLiteral("ms")});
 }
@@ -53,6 +55,7 @@ GuiParse readValues(const QCommandLineParser& parser) {
         return usage(QStringLiteral("--lang: '%1' is not en or ru").arg(o.language));
     o.databasePath = parser.value(QStringLiteral("db"));
     o.screenshotDir = parser.value(QStringLiteral("screenshots"));
+    o.kiosk = parser.isSet(QStringLiteral("kiosk"));
     if (parser.isSet(QStringLiteral("quit-after-ms"))) {
         bool ok = false;
         o.quitAfterMs = parser.value(QStringLiteral("quit-after-ms")).toInt(&ok);

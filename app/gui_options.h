@@ -13,6 +13,7 @@ struct GuiOptions {
     QString databasePath;   ///< history database; empty: the default in the user's data folder
     QString screenshotDir;  ///< grab every page to <dir>/<page>.png and quit
     int quitAfterMs = -1;   ///< quit after this many milliseconds (test hook); -1: never
+    bool kiosk = false;     ///< full screen, no window decorations, quitting needs an engineer
 };
 
 /// Result of parsing: options to run with, or an exit code when the process is done

@@ -7,11 +7,13 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QButtonGroup>
+#include <QCloseEvent>
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyle>
@@ -20,9 +22,12 @@
 
 #include "ui/about.h"
 #include "ui/app_state.h"
+#include "ui/keypad.h"
+#include "ui/kiosk.h"
 #include "ui/language.h"
 #include "ui/pages/page_factory.h"
 #include "ui/prompt.h"
+#include "ui/run/run_settings.h"
 
 namespace tt::ui {
 
@@ -173,6 +178,21 @@ void MainWindow::buildMenus() {
             if (m_context.language) m_context.language->apply(code);
         });
     }
+    m_keypad = new KeypadLauncher(this);
+    m_keypadAction = m_viewMenu->addAction(QString());
+    m_keypadAction->setObjectName(QStringLiteral("keypadAction"));
+    m_keypadAction->setCheckable(true);
+    m_keypadAction->setChecked(QSettings().value(QStringLiteral("ui/onScreenKeypad"), false).toBool());
+    m_keypad->setAlwaysOn(m_keypadAction->isChecked());
+    connect(m_keypadAction, &QAction::toggled, this, [this](bool on) {
+        m_keypad->setAlwaysOn(on);
+        QSettings().setValue(QStringLiteral("ui/onScreenKeypad"), on);
+    });
+    m_soundAction = m_viewMenu->addAction(QString());
+    m_soundAction->setObjectName(QStringLiteral("soundAction"));
+    m_soundAction->setCheckable(true);
+    m_soundAction->setChecked(QSettings().value(kSoundOnOutOfTolerance, false).toBool());
+    connect(m_soundAction, &QAction::toggled, this, [](bool on) { QSettings().setValue(kSoundOnOutOfTolerance, on); });
     m_helpMenu = menuBar()->addMenu(QString());
     m_aboutAction = m_helpMenu->addAction(QString(), this, &MainWindow::showAbout);
 }
@@ -204,6 +224,31 @@ void MainWindow::showAbout() {
                              About::text(m_context.state ? m_context.state->logFilePath() : QString()));
 }
 
+bool MainWindow::mayClose() {
+    if (m_kiosk && !engineerMayQuit(this, m_context.prompt)) return false;
+    QStringList reasons;
+    const AppState::Loop loop = m_context.state ? m_context.state->loop() : AppState::Loop::Idle;
+    if (loop == AppState::Loop::Running || loop == AppState::Loop::Paused)
+        reasons << tr("a run is going (loop: %1); quitting stops it, its finished parts stay in the history")
+                       .arg(AppState::loopName(loop));
+    for (const Page* p : m_pages)
+        if (const QString edits = p->unappliedEdits(); !edits.isEmpty())
+            reasons << tr("%1 not applied; quitting discards them").arg(edits);
+    if (reasons.isEmpty()) return true;
+    if (!m_context.prompt) return false;
+    return m_context.prompt->ask(
+               this, tr("Quit TrueTurn?"),
+               tr("Before you quit:\n• %1\n\nQuit anyway?").arg(reasons.join(QStringLiteral("\n• ")))) ==
+           Prompt::Answer::Yes;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (mayClose())
+        event->accept();
+    else
+        event->ignore();
+}
+
 void MainWindow::changeEvent(QEvent* event) {
     if (event->type() == QEvent::LanguageChange) retranslate();
     QMainWindow::changeEvent(event);
@@ -231,6 +276,8 @@ void MainWindow::retranslate() {
     m_languageMenu->setTitle(tr("&Language"));
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About TrueTurn"));
+    m_keypadAction->setText(tr("On-screen &keypad"));
+    m_soundAction->setText(tr("&Sound on rework or scrap"));
     const QString current = m_context.language ? m_context.language->current() : QStringLiteral("en");
     for (QAction* a : m_languageActions)
         a->setChecked(a->data().toString() == current);

@@ -12,8 +12,11 @@ class QLabel;
 class QMenu;
 class QStackedWidget;
 class QToolButton;
+class QCloseEvent;
 
 namespace tt::ui {
+
+class KeypadLauncher;
 
 /// The operator terminal's main window: a navigation rail of large buttons on the left, a header
 /// with the page title and the loop and device badges, the pages, and a status bar.
@@ -30,8 +33,19 @@ public:
     /// The About box (version, what TrueTurn does), through the prompt.
     void showAbout();
 
+    /// Kiosk mode (`trueturn --kiosk`): quitting needs an engineer (engineerMayQuit in ui/kiosk.h).
+    void setKiosk(bool kiosk) { m_kiosk = kiosk; }
+    bool isKiosk() const { return m_kiosk; }
+    /// The on-screen keypad for numeric fields: the "On-screen keypad" setting (View menu) or a touch.
+    KeypadLauncher* keypad() const { return m_keypad; }
+
+    /// Whether the window may close now: in kiosk mode an engineer allowed it; with a run going or
+    /// unapplied edits the user confirmed. Asks through the prompt.
+    bool mayClose();
+
 protected:
     void changeEvent(QEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
 
 private:
     QWidget* buildNavigation();
@@ -60,6 +74,10 @@ private:
     QMenu* m_helpMenu = nullptr;
     QAction* m_quitAction = nullptr;
     QAction* m_aboutAction = nullptr;
+    QAction* m_keypadAction = nullptr;
+    QAction* m_soundAction = nullptr;
+    KeypadLauncher* m_keypad = nullptr;
+    bool m_kiosk = false;
     QList<QAction*> m_languageActions;
 };
 

@@ -35,6 +35,10 @@ public:
     /// Sets all user-visible texts (called once after construction and on language change).
     virtual void retranslate() = 0;
 
+    /// What the user edited on this page and did not apply yet, in the user's words ("3 changed tools");
+    /// empty when nothing is pending. The window asks before quitting with pending edits.
+    virtual QString unappliedEdits() const { return {}; }
+
 protected:
     void changeEvent(QEvent* event) override;
     AppContext& context() { return m_context; }

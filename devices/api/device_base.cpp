@@ -15,6 +15,9 @@ void DeviceBase::setState(core::DeviceState state, const QString& message) {
     if (state == m_health.state && text == m_health.message) return;
     m_health.state = state;
     m_health.message = text;
+    // An error state is an error: the Devices page's "Last error" names it (a refused Modbus connection,
+    // an unplugged device), and keeps naming it after the device recovers.
+    if (state == core::DeviceState::Error && !message.isEmpty()) m_lastError = message;
     notifyChanged();
 }
 

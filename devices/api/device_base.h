@@ -18,7 +18,8 @@ public:
     QString lastError() const override { return m_lastError; }
 
 protected:
-    /// Sets the state and its message; notifies when either changed.
+    /// Sets the state and its message; notifies when either changed. An Error state's message is also the
+    /// last error.
     void setState(core::DeviceState state, const QString& message = {});
     void setLiveValue(const QString& value);
     /// Records a problem that does not change the state (refused reading, corrupt frame).

@@ -2265,6 +2265,10 @@ L/d %4</source>
         <source>No devices are configured.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>boring bar: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>
@@ -2859,6 +2863,10 @@ L/d %4</source>
     </message>
     <message>
         <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>changed settings of a device on the Devices page</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -3660,6 +3668,19 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
 </context>
 <context>
+    <name>tt::ui::Kiosk</name>
+    <message>
+        <source>Quit the terminal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This terminal runs in kiosk mode: only an engineer may quit it.
+
+Are you an engineer, and do you want to quit TrueTurn?</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::KpCalibrationWizard</name>
     <message>
         <source>k_p from known loads</source>
@@ -4144,6 +4165,33 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>History: %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>a run is going (loop: %1); quitting stops it, its finished parts stay in the history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not applied; quitting discards them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quit TrueTurn?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Before you quit:
+• %1
+
+Quit anyway?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On-screen &amp;keypad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Sound on rework or scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ManualEntryPanel</name>
@@ -4306,6 +4354,41 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>not finished</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::NumericKeypad</name>
+    <message>
+        <source>Enter a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limits: %1 … %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a number first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is outside the limits (%2).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5638,6 +5721,13 @@ Your edits are still here.</source>
         <comment>button</comment>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%n changed tool(s) on the Tools page</source>
+        <translation>
+            <numerusform>%n changed tool on the Tools page</numerusform>
+            <numerusform>%n changed tools on the Tools page</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::VerdictCounter</name>
@@ -5663,6 +5753,22 @@ Your edits are still here.</source>
             <numerusform>Yield: %1 % of %n part</numerusform>
             <numerusform>Yield: %1 % of %n parts</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>No part measured yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: GOOD</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: REWORK</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: SCRAP</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 </TS>

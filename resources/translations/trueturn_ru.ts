@@ -2269,6 +2269,10 @@ L/d %4</translation>
         <source>No devices are configured.</source>
         <translation>Устройства не настроены.</translation>
     </message>
+    <message>
+        <source>boring bar: %1</source>
+        <translation>расточная оправка: %1</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CalibrationPage</name>
@@ -2868,6 +2872,10 @@ L/d %4</translation>
     <message>
         <source>Not tested: a run is going on the Run page and these settings would close the device it uses. Stop the run first, or test with the applied settings.</source>
         <translation>Не проверено: на странице «Работа» идёт серия, а эти настройки закрыли бы используемое ею устройство. Сначала остановите серию или проверьте с применёнными настройками.</translation>
+    </message>
+    <message>
+        <source>changed settings of a device on the Devices page</source>
+        <translation>изменённые настройки устройства на странице «Устройства»</translation>
     </message>
 </context>
 <context>
@@ -3682,6 +3690,21 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
 </context>
 <context>
+    <name>tt::ui::Kiosk</name>
+    <message>
+        <source>Quit the terminal</source>
+        <translation>Выход из терминала</translation>
+    </message>
+    <message>
+        <source>This terminal runs in kiosk mode: only an engineer may quit it.
+
+Are you an engineer, and do you want to quit TrueTurn?</source>
+        <translation>Терминал работает в режиме киоска: выйти из него может только инженер.
+
+Вы инженер и хотите выйти из TrueTurn?</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::KpCalibrationWizard</name>
     <message>
         <source>k_p from known loads</source>
@@ -4167,6 +4190,36 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <source>History: %1</source>
         <translation>История: %1</translation>
     </message>
+    <message>
+        <source>a run is going (loop: %1); quitting stops it, its finished parts stay in the history</source>
+        <translation>идёт работа (контур: %1); выход остановит её, готовые детали останутся в истории</translation>
+    </message>
+    <message>
+        <source>%1 not applied; quitting discards them</source>
+        <translation>%1 — не применены; при выходе они пропадут</translation>
+    </message>
+    <message>
+        <source>Quit TrueTurn?</source>
+        <translation>Выйти из TrueTurn?</translation>
+    </message>
+    <message>
+        <source>Before you quit:
+• %1
+
+Quit anyway?</source>
+        <translation>Перед выходом:
+• %1
+
+Всё равно выйти?</translation>
+    </message>
+    <message>
+        <source>On-screen &amp;keypad</source>
+        <translation>Экранная &amp;клавиатура</translation>
+    </message>
+    <message>
+        <source>&amp;Sound on rework or scrap</source>
+        <translation>&amp;Звук при доработке или браке</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ManualEntryPanel</name>
@@ -4330,6 +4383,41 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>not finished</source>
         <translation>не завершена</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::NumericKeypad</name>
+    <message>
+        <source>Enter a number</source>
+        <translation>Введите число</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Сброс</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>ОК</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>Limits: %1 … %2</source>
+        <translation>Пределы: %1 … %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Type a number first.</source>
+        <translation>Сначала введите число.</translation>
+    </message>
+    <message>
+        <source>%1 is outside the limits (%2).</source>
+        <translation>%1 вне пределов (%2).</translation>
     </message>
 </context>
 <context>
@@ -5665,6 +5753,14 @@ Your edits are still here.</source>
         <comment>button</comment>
         <translation>Применить</translation>
     </message>
+    <message numerus="yes">
+        <source>%n changed tool(s) on the Tools page</source>
+        <translation>
+            <numerusform>%n изменённый инструмент на странице «Инструменты»</numerusform>
+            <numerusform>%n изменённых инструмента на странице «Инструменты»</numerusform>
+            <numerusform>%n изменённых инструментов на странице «Инструменты»</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::VerdictCounter</name>
@@ -5691,6 +5787,22 @@ Your edits are still here.</source>
             <numerusform>Выход годных: %1 % из %n деталей</numerusform>
             <numerusform>Выход годных: %1 % из %n деталей</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>No part measured yet</source>
+        <translation>Деталь ещё не измерена</translation>
+    </message>
+    <message>
+        <source>Part %1: GOOD</source>
+        <translation>Деталь %1: ГОДНАЯ</translation>
+    </message>
+    <message>
+        <source>Part %1: REWORK</source>
+        <translation>Деталь %1: ДОРАБОТКА</translation>
+    </message>
+    <message>
+        <source>Part %1: SCRAP</source>
+        <translation>Деталь %1: БРАК</translation>
     </message>
 </context>
 </TS>

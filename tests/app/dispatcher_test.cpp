@@ -70,6 +70,15 @@ TEST(Gui, StartsOffscreenOnTheSimulatorAndQuitsCleanly) {
         << "the embedded history is created in the user's data folder";
 }
 
+TEST(Gui, KioskModeStartsAndTheTestTimerEndsItWithoutTheEngineersQuestion) {
+    QTemporaryDir home;
+    const CliResult r =
+        runTrueturn({QStringLiteral("--kiosk"), QStringLiteral("--quit-after-ms"), QStringLiteral("1500")}, 60000,
+                    offscreenGui(home));
+    EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
+    EXPECT_TRUE(runTrueturn({QStringLiteral("--help")}).out.contains(QStringLiteral("--kiosk")));
+}
+
 TEST(Gui, SavesAScreenshotOfEveryPage) {
     QTemporaryDir home;
     const QString shots = home.filePath(QStringLiteral("shots"));

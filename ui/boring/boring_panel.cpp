@@ -18,6 +18,7 @@
 #include "config/boring_config.h"
 #include "core/storage/tool_store.h"
 #include "devices/api/device_manager.h"
+#include "ui/app_state.h"
 #include "ui/boring/boring_link.h"
 #include "ui/boring/compensation_session.h"
 #include "ui/boring/hold_reason.h"
@@ -586,11 +587,22 @@ QString BoringPanel::detail() const {
     return m_detailLabel->text();
 }
 
+void BoringPanel::publishLoopState() {
+    if (!m_context.state || (!m_running && !m_publishedRun)) return;  // the shaft run's state is left alone
+    m_publishedRun = m_running;
+    const QString detail = tr("boring bar: %1").arg(m_running ? m_headline : tr("Stopped"));
+    m_context.state->setLoop(!m_running  ? AppState::Loop::Idle
+                             : m_holding ? AppState::Loop::Paused
+                                         : AppState::Loop::Running,
+                             detail);
+}
+
 void BoringPanel::showWords() {
+    publishLoopState();
     const bool run = m_running;
     const BoringRunStats& s = m_trace.stats();
     const QString tone = !run        ? QStringLiteral("#6b7785")
-                         : m_holding ? QStringLiteral("#b26a00")
+                         : m_holding ? QStringLiteral("#9a5b00")
                                      : QStringLiteral("#2e7d32");
     m_state->setText(!run ? tr("Stopped") : m_holding ? tr("Holding") : m_headline);
     m_state->setStyleSheet(QStringLiteral("font-size: 16pt; font-weight: bold; color: white; background: %1; "
@@ -606,7 +618,7 @@ void BoringPanel::showWords() {
         colour = QStringLiteral("#b71c1c");
     } else if (run && m_holding) {
         reason = m_headline + QStringLiteral(": ") + m_reason;
-        colour = QStringLiteral("#b26a00");
+        colour = QStringLiteral("#9a5b00");
     } else if (run) {
         reason = m_reason;
     } else if (!m_result.isEmpty()) {

@@ -126,6 +126,9 @@ private:
     void onCycles(const QVector<core::BoringRunCycle>& batch);
     void refreshPlots();
     void showWords();
+    /// Tells the window's header (AppState) the compensation's state: Running while it compensates, Paused
+    /// while it holds the offset, Idle once stopped.
+    void publishLoopState();
     void showProblem(const QString& text);
     void finishPass();
     void loadSettings();
@@ -181,6 +184,7 @@ private:
     QPushButton* m_stop;
     QPushButton* m_zero;
     QLabel* m_state;
+    bool m_publishedRun = false;  ///< the header shows this panel's run (set Idle again when it stops)
     QLabel* m_reasonLabel;
     QLabel* m_detailLabel;
     QLabel* m_offsetValue;

@@ -73,7 +73,7 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     m_storeProblem->setStyleSheet(QStringLiteral("color: #b71c1c; font-weight: bold;"));
     m_storeProblem->setWordWrap(true);
     m_deviceNotice->setObjectName(QStringLiteral("calibrationDeviceNotice"));
-    m_deviceNotice->setStyleSheet(QStringLiteral("color: #b26a00; font-weight: bold;"));
+    m_deviceNotice->setStyleSheet(QStringLiteral("color: #9a5b00; font-weight: bold;"));
     m_deviceNotice->setWordWrap(true);
     m_deviceNotice->hide();
     for (QLabel* l : {m_probeText, m_kpText})

@@ -172,7 +172,7 @@ void DevicesPage::buildUi() {
         "QLabel#DeviceStateBadge { font-size: 14pt; font-weight: bold; border-radius: 6px; padding: 6px 14px; "
         "color: #ffffff; background: #6b7785; }"
         "QLabel#DeviceStateBadge[tone=\"ok\"] { background: #2e7d32; }"
-        "QLabel#DeviceStateBadge[tone=\"warn\"] { background: #b26a00; }"
+        "QLabel#DeviceStateBadge[tone=\"warn\"] { background: #9a5b00; }"
         "QLabel#DeviceStateBadge[tone=\"fault\"] { background: #c62828; }"
         "QLabel#LiveValue { font-size: 24pt; font-weight: bold; color: #1f2a36; }"
         "QLabel#LiveValue[tone=\"stale\"] { color: #8a96a3; }"
@@ -180,7 +180,7 @@ void DevicesPage::buildUi() {
         "QLabel#TestResult { font-size: 14pt; font-weight: bold; }"
         "QLabel#TestResult[tone=\"ok\"] { color: #2e7d32; }"
         "QLabel#TestResult[tone=\"fault\"] { color: #c62828; }"
-        "QLabel#TestResult[tone=\"warn\"] { color: #b26a00; }"
+        "QLabel#TestResult[tone=\"warn\"] { color: #9a5b00; }"
         "QLabel#FormProblems { color: #c62828; font-weight: bold; }"
         "QListWidget#deviceList { font-size: 14pt; }"
         "QGroupBox QCheckBox { min-height: 40px; }"
@@ -441,6 +441,10 @@ void DevicesPage::validateForm() {
     m_revert->setEnabled(edited);
 }
 
+QString DevicesPage::unappliedEdits() const {
+    return m_selection && m_revert->isEnabled() ? tr("changed settings of a device on the Devices page") : QString();
+}
+
 void DevicesPage::apply() {
     if (!m_selection) return;
     const QVariantMap values = m_form->values();
@@ -621,6 +625,9 @@ void DevicesPage::refreshStatus() {
             break;
     }
     m_stateMessage->setText(QString::fromStdString(h.message));
+    // A "Connected" from an earlier test is stale once the device is not ready (unplugged, refused).
+    if (!m_testTarget && h.state != DeviceState::Ready && m_testResult->property("tone").toString() == u"ok")
+        m_testResult->hide();
     const QString value = device->liveValue();
     setTone(m_live, h.state == DeviceState::Ready ? QStringLiteral("ok") : QStringLiteral("stale"));
     m_live->setText(value.isEmpty()                 ? QStringLiteral("—")

@@ -43,6 +43,7 @@ public:
     ~DevicesPage() override;
     QString title() const override;
     void retranslate() override;
+    QString unappliedEdits() const override;
 
     devices::DeviceManager& manager() { return *m_manager; }
     /// The form of the device shown (for tests).

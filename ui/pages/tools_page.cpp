@@ -338,6 +338,11 @@ void ToolsPage::removeSelectedTools() {
     m_model->removeTools(QList<int>(rows.begin(), rows.end()));
 }
 
+QString ToolsPage::unappliedEdits() const {
+    const int pending = m_model ? m_model->pendingCount() : 0;
+    return pending > 0 ? tr("%n changed tool(s) on the Tools page", nullptr, pending) : QString();
+}
+
 bool ToolsPage::applyChanges() {
     if (!m_store) return false;
     if (!m_model->hasPending()) {

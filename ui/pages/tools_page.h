@@ -38,6 +38,7 @@ public:
     ~ToolsPage() override;
     QString title() const override;
     void retranslate() override;
+    QString unappliedEdits() const override;
 
     /// Stores the pending edits (refused with a warning while a row has problems or no operator
     /// name is set); returns whether they were stored.

@@ -238,7 +238,7 @@ void FeedScheduleTool::buildLayout() {
 
     auto* leftPanel = new QWidget(this);
     leftPanel->setLayout(left);
-    leftPanel->setFixedWidth(440);
+    leftPanel->setFixedWidth(456);  // the paired spin boxes keep their digits in Russian
     auto* root = new QHBoxLayout(this);
     root->setContentsMargins(6, 6, 6, 6);
     root->addWidget(leftPanel);

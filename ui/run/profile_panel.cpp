@@ -28,8 +28,8 @@ std::vector<double> toStd(const QVector<double>& v) {
 ProfilePanel::ProfilePanel(QWidget* parent) : QWidget(parent), m_profile(new Chart(this)), m_history(new Chart(this)) {
     m_profile->setObjectName(QStringLiteral("profileChart"));
     m_history->setObjectName(QStringLiteral("historyChart"));
-    m_profile->setMinimumHeight(250);
-    m_history->setMinimumHeight(200);
+    m_profile->setMinimumHeight(220);
+    m_history->setMinimumHeight(180);  // the Run page fits 1280 x 800 with the verdict banner
     m_history->setYTickCount(3);
     // Before the first run: the axes of a 325 mm shaft and of the strip, not arbitrary ones.
     m_profile->setXRange(0.0, 325.0);

@@ -21,6 +21,10 @@ namespace tt::ui {
 /// offers whole (devices::ShaftMachineOffer, such as the built-in simulator's lathe).
 inline const QString kDevicesMachineKey = QStringLiteral("real");
 
+/// The setting (QSettings key) "Sound on rework or scrap": the Run page beeps for every part judged rework or
+/// scrap (View menu of the main window).
+inline const QString kSoundOnOutOfTolerance = QStringLiteral("run/soundOnOutOfTolerance");
+
 /// Makes the machine of a run for its scenario; called in the loop's thread.
 using MachineMaker = std::function<std::shared_ptr<core::ShaftMachine>(const core::ShaftScenario& scenario)>;
 

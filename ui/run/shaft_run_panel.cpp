@@ -1,5 +1,6 @@
 #include "ui/run/shaft_run_panel.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
@@ -117,9 +118,18 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     left->addWidget(m_profile, 1);
     left->addWidget(buildDevicePicker());
     left->addWidget(m_lathePanel);
+    // The run's options under the profile: "by hand" just above the entry fields it shows (the set-up row and
+    // the side column fit 1280 x 800).
+    auto* options = new QHBoxLayout;
+    options->addWidget(m_manualMode);
+    options->addSpacing(16);
+    options->addWidget(m_pauseOnScrap);
+    options->addStretch(1);
+    left->addLayout(options);
+    left->addWidget(m_devices);  // the machine and its devices in words, under the profile
     left->addWidget(m_manual);
     auto* body = new QHBoxLayout;
-    body->addLayout(left, 5);
+    body->addLayout(left, 4);
     body->addWidget(buildSide(), 3);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(8, 8, 8, 4);
@@ -149,6 +159,7 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
             m_manualMode->setChecked(m_gauge->currentData().toString().isEmpty());
         updateTexts();
     });
+    connect(m_verdicts, &VerdictCounter::outOfTolerance, this, &ShaftRunPanel::onOutOfTolerance);
     connect(m_skip, &QPushButton::clicked, m_session, &RunSession::skipMeasurement);
     connect(m_manual, &ManualEntryPanel::diametersEntered, m_session, &RunSession::submitDiameters);
     connect(m_manual, &ManualEntryPanel::valueRefused, this, [this](const QString& text) { addAlarm(text, true); });
@@ -215,7 +226,7 @@ QWidget* ShaftRunPanel::buildControls() {
     m_speed->setCurrentIndex(kDefaultSpeed);
     m_delay->setRange(1, 8);
     m_delay->setValue(2);
-    m_delay->setMinimumWidth(76);
+    m_delay->setMinimumWidth(96);  // the digit beside the wide arrows of the style
     QFont counter = m_partCounter->font();
     counter.setPointSize(16);
     counter.setBold(true);
@@ -226,10 +237,14 @@ QWidget* ShaftRunPanel::buildControls() {
     row->addSpacing(12);
     m_machine->setObjectName(QStringLiteral("machineCombo"));
     fillMachineChoices();
+    // The label above its field: the row of the big buttons fits 1280 px in every language.
     for (auto [label, field] : {std::pair<QLabel*, QWidget*>{m_machineLabel, m_machine}, {m_presetLabel, m_preset}}) {
+        auto* box = new QVBoxLayout;
+        box->setSpacing(0);
+        box->addWidget(label);
+        box->addWidget(field);
         row->addSpacing(8);
-        row->addWidget(label);
-        row->addWidget(field);
+        row->addLayout(box);
     }
     row->addStretch(1);
     return bar;
@@ -248,8 +263,6 @@ QWidget* ShaftRunPanel::buildSetupRow() {
         row->addWidget(label);
         row->addWidget(field);
     }
-    row->addSpacing(8);
-    row->addWidget(m_manualMode);
     row->addStretch(1);
     return bar;
 }
@@ -302,9 +315,7 @@ QWidget* ShaftRunPanel::buildSide() {
     m_pauseOnScrap->setObjectName(QStringLiteral("pauseOnScrapCheck"));
     m_pauseOnScrap->setStyleSheet(m_manualMode->styleSheet());
     column->addWidget(m_verdicts);
-    column->addWidget(m_pauseOnScrap);
     column->addWidget(m_detail);
-    column->addWidget(m_devices);
     column->addWidget(m_skip);
     column->addWidget(m_profile->historyChart(), 3);
     column->addWidget(m_alarmsTitle);
@@ -517,6 +528,12 @@ void ShaftRunPanel::onLoopEvent(const core::LoopEvent& event) {
     if (event.kind == core::LoopEvent::Kind::PartStarted) updateLathePanel();
 }
 
+void ShaftRunPanel::onOutOfTolerance() {
+    if (!QSettings().value(kSoundOnOutOfTolerance, false).toBool()) return;
+    QApplication::beep();  // the terminal's bell (docs/DECISIONS.md: why no generated tone)
+    emit alertSounded();
+}
+
 void ShaftRunPanel::addAlarm(const QString& text, bool severe) {
     auto* item = new QListWidgetItem(
         QStringLiteral("%1  %2").arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), text));
@@ -622,7 +639,7 @@ QString ShaftRunPanel::deviceText() const {
 void ShaftRunPanel::updateTexts() {
     m_state->setText(stateText());
     m_state->setStyleSheet(m_snapshot.state == core::LoopState::Fault     ? QStringLiteral("color: #c62828;")
-                           : m_snapshot.state == core::LoopState::Paused  ? QStringLiteral("color: #b26a00;")
+                           : m_snapshot.state == core::LoopState::Paused  ? QStringLiteral("color: #9a5b00;")
                            : m_snapshot.state == core::LoopState::Running ? QStringLiteral("color: #2e7d32;")
                                                                           : QString());
     const std::optional<devices::ShaftMachineOffer> offer = chosenOffer();

@@ -55,6 +55,11 @@ public:
     /// The settings the controls hold now.
     RunSettings settings() const;
 
+signals:
+    /// The out-of-tolerance alert sounded: a rework or scrap part with the setting kSoundOnOutOfTolerance on
+    /// (View > Sound on rework or scrap).
+    void alertSounded();
+
 private:
     QWidget* buildControls();
     QWidget* buildSetupRow();
@@ -70,6 +75,7 @@ private:
     void onSnapshot(const LoopSnapshot& snapshot);
     void onLoopEvent(const core::LoopEvent& event);
     void addAlarm(const QString& text, bool severe);
+    void onOutOfTolerance();
     void fillDeviceChoices();
     void restoreChoices();
     void saveChoices() const;

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QStyle>
 
 namespace tt::ui {
 
@@ -24,17 +25,24 @@ QLabel* bigLabel(QWidget* parent, const char* name, const char* colour) {
 VerdictCounter::VerdictCounter(QWidget* parent)
     : QWidget(parent),
       m_good(bigLabel(this, "verdictGood", "#2e7d32")),
-      m_rework(bigLabel(this, "verdictRework", "#b26a00")),
+      m_rework(bigLabel(this, "verdictRework", "#9a5b00")),
       m_scrap(bigLabel(this, "verdictScrap", "#c62828")),
-      m_yield(bigLabel(this, "verdictYield", nullptr)) {
+      m_yield(bigLabel(this, "verdictYield", nullptr)),
+      m_last(new QLabel(this)) {
     setObjectName(QStringLiteral("verdictCounter"));
     auto* grid = new QGridLayout(this);
-    grid->setContentsMargins(0, 4, 0, 4);
+    grid->setContentsMargins(0, 2, 0, 2);
+    grid->setVerticalSpacing(4);
     grid->setHorizontalSpacing(16);
-    grid->addWidget(m_good, 0, 0);
-    grid->addWidget(m_rework, 0, 1);
-    grid->addWidget(m_scrap, 0, 2);
-    grid->addWidget(m_yield, 1, 0, 1, 3);
+    m_last->setObjectName(QStringLiteral("lastPartVerdict"));  // colours and size: resources/style/trueturn.qss
+    m_last->setAlignment(Qt::AlignCenter);
+    m_last->setMinimumHeight(44);
+    m_last->setWordWrap(true);
+    grid->addWidget(m_last, 0, 0, 1, 3);
+    grid->addWidget(m_good, 1, 0);
+    grid->addWidget(m_rework, 1, 1);
+    grid->addWidget(m_scrap, 1, 2);
+    grid->addWidget(m_yield, 2, 0, 1, 3);
     retranslate();
 }
 
@@ -43,11 +51,16 @@ void VerdictCounter::onLoopEvent(const core::LoopEvent& event) {
     const std::optional<core::ToleranceVerdict> verdict = event.measurement->verdict();
     if (!verdict) return;
     m_counts.add(*verdict);
+    m_lastVerdict = verdict;
+    m_lastPart = event.partNumber;
     updateTexts();
+    if (*verdict != core::ToleranceVerdict::Good) emit outOfTolerance(*verdict);
 }
 
 void VerdictCounter::reset() {
     m_counts = {};
+    m_lastVerdict.reset();
+    m_lastPart = 0;
     updateTexts();
 }
 
@@ -61,6 +74,28 @@ void VerdictCounter::retranslate() {
 }
 
 void VerdictCounter::updateTexts() {
+    QString key = QStringLiteral("none");
+    QString text = tr("No part measured yet");
+    if (m_lastVerdict) {
+        switch (*m_lastVerdict) {
+            case core::ToleranceVerdict::Good:
+                key = QStringLiteral("good");
+                text = tr("Part %1: GOOD").arg(m_lastPart);
+                break;
+            case core::ToleranceVerdict::Rework:
+                key = QStringLiteral("rework");
+                text = tr("Part %1: REWORK").arg(m_lastPart);
+                break;
+            case core::ToleranceVerdict::Scrap:
+                key = QStringLiteral("scrap");
+                text = tr("Part %1: SCRAP").arg(m_lastPart);
+                break;
+        }
+    }
+    m_last->setText(text);
+    m_last->setProperty("verdict", key);
+    m_last->style()->unpolish(m_last);
+    m_last->style()->polish(m_last);
     m_good->setText(tr("Good: %1").arg(m_counts.good));
     m_rework->setText(tr("Rework: %1").arg(m_counts.rework));
     m_scrap->setText(tr("Scrap: %1").arg(m_counts.scrap));

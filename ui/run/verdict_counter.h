@@ -1,6 +1,8 @@
 #pragma once
 
 #include <QWidget>
+#include <cstdint>
+#include <optional>
 
 #include "core/common/tolerance.h"
 #include "core/loop/loop_events.h"
@@ -9,9 +11,10 @@ class QLabel;
 
 namespace tt::ui {
 
-/// The Run page's tally of the measured parts by tolerance verdict: good, rework and scrap counters and the
-/// first-pass yield, in large type (read from a metre away). Counts each PartMeasured event's part verdict
-/// (the worst of its points).
+/// The Run page's tally of the measured parts by tolerance verdict: the last part's verdict in a big coloured
+/// banner (scrap red, rework amber, good green: an out-of-tolerance part never looks accepted), the good,
+/// rework and scrap counters and the first-pass yield, in large type (read from a metre away). Counts each
+/// PartMeasured event's part verdict (the worst of its points).
 class VerdictCounter : public QWidget {
     Q_OBJECT
 
@@ -24,6 +27,12 @@ public:
     void reset();
     /// The counts so far.
     const core::VerdictCounts& counts() const { return m_counts; }
+    /// The last judged part's verdict, if any part was judged since the last reset.
+    std::optional<core::ToleranceVerdict> lastVerdict() const { return m_lastVerdict; }
+
+signals:
+    /// A part was judged rework or scrap (the Run page sounds its alert on it).
+    void outOfTolerance(tt::core::ToleranceVerdict verdict);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -33,10 +42,13 @@ private:
     void updateTexts();
 
     core::VerdictCounts m_counts;
+    std::optional<core::ToleranceVerdict> m_lastVerdict;
+    std::int64_t m_lastPart = 0;
     QLabel* m_good;
     QLabel* m_rework;
     QLabel* m_scrap;
     QLabel* m_yield;
+    QLabel* m_last;  ///< the last part's verdict, big and coloured
 };
 
 }  // namespace tt::ui
