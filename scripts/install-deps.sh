@@ -16,7 +16,7 @@ packages=(
 # recommends a real-time kernel.
 test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
-    clang libclang-rt-14-dev postgresql linuxcnc-uspace
+    clang libclang-rt-14-dev postgresql linuxcnc-uspace poppler-utils
     python3-scipy python3-statsmodels
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then
