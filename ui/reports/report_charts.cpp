@@ -122,7 +122,7 @@ void ReportCharts::showLocation(Chart& chart, const PointReport& point, bool com
                         {std::min(*low, c.limits.location.lowerMm), std::max(*high, c.limits.location.upperMm)}, kFit);
     }
     chart.rescale(false);
-    if (!compact) chart.setLegendBelow(5);
+    if (!compact) chart.setLegendBelow(2);
     chart.refresh();
 }
 
@@ -194,7 +194,7 @@ void ReportCharts::showHistogram(Chart& chart, const PointReport& point) {
     chart.setSeries(QStringLiteral("nominal"), tr("nominal"), {point.nominalMm, point.nominalMm}, {0.0, top}, kCentre);
     chart.rescale(true);
     chart.setXTickCount(4);
-    chart.setLegendBelow(4);
+    chart.setLegendBelow(2);
     chart.refresh();
 }
 
