@@ -96,6 +96,7 @@ void ReportCharts::showLocation(Chart& chart, const PointReport& point, bool com
     const core::ControlChart& c = point.analysis.chart;
     const bool individuals = c.limits.kind == core::ChartKind::IndividualsMovingRange;
     chart.clear();
+    if (!compact) chart.setLegendBelow(3);  // before the series: the legend wraps the entries added after
     const std::vector<double> xs = pointNumbers(c.locationMm.size());
     const double last = xs.empty() ? 1.0 : xs.back();
     chart.setTitle(compact ? pointTitle(point) : (individuals ? tr("Individual diameters") : tr("Subgroup means")));
@@ -122,7 +123,6 @@ void ReportCharts::showLocation(Chart& chart, const PointReport& point, bool com
                         {std::min(*low, c.limits.location.lowerMm), std::max(*high, c.limits.location.upperMm)}, kFit);
     }
     chart.rescale(false);
-    if (!compact) chart.setLegendBelow(2);
     chart.refresh();
 }
 
@@ -165,6 +165,7 @@ void ReportCharts::showSpread(Chart& chart, const PointReport& point) {
 void ReportCharts::showHistogram(Chart& chart, const PointReport& point) {
     const ReportHistogram h = histogramOf(point);
     chart.clear();
+    chart.setLegendBelow(2);
     chart.setTitle(tr("Distribution"));
     chart.setAxisTitles(tr("diameter, mm"), tr("parts"));
     chart.setSeries(QStringLiteral("bins"), tr("parts"), h.centresMm, h.counts, kData, Chart::Style::Steps);
@@ -194,12 +195,12 @@ void ReportCharts::showHistogram(Chart& chart, const PointReport& point) {
     chart.setSeries(QStringLiteral("nominal"), tr("nominal"), {point.nominalMm, point.nominalMm}, {0.0, top}, kCentre);
     chart.rescale(true);
     chart.setXTickCount(4);
-    chart.setLegendBelow(2);
     chart.refresh();
 }
 
 void ReportCharts::showProfile(Chart& chart, const PartProfile& profile, const QString& title) {
     chart.clear();
+    chart.setLegendBelow(3);
     chart.setTitle(title);
     chart.setAxisTitles(tr("x along the shaft, mm"), tr("diameter, mm"));
     chart.setBand(QStringLiteral("tolerance"), tr("tolerance band"), profile.zMm, profile.lowerMm, profile.upperMm,
@@ -208,7 +209,10 @@ void ReportCharts::showProfile(Chart& chart, const PartProfile& profile, const Q
     chart.setSeries(QStringLiteral("measured"), tr("measured"), profile.zMm, profile.measuredMm, kData,
                     Chart::Style::LineAndPoints);
     chart.rescale(false);
-    chart.setLegendBelow(3);
+    if (profile.zMm.size() > 1) {  // the end points whole, not cut by the axes
+        const double margin = 0.04 * (profile.zMm.back() - profile.zMm.front());
+        chart.setXRange(profile.zMm.front() - margin, profile.zMm.back() + margin);
+    }
     chart.refresh();
 }
 

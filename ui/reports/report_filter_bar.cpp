@@ -59,7 +59,7 @@ ReportFilterBar::ReportFilterBar(QWidget* parent)
     m_run->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_run->setMinimumContentsLength(6);
     m_machine->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_machine->setMinimumContentsLength(6);
+    m_machine->setMinimumContentsLength(10);
     m_subgroup->setObjectName(QStringLiteral("reportSubgroup"));
     m_subgroup->setRange(1, 25);
     m_chart->setObjectName(QStringLiteral("reportChart"));

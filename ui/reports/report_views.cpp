@@ -59,15 +59,21 @@ ReportViews::ReportViews(QWidget* parent)
     m_violations->setObjectName(QStringLiteral("reportViolations"));
     m_violations->setWordWrap(true);
     m_violations->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    m_spread->setMinimumHeight(150);
-    m_location->setMinimumHeight(200);
+    // Explicit minimum widths: a chart's legend must not widen the window beyond 1280 px.
+    m_spread->setMinimumSize(400, 150);
+    m_location->setMinimumSize(400, 200);
+    m_histogram->setMinimumSize(380, 220);
+    m_profile->setMinimumSize(400, 220);
     m_capability->setColumnCount(3);
     m_capability->verticalHeader()->setVisible(false);
     m_capability->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_capability->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
-    m_capability->horizontalHeader()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
-    m_capability->horizontalHeader()->setSectionResizeMode(2, QHeaderView::ResizeToContents);
-    m_capability->setMinimumWidth(360);
+    m_capability->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Fixed);
+    m_capability->horizontalHeader()->setSectionResizeMode(2, QHeaderView::Fixed);
+    m_capability->setColumnWidth(1, 120);
+    m_capability->setColumnWidth(2, 150);
+    m_capability->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_capability->setMinimumWidth(480);
 
     auto* pointBar = new QHBoxLayout;
     pointBar->addWidget(m_pointLabel);
@@ -149,9 +155,10 @@ void ReportViews::showPoint(int index) {
     ReportCharts::showHistogram(*m_histogram, p);
     QStringList lines{
         tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size()))};
-    lines << ReportCharts::violationLines(p, 12);
+    lines << ReportCharts::violationLines(p, 8);
     m_violations->setText(lines.join(QLatin1Char('\n')));
     const std::vector<CapabilityLine> table = ReportCharts::capabilityLines(p);
+    m_capability->clearSpans();
     m_capability->setRowCount(static_cast<int>(table.size()));
     for (int row = 0; row < static_cast<int>(table.size()); ++row) {
         const CapabilityLine& line = table[static_cast<std::size_t>(row)];
@@ -160,6 +167,7 @@ void ReportViews::showPoint(int index) {
         value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
         m_capability->setItem(row, 1, value);
         m_capability->setItem(row, 2, new QTableWidgetItem(line.interval));
+        if (line.interval.isEmpty()) m_capability->setSpan(row, 1, 1, 2);  // the method, the p-value, sigmas
     }
 }
 
