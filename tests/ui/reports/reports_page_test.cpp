@@ -16,6 +16,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <set>
 
 #include "core/quality/point_analysis.h"
@@ -222,6 +223,26 @@ TEST_F(ReportsPageTest, ExportsPdfCsvAndDfq) {
             EXPECT_TRUE(lines.front().startsWith("K0100 5"));
         }
     }
+}
+
+// Cancel during the PDF export: the click is queued before the export starts and handled at its first
+// progress call (the page keeps the window alive between pages), so no file is left behind.
+TEST_F(ReportsPageTest, CancelledPdfExportLeavesNoFile) {
+    MainWindow window(context);
+    ReportsPage* page = showReports(window);
+    ASSERT_NE(page, nullptr);
+    const QString pdf = dir.filePath(QStringLiteral("cancelled.pdf"));
+    QTimer::singleShot(0, page, [&] {
+        auto* cancel = window.findChild<QPushButton*>(QStringLiteral("reportCancel"));
+        ASSERT_TRUE(cancel && cancel->isVisible());
+        cancel->click();
+    });
+    EXPECT_FALSE(page->exportPdf(pdf));
+    EXPECT_FALSE(QFile::exists(pdf));
+    EXPECT_EQ(page->status()->text(), QStringLiteral("Cancelled."));
+    EXPECT_FALSE(page->busy());
+    EXPECT_TRUE(page->exportPdf(pdf));  // and it works again
+    EXPECT_TRUE(QFile::exists(pdf));
 }
 
 TEST_F(ReportsPageTest, RussianShowsNoEnglish) {
