@@ -3,6 +3,8 @@
 #include <trueturn/version.h>
 #include <QApplication>
 #include <QCoreApplication>
+#include <QFile>
+#include <QTemporaryDir>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -39,6 +41,11 @@ std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
     const Command* command = argc > 1 ? findCommand(QString::fromLocal8Bit(argv[1])) : nullptr;
     if (!command || !command->paints || !command->paints(raw)) return std::make_unique<QCoreApplication>(argc, argv);
     qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        // A headless shell has no session runtime folder; a private one (0700) instead of Qt's warning on stderr.
+        static QTemporaryDir runtime;
+        if (runtime.isValid()) qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime.path()));
+    }
     return std::make_unique<QApplication>(argc, argv);
 }
 

@@ -68,6 +68,7 @@ TEST_F(ReportPdfTest, TitlePageAndOnePagePerControlPoint) {
     const QString pdf = path("report.pdf");
     const CliResult r = runTrueturn({"report", "--db", db, "--pdf", pdf, "--json"});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.isEmpty()) << "the offscreen application says nothing: " << qPrintable(r.err);
     const qsizetype points = r.json()["points"].toArray().size();
     ASSERT_EQ(points, 5);  // paper-2012-group1 has five control points
 
