@@ -84,9 +84,10 @@ void Chart::setLegendBelow(int columns) {
     // the width of its entries: without this a short (or empty) legend narrows the axes above it.
     constexpr int kUnlimitedWidth = 100000;
     m_plot->legend->setMaximumSize(kUnlimitedWidth, QWIDGETSIZE_MAX);
-    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     m_plot->legend->setWrap(std::max(1, columns));
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // rearranges the entries already there
     m_plot->legend->setMargins(QMargins(4, 2, 4, 2));
+    m_plot->plotLayout()->setMargins(QMargins(0, 0, 1, 1));  // the legend's frame inside the widget
 }
 
 void Chart::setAxisTitles(const QString& x, const QString& y) {
@@ -186,7 +187,6 @@ void Chart::render(QCPPainter& painter, const QRect& target) {
     showLegendWhenItHasEntries();
     painter.save();
     painter.translate(target.topLeft());
-    painter.setClipRect(QRect(QPoint(0, 0), target.size()));
     m_plot->toPainter(&painter, target.width(), target.height());
     painter.restore();
 }

@@ -232,6 +232,7 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
                                 tr("machine %1, job %2").arg(header.machines, header.jobs)),
                        9);
             ReportCharts::showLocation(*location, p);
+            location->setLegendBelow(5);  // the page is wide enough for one legend row
             location->setFontPointSize(kChartFontPt);
             sheet.chart(*location, sheet.take(290));
             ReportCharts::showSpread(*spread, p);
@@ -240,6 +241,7 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
             const QRect bottom = sheet.take(300);
             const int histogramWidth = bottom.width() * 58 / 100;
             ReportCharts::showHistogram(*histogram, p);
+            histogram->setLegendBelow(2);
             histogram->setFontPointSize(kChartFontPt);
             sheet.chart(*histogram, QRect(bottom.left(), bottom.top(), histogramWidth, bottom.height()));
             sheet.table(ReportCharts::capabilityLines(p), histogramWidth + 12, bottom.top() + 10,
