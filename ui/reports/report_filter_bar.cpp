@@ -154,6 +154,9 @@ void ReportFilterBar::retranslate() {
     m_from->setSpecialValueText(tr("any date"));
     m_to->setSpecialValueText(tr("any date"));
     m_baseline->setSpecialValueText(tr("all points"));
+    // A spin box sizes itself once: room for the words of its special value in this language.
+    for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{m_from, m_to, m_baseline})
+        box->setMinimumWidth(box->fontMetrics().horizontalAdvance(box->specialValueText()) + 56);
     m_chart->setItemText(static_cast<int>(ReportChart::Automatic), tr("by subgroup size"));
     m_chart->setItemText(static_cast<int>(ReportChart::XbarRange), tr("X̄-R"));
     m_chart->setItemText(static_cast<int>(ReportChart::XbarStdDev), tr("X̄-s"));
