@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds TrueTurn (Release, build/) and starts it on the built-in
+# Installs what is missing, builds TrueTurn and its device plugins (Release, build/; the plugins are
+# dependencies of the trueturn target, in build/lib/trueturn/plugins) and starts it on the built-in
 # simulator with the embedded SQLite history in the user's data folder. Without a display it
 # runs the headless closed-loop demo instead. Extra arguments go to trueturn.
 set -euo pipefail
@@ -13,6 +14,8 @@ if [[ ! -f build/CMakeCache.txt ]]; then
 fi
 cmake "${configure_args[@]}" >/dev/null
 cmake --build build --target trueturn -j "$(nproc)"
+plugins=(build/lib/trueturn/plugins/libtrueturn_*.so)
+echo "run.sh: ${#plugins[@]} device plugins in build/lib/trueturn/plugins (the Devices page offers them)"
 
 if [[ -z "${DISPLAY:-}" && -z "${WAYLAND_DISPLAY:-}" && -z "${QT_QPA_PLATFORM:-}" ]]; then
     echo "run.sh: no display found (DISPLAY is not set); running the headless closed-loop demo."

@@ -26,4 +26,7 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Release -DTRUETURN_FUZZ=ON 
 cmake --build build-fuzz --target fuzz_targets -j "$(nproc)"
 ctest --test-dir build-fuzz --output-on-failure -j "$(nproc)" --timeout 120
 
+# The .deb and .tar.gz: built, linted, installed into this machine, run, purged.
+scripts/check-package.sh build
+
 echo "test.sh: all tests passed in $(( $(date +%s) - started )) s"

@@ -71,7 +71,10 @@ GuiParse parseGuiOptions(int argc, char** argv) {
     addOptions(parser);
     if (!parser.parse(args)) return usage(parser.errorText());
     if (parser.isSet(QStringLiteral("help"))) {
-        std::fputs(qPrintable(parser.helpText()), stdout);
+        // No QCoreApplication yet (help works without a display), so Qt cannot name the executable.
+        QString help = parser.helpText();
+        help.replace(QStringLiteral("<executable_name>"), QStringLiteral("trueturn"));
+        std::fputs(qPrintable(help), stdout);
         return {std::nullopt, cli::kExitOk};
     }
     if (parser.isSet(QStringLiteral("version"))) {

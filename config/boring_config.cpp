@@ -1,5 +1,7 @@
 #include "config/boring_config.h"
 
+#include <cmath>
+
 #include <QJsonArray>
 #include <stdexcept>
 
@@ -42,6 +44,9 @@ core::ToolRecord readTool(const QJsonObject& preset) {
     return t;
 }
 
+/// The largest |c_i| of a bridge characteristic r(u) = Σ c_i u^i (a bridge ratio is about ±1 at full scale).
+constexpr double kMaxBridgeCoefficient = 10.0;
+
 std::vector<double> coefficients(const JsonSection& s, const QString& key, const std::vector<double>& fallback) {
     const QJsonValue v = s.value(key);
     if (v.isUndefined()) return fallback;
@@ -49,6 +54,9 @@ std::vector<double> coefficients(const JsonSection& s, const QString& key, const
     std::vector<double> out;
     for (const QJsonValue& item : v.toArray()) {
         if (!item.isDouble()) s.fail(key, "must contain numbers only");
+        if (std::abs(item.toDouble()) > kMaxBridgeCoefficient)
+            s.fail(key,
+                   QString::number(item.toDouble()).toStdString() + " is outside -10 .. 10 (a bridge ratio of u = ±1)");
         out.push_back(item.toDouble());
     }
     if (out.size() < 3 || out.size() > 5) s.fail(key, "must have 3 to 5 coefficients (degree 2 .. 4)");

@@ -1,5 +1,7 @@
 #include "config/json_eigen.h"
 
+#include <cstdio>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,11 +14,12 @@ std::invalid_argument bad(const QString& what, const std::string& why) {
     return std::invalid_argument(what.toStdString() + ": " + why);
 }
 
+/// Shortest readable form: "0.5", "86400", "1e+300", "1e-300" (%.15g; std::to_string's %f printed 1e300
+/// as 301 digits and 1e-300 as 0).
 std::string formatNumber(double v) {
-    std::string s = std::to_string(v);
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') s.pop_back();
-    return s;
+    char text[32];
+    std::snprintf(text, sizeof text, "%.15g", v);
+    return text;
 }
 
 }  // namespace

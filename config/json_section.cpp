@@ -39,8 +39,8 @@ double JsonSection::required(const QString& key, double lo, double hi) const {
 }
 
 double JsonSection::positive(const QString& key, double fallback) const {
-    const double v = number(key, fallback, 0.0, std::numeric_limits<double>::infinity());
-    if (v <= 0.0) fail(key, "must be > 0");
+    const double v = number(key, fallback, -std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+    if (v <= 0.0) fail(key, QStringLiteral("%1 must be > 0").arg(v).toStdString());
     return v;
 }
 

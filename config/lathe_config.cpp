@@ -65,7 +65,7 @@ core::LatheSetup latheSetupFromJson(const QJsonObject& lathe) {
 core::LatheStationTiming stationTimingFromJson(const QJsonObject& lathe) {
     core::LatheStationTiming t;
     const JsonSection s(lathe, QStringLiteral("station"), QStringLiteral("lathe"));
-    t.partTimeS = s.positive(QStringLiteral("part_time_s"), t.partTimeS);
+    t.partTimeS = s.number(QStringLiteral("part_time_s"), t.partTimeS, 1.0, 86400.0);
     t.measureStartS = s.number(QStringLiteral("measure_start_s"), t.measureStartS, 0.0, 1e6);
     t.perPointS = s.number(QStringLiteral("per_point_s"), t.perPointS, 0.0, 1e6);
     return t;

@@ -112,6 +112,9 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
     double length = s.lathe ? s.lathe->workpiece.lengthMm
                             : plant.value(QStringLiteral("part_length_mm")).toDouble(s.control.plant.points.back().xMm);
     s.partLengthMm = loop.number(QStringLiteral("part_length_mm"), length, 1.0, 1e5);
+    if (!(s.partLengthMm >= 1.0 && s.partLengthMm <= 1e5))  // the plant's length, when the loop names none
+        throw std::invalid_argument("plant.part_length_mm: " + QString::number(s.partLengthMm).toStdString() +
+                                    " mm is outside 1 .. 100000 mm");
     s.nominalDiameterMm = loop.number(QStringLiteral("nominal_diameter_mm"),
                                       s.lathe ? s.lathe->workpiece.finishDiameterMm : 27.0, 0.1, 1e4);
     if (s.lathe &&

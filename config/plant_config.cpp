@@ -34,6 +34,11 @@ QString item(const QString& where, qsizetype index) {
     return where + QLatin1Char('[') + QString::number(index) + QLatin1Char(']');
 }
 
+/// The largest variance a plant may state, mm² (a standard deviation of 10 mm: far beyond any turned part).
+constexpr double kMaxVarianceMm2 = 100.0;
+/// The largest correction or correction step, mm.
+constexpr double kMaxCorrectionMm = 100.0;
+
 double positiveAt(const QJsonValue& value, const QString& where, double maxValue = kInf) {
     const double v = numberAt(value, where, 0.0, maxValue);
     if (v <= 0.0) throw fieldError(where, "must be > 0");
@@ -103,9 +108,9 @@ DisturbanceComponent shapingFilterAt(const QJsonObject& o, const QString& where)
         throw fieldError(where, "give either \"variance_mm2\" (output) or \"input_variance_mm2\" (driving noise)");
     if (byVariance)
         return DisturbanceComponent::shapingFilterWithVariance(
-            filter, positiveAt(o.value("variance_mm2"), child(where, "variance_mm2")));
+            filter, positiveAt(o.value("variance_mm2"), child(where, "variance_mm2"), kMaxVarianceMm2));
     return DisturbanceComponent::shapingFilter(
-        filter, positiveAt(o.value("input_variance_mm2"), child(where, "input_variance_mm2")));
+        filter, positiveAt(o.value("input_variance_mm2"), child(where, "input_variance_mm2"), kMaxVarianceMm2));
 }
 
 DisturbanceComponent componentAt(const QJsonValue& value, const QString& where) {
@@ -114,14 +119,16 @@ DisturbanceComponent componentAt(const QJsonValue& value, const QString& where) 
     if (type == QLatin1String("shaping_filter")) return shapingFilterAt(o, where);
     if (type == QLatin1String("ar1"))
         return at(where, [&] {
-            return DisturbanceComponent::ar1(numberAt(o.value("pole"), child(where, "pole"), -kInf, kInf),
-                                             positiveAt(o.value("variance_mm2"), child(where, "variance_mm2")));
+            return DisturbanceComponent::ar1(
+                numberAt(o.value("pole"), child(where, "pole"), -kInf, kInf),
+                positiveAt(o.value("variance_mm2"), child(where, "variance_mm2"), kMaxVarianceMm2));
         });
     if (type == QLatin1String("random_walk"))
         return DisturbanceComponent::randomWalk(
-            positiveAt(o.value("step_variance_mm2"), child(where, "step_variance_mm2")));
+            positiveAt(o.value("step_variance_mm2"), child(where, "step_variance_mm2"), kMaxVarianceMm2));
     if (type == QLatin1String("white"))
-        return DisturbanceComponent::white(positiveAt(o.value("variance_mm2"), child(where, "variance_mm2")));
+        return DisturbanceComponent::white(
+            positiveAt(o.value("variance_mm2"), child(where, "variance_mm2"), kMaxVarianceMm2));
     throw fieldError(child(where, "type"),
                      "'" + type.toStdString() + "' is not one of shaping_filter, ar1, random_walk, white");
 }
@@ -158,8 +165,9 @@ core::RunToRunPlantSpec plantAt(const QJsonObject& plant, std::optional<int> del
     }
     const double gain = plant.contains("gain") ? positiveAt(plant.value("gain"), child(where, "gain"), 100.0) : 2.0;
     const bool hasNoise = plant.contains("gauge_noise_variance_mm2");
-    const double noise =
-        hasNoise ? positiveAt(plant.value("gauge_noise_variance_mm2"), child(where, "gauge_noise_variance_mm2")) : 0.0;
+    const double noise = hasNoise ? positiveAt(plant.value("gauge_noise_variance_mm2"),
+                                               child(where, "gauge_noise_variance_mm2"), kMaxVarianceMm2)
+                                  : 0.0;
     std::optional<DisturbanceModel> disturbance;
     if (plant.contains("disturbance"))
         disturbance = disturbanceFromJson(plant.value("disturbance"), child(where, "disturbance"));
@@ -167,7 +175,8 @@ core::RunToRunPlantSpec plantAt(const QJsonObject& plant, std::optional<int> del
     auto makePoint = [&](double x, const QJsonObject& o, const QString& pw) {
         const double g = o.contains("gain") ? positiveAt(o.value("gain"), child(pw, "gain"), 100.0) : gain;
         const double v = o.contains("gauge_noise_variance_mm2")
-                             ? positiveAt(o.value("gauge_noise_variance_mm2"), child(pw, "gauge_noise_variance_mm2"))
+                             ? positiveAt(o.value("gauge_noise_variance_mm2"), child(pw, "gauge_noise_variance_mm2"),
+                                          kMaxVarianceMm2)
                              : noise;
         if (v <= 0.0) throw fieldError(child(pw, "gauge_noise_variance_mm2"), "missing (here or for the whole plant)");
         if (o.contains("disturbance"))
@@ -208,9 +217,10 @@ void controllerAt(const QJsonObject& c, core::RunToRunSetup& setup) {
     setup.weights.R2 =
         perPoint(c.value("correction_weight"), child(where, "correction_weight"), m, 0.01, true).asDiagonal();
     if (c.contains("max_correction_mm"))
-        setup.limits.maxAbsMm = positiveAt(c.value("max_correction_mm"), child(where, "max_correction_mm"));
+        setup.limits.maxAbsMm =
+            positiveAt(c.value("max_correction_mm"), child(where, "max_correction_mm"), kMaxCorrectionMm);
     if (c.contains("max_step_mm"))
-        setup.limits.maxStepMm = positiveAt(c.value("max_step_mm"), child(where, "max_step_mm"));
+        setup.limits.maxStepMm = positiveAt(c.value("max_step_mm"), child(where, "max_step_mm"), kMaxCorrectionMm);
     if (c.contains("gate_sigma"))
         setup.lqg.gateSigma = numberAt(c.value("gate_sigma"), child(where, "gate_sigma"), 1, 100);
     if (c.contains("history_parts"))

@@ -23,6 +23,25 @@ void requireMillimetres(const QJsonObject& section, const QString& key) {
         throw bad(key, "must be \"mm\" (got " + unit.toVariant().toString().toStdString() + ")");
 }
 
+/// The largest systematic diameter error a model may reach along the part, mm: ten times the largest
+/// barrel of the 2012 paper's Table 1 would still be under 2 mm; beyond 10 mm the "error" is no
+/// longer a deformation of the part, and the loop's corrections would be clipped into a silent no-op.
+constexpr double kMaxSystematicErrorMm = 10.0;
+
+/// The model's diameter error within ±kMaxSystematicErrorMm at 201 points along the part.
+void requirePlausible(const core::SystematicErrorModel& model) {
+    constexpr int kSamples = 200;
+    for (int i = 0; i <= kSamples; ++i) {
+        const double x = model.partLengthMm() * i / kSamples;
+        const double y = model.diameterErrorMm(x);
+        if (!std::isfinite(y) || std::abs(y) > kMaxSystematicErrorMm)
+            throw bad(QStringLiteral("coefficients"),
+                      "the model reaches " + QString::number(y, 'g', 4).toStdString() +
+                          " mm at x = " + QString::number(x, 'g', 6).toStdString() + " mm; the limit is ±" +
+                          QString::number(kMaxSystematicErrorMm).toStdString() + " mm on diameter");
+    }
+}
+
 }  // namespace
 
 core::SystematicErrorModel systematicModelFromPreset(const QJsonObject& preset) {
@@ -38,7 +57,9 @@ core::SystematicErrorModel systematicModelFromPreset(const QJsonObject& preset) 
         throw bad(QStringLiteral("coefficients"), "expected 1 .. " + std::to_string(core::kMaxRegressionDegree + 1) +
                                                       " numbers b0..bD, got " + std::to_string(b.size()));
     if (!b.allFinite()) throw bad(QStringLiteral("coefficients"), "must be finite numbers");
-    return core::SystematicErrorModel(core::ScaledPolynomial::fromPowerCoefficients(b), length);
+    core::SystematicErrorModel model(core::ScaledPolynomial::fromPowerCoefficients(b), length);
+    requirePlausible(model);
+    return model;
 }
 
 QJsonObject systematicModelToJson(const core::SystematicErrorModel& model) {

@@ -11,6 +11,8 @@ packages=(
     qt6-qpa-plugins libgl-dev fonts-dejavu-core
     libeigen3-dev libqcustomplot-dev libboost-dev
 )
+# file, help2man, lintian, desktop-file-utils, appstream: scripts/check-package.sh (CPack's dependency list,
+# the manual page, the package and metadata checks).
 # linuxcnc-uspace: LinuxCNC's standalone G-code interpreter rs274 (/usr/bin/rs274), which the feed-schedule
 # tests run on the emitted programs. It must be installed with --no-install-recommends (as below): it
 # recommends a real-time kernel.
@@ -18,6 +20,7 @@ test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
     clang libclang-rt-14-dev postgresql linuxcnc-uspace poppler-utils
     python3-scipy python3-statsmodels
+    file help2man lintian desktop-file-utils appstream
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then
     packages+=("${test_packages[@]}")

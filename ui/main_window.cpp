@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include <trueturn/version.h>
 #include <QActionGroup>
 #include <QApplication>
 #include <QButtonGroup>
@@ -19,6 +18,7 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 
+#include "ui/about.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/pages/page_factory.h"
@@ -200,15 +200,8 @@ Page* MainWindow::page(PageId id) const {
 
 void MainWindow::showAbout() {
     if (!m_context.prompt) return;
-    m_context.prompt->inform(
-        this, tr("About TrueTurn"),
-        tr("<h2>TrueTurn %1</h2><p>Adaptive accuracy control for lathes: run-to-run control of the shaft "
-           "profile, in-process compensation of boring-bar deflection, feed scheduling and drive "
-           "corrections.</p><p>Qt %2</p><p>Log file: %3</p>")
-            .arg(QString::fromLatin1(tt::kVersion), QString::fromLatin1(qVersion()),
-                 m_context.state && !m_context.state->logFilePath().isEmpty()
-                     ? m_context.state->logFilePath().toHtmlEscaped()
-                     : tr("not written")));
+    m_context.prompt->inform(this, tr("About TrueTurn"),
+                             About::text(m_context.state ? m_context.state->logFilePath() : QString()));
 }
 
 void MainWindow::changeEvent(QEvent* event) {

@@ -8,8 +8,10 @@
 #include "app/cli/command.h"
 #include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
+#include "app/cli/run_interrupt.h"
 #include "config/corner_config.h"
 #include "config/corrective_net_json.h"
+#include "core/common/operation_cancelled.h"
 #include "core/sim/feed_drives/corner_work_run.h"
 
 namespace tt::cli {
@@ -58,6 +60,14 @@ QJsonObject axisJson(const core::AxisPulseSummary& s) {
                        {QStringLiteral("reduction_pct"), s.reductionPct}};
 }
 
+/// Reports corner work through `progress`; cancels (false) once Ctrl-C or SIGTERM asked to stop.
+core::CornerProgress cancellableProgress(ProgressPrinter& progress) {
+    return [&progress](const std::string& stage, int done, int total) {
+        progress.report(stage, done, total);
+        return !InterruptGuard::stopRequested().load();
+    };
+}
+
 // ---- corner train ----------------------------------------------------------------------------------
 
 int runTrain(const QStringList& arguments) {
@@ -69,13 +79,23 @@ int runTrain(const QStringList& arguments) {
     addCommonOptions(parser);
     parser.addOption(QStringLiteral("out"), QStringLiteral("Where to save the network (JSON)."),
                      QStringLiteral("NET.json"));
+    addProgressOption(parser);
     parser.parse(arguments);
     const QString out = parser.required(QStringLiteral("out"));
     core::CornerScenario scenario = loadScenario(parser);
     const int moves = movesOption(parser, scenario.training.moves);
     if (moves < 10) throw UsageError("--moves: training needs at least 10 moves");
     const unsigned long long seed = seedOption(parser, scenario.training.seed);
-    const core::CornerNetTraining trained = core::trainCornerNet(scenario, moves, seed);
+    const InterruptGuard interrupts;
+    ProgressPrinter progress(parser.isSet(QStringLiteral("progress")), "");
+    std::optional<core::CornerNetTraining> training;
+    try {
+        training.emplace(core::trainCornerNet(scenario, moves, seed, cancellableProgress(progress)));
+    } catch (const core::OperationCancelled&) {
+        return reportCancelled(progress, "corner train", "no network was written");
+    }
+    progress.finish();
+    const core::CornerNetTraining& trained = *training;
     config::CornerNetFile file{trained.net, scenario.pulse, scenario.name, core::toNetSamples(trained.examples)};
     writeOutputFile(out, config::cornerNetToBytes(file));
 
@@ -197,6 +217,7 @@ int runWork(const QStringList& arguments) {
     parser.addOption(QStringLiteral("drift"),
                      QStringLiteral("Multiply the Z drive's friction by F from the middle move on, 0.5 .. 3."),
                      QStringLiteral("F"));
+    addProgressOption(parser);
     parser.addOption(QStringLiteral("no-retrain"),
                      QStringLiteral("The drift monitor only watches: no retraining (for comparison)."));
     parser.parse(arguments);
@@ -205,6 +226,8 @@ int runWork(const QStringList& arguments) {
     const unsigned long long seed = seedOption(parser, scenario.training.seed + 1);
     core::CornerDrift drift;
     if (parser.isSet(QStringLiteral("drift"))) drift.factor = parser.number(QStringLiteral("drift"), 0.5, 3.0);
+    const InterruptGuard interrupts;
+    ProgressPrinter progress(parser.isSet(QStringLiteral("progress")), "");
     QString source;
     std::optional<config::CornerNetFile> file;
     if (parser.isSet(QStringLiteral("net"))) {
@@ -217,8 +240,14 @@ int runWork(const QStringList& arguments) {
         scenario.pulse = file->pulse;  // the network's amplitudes belong to the pulse it was trained for
         source = path;
     } else {
-        const core::CornerNetTraining trained =
-            core::trainCornerNet(scenario, scenario.training.moves, scenario.training.seed);
+        std::optional<core::CornerNetTraining> training;
+        try {
+            training.emplace(core::trainCornerNet(scenario, scenario.training.moves, scenario.training.seed,
+                                                  cancellableProgress(progress)));
+        } catch (const core::OperationCancelled&) {
+            return reportCancelled(progress, "corner", "nothing was written");
+        }
+        const core::CornerNetTraining& trained = *training;
         file = config::CornerNetFile{trained.net, scenario.pulse, scenario.name, core::toNetSamples(trained.examples)};
         source =
             QStringLiteral("trained on %1 moves of seed %2").arg(scenario.training.moves).arg(scenario.training.seed);
@@ -226,7 +255,13 @@ int runWork(const QStringList& arguments) {
     const std::vector<core::CornerMove> work = core::drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, moves, seed);
     core::CorrectiveNet net = file->net;
     const bool retrain = !parser.isSet(QStringLiteral("no-retrain"));
-    const core::CornerWorkResult result = core::runCornerWork(scenario, net, file->samples, work, drift, retrain);
+    core::CornerWorkResult result;
+    try {
+        result = core::runCornerWork(scenario, net, file->samples, work, drift, retrain, cancellableProgress(progress));
+    } catch (const core::OperationCancelled&) {
+        return reportCancelled(progress, "corner", "nothing was written");
+    }
+    progress.finish();
     if (parser.json())
         printJson(workJson(result));
     else

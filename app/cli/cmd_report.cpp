@@ -1,6 +1,8 @@
-// `trueturn report`: argument parsing and output only. The readings come from the history
-// (storage::queryMeasurements, one SQL join), the statistics from core/quality's analysePoint (chart,
-// run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
+// `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
+// values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' analyseReport
+// (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
+// stored with each reading; the files from ui/reports too (the Reports page writes the same).
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
@@ -220,19 +222,23 @@ int run(const QStringList& arguments) {
     }
 
     std::unique_ptr<storage::Database> db;
-    std::vector<storage::MeasurementRow> rows;
+    std::vector<storage::PointReadings> readings;
+    std::vector<storage::MeasurementRow> rows;  // every column of every reading: only for the files and the PDF
     std::vector<core::RunSummary> runs;
+    const bool pdf = parser.isSet(QStringLiteral("pdf"));
+    const bool files = parser.isSet(QStringLiteral("csv")) || parser.isSet(QStringLiteral("dfq")) || pdf;
     try {
         db = std::make_unique<storage::Database>(databaseConfigFromOption(dbValue));
-        rows = storage::queryMeasurements(*db, filter);
-        if (parser.isSet(QStringLiteral("pdf"))) runs = storage::SqlHistoryStore(*db).runs();
+        readings = storage::queryPointReadings(*db, filter);
+        if (files) rows = storage::queryMeasurements(*db, filter);
+        if (pdf) runs = storage::SqlHistoryStore(*db).runs();
     } catch (const storage::StorageError& e) {
         throw UsageError(std::string("--db: ") + e.what());
     }
-    if (rows.empty())
+    if (readings.empty() || (files && rows.empty()))
         throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
-    const std::vector<ui::PointReport> reports = ui::analyseReport(rows, settings);
+    const std::vector<ui::PointReport> reports = ui::analyseReport(readings, settings);
     QJsonArray points;
     for (const ui::PointReport& point : reports)
         points.append(pointJson(point));

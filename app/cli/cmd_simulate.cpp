@@ -16,6 +16,8 @@
 #include "app/cli/command.h"
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
+#include "app/cli/run_interrupt.h"
+#include "app/cli/simulate_checks.h"
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
@@ -54,7 +56,7 @@ struct RunChoice {
     static RunChoice fromJson(const QJsonObject& o) {
         RunChoice c;
         if (o.value(QStringLiteral("source")).toString() != QLatin1String("simulate"))
-            throw UsageError("--resume: the last run in this history was not started by 'trueturn simulate'");
+            throw UsageError("--resume: the run was not started by 'trueturn simulate'");
         c.preset = o.value(QStringLiteral("preset")).toString();
         c.delay = o.value(QStringLiteral("delay")).toInt();
         c.parts = o.value(QStringLiteral("parts")).toInteger();
@@ -66,6 +68,7 @@ struct RunChoice {
         c.ewmaAuto = w.isString();
         if (c.preset.isEmpty() || c.parts < 1 || c.warmup < 0)
             throw UsageError("--resume: the stored settings of the run are damaged");
+        checkStoredParts(c.parts, c.warmup);
         return c;
     }
 };
@@ -146,6 +149,7 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("k_eff (all points): %1 simulated, %2 analytic; %3 measured value(s) rejected")
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
+    if (!std::isfinite(r.kEff)) printLine(kEffUndefinedNote());
     printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
                   .arg(r.verdicts.good)
                   .arg(r.verdicts.rework)
@@ -209,19 +213,23 @@ int run(const QStringList& arguments) {
                      QStringLiteral("The lathe's name stored with the run (a plant-wide history holds several)."),
                      QStringLiteral("name"));
     parser.addOption(QStringLiteral("resume"),
-                     QStringLiteral("Continue the last run stored in --db from its next part, with its own "
-                                    "settings and the stored controller state."));
+                     QStringLiteral("Continue a run stored in --db from its next part, with its own settings and the "
+                                    "stored controller state: --resume N continues run N, --resume alone the newest."));
+    parser.addOption(QStringLiteral("run"), QStringLiteral("With --resume: the run to continue (as --resume N)."),
+                     QStringLiteral("N"));
+    addProgressOption(parser);
     parser.addOption(QStringLiteral("speed"),
-                     QStringLiteral("Simulated time per wall time, 0..1e9 (default 0: as fast as possible; 360: a "
-                                    "6-minute part per second)."),
+                     QStringLiteral("Simulated time per wall time: 0 (the default: as fast as possible) or 1..1e9 "
+                                    "(1: the lathe's own pace; 360: a 6-minute part per second)."),
                      QStringLiteral("x"), QStringLiteral("0"));
-    parser.parse(arguments);
+    parser.parse(splitResumeRun(arguments));
 
     const bool resume = parser.isSet(QStringLiteral("resume"));
     const std::optional<QString> database =
         parser.isSet(QStringLiteral("db")) ? std::optional<QString>(parser.value(QStringLiteral("db"))) : std::nullopt;
     if (resume && !database) throw UsageError("--resume: needs --db, the history of the run to continue");
-    const double speed = parser.number(QStringLiteral("speed"), 0.0, 1e9);
+    const double speed = simulationSpeed(parser);
+    const std::optional<std::int64_t> resumeRun = resumeRunId(parser);
     const double profileStep = parser.number(QStringLiteral("profile-step"), 1.0, 100.0);
 
     std::unique_ptr<storage::Database> db;
@@ -244,11 +252,7 @@ int run(const QStringList& arguments) {
             if (parser.isSet(QString::fromLatin1(option)))
                 throw UsageError(std::string("--") + option +
                                  ": a resumed run keeps its own settings; leave the option out");
-        resumePoint = history->resumePoint();
-        if (!resumePoint) throw UsageError("--resume: the history holds no run with a finished part");
-        if (resumePoint->run.status == "complete")
-            throw UsageError("--resume: the last run (" + std::to_string(resumePoint->run.runId) +
-                             ") is already complete");
+        resumePoint = findResumePoint(*history, resumeRun);
         const QJsonObject stored =
             QJsonDocument::fromJson(QByteArray::fromStdString(resumePoint->run.description.settingsJson)).object();
         choice = RunChoice::fromJson(stored);
@@ -306,7 +310,11 @@ int run(const QStringList& arguments) {
 
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1
     // with the reason; what was stored stays stored and the run can be resumed.
-    const core::LatheStudyResult result = core::runLatheStudy(scenario, choice.seed, options);
+    // Ctrl-C or SIGTERM: the run stops after its current part, everything stored is committed, exit 130.
+    const std::optional<core::LatheStudyResult> study = runStudyUntilStopped(
+        scenario, choice.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
+    if (!study) return kExitInterrupted;
+    const core::LatheStudyResult& result = *study;
     if (parser.json())
         printJson(toJson(result, parser.isSet(QStringLiteral("profile")), database));
     else

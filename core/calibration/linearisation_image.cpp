@@ -68,6 +68,46 @@ bool decreasing(const LinearisationTable& table) {
     return table.entries.back() < table.entries.front();
 }
 
+/// The scales the specification allows, nm per table unit (docs/protocols/linearisation-table.md).
+constexpr std::uint16_t kScalesNm[] = {10, 20, 50, 100, 200, 500, 1000, 2000, 5000};
+/// The latest creation time an image may carry: 9999-12-31 23:59:59 UTC, s.
+constexpr std::int64_t kLatestCreatedUnixS = 253'402'300'799;
+
+[[noreturn]] void fieldOutOfSpec(const char* field, std::size_t offset, long long value, const std::string& allowed) {
+    throw std::invalid_argument("image field '" + std::string(field) + "' (offset " + std::to_string(offset) + ") is " +
+                                std::to_string(value) + "; the specification allows " + allowed);
+}
+
+/// The identification fields within the specification; throws naming the field, its value and what is allowed.
+void checkInfo(const TableImageInfo& info) {
+    if (info.plane > 1) fieldOutOfSpec("bending plane", 7, info.plane, "0 (X) or 1 (Y)");
+    if (info.version < 1) fieldOutOfSpec("table version", 8, info.version, "1 .. 65535");
+    if (info.createdUnixS < 0 || info.createdUnixS > kLatestCreatedUnixS)
+        fieldOutOfSpec("created", 12, info.createdUnixS, "0 .. " + std::to_string(kLatestCreatedUnixS) + " s");
+    if (info.degree == 1 || info.degree > 4) fieldOutOfSpec("degree", 22, info.degree, "2 .. 4 (0: not recorded)");
+}
+
+/// The header fields of an image that the CRC cannot vouch for (a writer that got them wrong made a
+/// valid CRC over them): reserved bytes, scale, flags against the entries, and the identification.
+void checkImageFields(std::span<const std::uint8_t> bytes, const TableImage& image) {
+    if (get(bytes, 10, 2) != 0) fieldOutOfSpec("reserved", 10, static_cast<long long>(get(bytes, 10, 2)), "0");
+    if (image.format == kTableImageFormatCrc16 && get(bytes, kCrc32At, 4) != 0)
+        fieldOutOfSpec("reserved (format 1)", kCrc32At, static_cast<long long>(get(bytes, kCrc32At, 4)), "0");
+    bool knownScale = false;
+    for (std::uint16_t s : kScalesNm)
+        knownScale = knownScale || s == image.table.scaleNm;
+    if (!knownScale)
+        fieldOutOfSpec("scale", 20, image.table.scaleNm, "10, 20, 50, 100, 200, 500, 1000, 2000 or 5000 nm");
+    const std::uint8_t flags = bytes[23];
+    if ((flags & ~kFlagDecreasing) != 0) fieldOutOfSpec("flags", 23, flags, "bit 0 only");
+    if (((flags & kFlagDecreasing) != 0) != decreasing(image.table))
+        fieldOutOfSpec("flags", 23, flags,
+                       std::string("bit 0 = ") + (decreasing(image.table) ? "1" : "0") +
+                           " for these entries (deflection " + (decreasing(image.table) ? "decreasing" : "increasing") +
+                           " with the code)");
+    checkInfo(image.info);
+}
+
 }  // namespace
 
 std::size_t tableImageBytes(int adcBits, std::uint8_t format) {
@@ -82,6 +122,7 @@ std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, cons
                                            std::uint8_t format) {
     checkFormat(format);
     checkTable(table);
+    checkInfo(info);
     std::vector<std::uint8_t> out;
     out.reserve(tableImageBytes(table.adcBits, format));
     for (std::uint8_t m : kMagic)  // 0: magic "TTLT"
@@ -153,11 +194,11 @@ TableImage decodeTableImage(std::span<const std::uint8_t> bytes) {
     image.info.createdUnixS = static_cast<std::int64_t>(get(bytes, 12, 8));
     image.table.scaleNm = static_cast<std::uint16_t>(get(bytes, 20, 2));
     image.info.degree = bytes[22];
-    if (image.table.scaleNm == 0) throw std::invalid_argument("image table scale is 0 nm");
     image.table.adcBits = bits;
     image.table.entries.resize(count);
     for (std::size_t i = 0; i < count; ++i)
         image.table.entries[i] = static_cast<std::int16_t>(get(bytes, kTableImageHeaderBytes + 2 * i, 2));
+    checkImageFields(bytes, image);
     return image;
 }
 

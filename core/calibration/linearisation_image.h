@@ -42,14 +42,15 @@ std::size_t tableImageBytes(int adcBits, std::uint8_t format = kTableImageFormat
 /// The image uploaded to the mandrel over the probe protocol: 32-byte header, 2^bits int16
 /// entries, all little-endian; format 2 with the CRC-32C of everything else at offset 28, format 1
 /// with a trailing CRC-16/CCITT-FALSE (for mandrel firmware of probe protocol 1). Layout:
-/// docs/protocols/linearisation-table.md. Throws std::invalid_argument for an inconsistent table
-/// or an unknown format.
+/// docs/protocols/linearisation-table.md. Throws std::invalid_argument for an inconsistent table,
+/// identification fields outside the specification or an unknown format.
 std::vector<std::uint8_t> encodeTableImage(const LinearisationTable& table, const TableImageInfo& info,
                                            std::uint8_t format = kTableImageFormat);
 
-/// Decodes and checks an image of format 1 or 2 (magic, format, sizes, bits, CRC); throws
-/// std::invalid_argument saying what is wrong ("CRC mismatch: image says 0x1A2B3C4D, content
-/// gives 0x…").
+/// Decodes and checks an image of format 1 or 2 (magic, format, sizes, bits, CRC, then every header
+/// field against docs/protocols/linearisation-table.md: plane, version, reserved, created, scale,
+/// degree, flags); throws std::invalid_argument saying what is wrong ("CRC mismatch: image says
+/// 0x1A2B3C4D, content gives 0x…", "image field 'scale' (offset 20) is 7; the specification allows …").
 TableImage decodeTableImage(std::span<const std::uint8_t> bytes);
 
 /// The CRC an image carries (format 2: the CRC-32C at offset 28; format 1, and

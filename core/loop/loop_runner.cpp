@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -13,16 +14,35 @@ namespace tt::core {
 
 namespace {
 
+/// Waits `wallS` seconds in slices of at most 0.1 s, returning early once `stop` is set.
+void pace(double wallS, const std::atomic<bool>* stop) {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point end =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wallS));
+    while (!(stop && stop->load())) {
+        const Clock::time_point now = Clock::now();
+        if (now >= end) return;
+        std::this_thread::sleep_for(std::min<Clock::duration>(end - now, std::chrono::milliseconds(100)));
+    }
+}
+
 /// Steps `engine` and moves time on with `jump` to the next event of the devices or the engine.
 template <typename Jump>
 SimulationOutcome simulate(LoopEngine& engine, const Clock& clock, const SimulationTimeline& devices, Jump jump,
-                           std::int64_t maxSteps, double speed) {
+                           std::int64_t maxSteps, double speed, const std::atomic<bool>* stop) {
     SimulationOutcome outcome;
     int stalled = 0;
+    std::optional<std::int64_t> stopAfter;  // parts finished when the stop was asked for
     for (std::int64_t i = 0; i < maxSteps; ++i) {
         engine.step();
         if (engine.complete()) {
             outcome.complete = true;
+            break;
+        }
+        if (!stopAfter && stop && stop->load()) stopAfter = engine.partsFinished();
+        if (stopAfter && engine.partsFinished() > *stopAfter) {
+            outcome.interrupted = true;
+            outcome.stopReason = "interrupted";
             break;
         }
         if (engine.state() == LoopState::Fault || engine.state() == LoopState::Idle) {
@@ -40,8 +60,7 @@ SimulationOutcome simulate(LoopEngine& engine, const Clock& clock, const Simulat
             outcome.stopReason = "the simulation does not advance: " + engine.detail();
             break;
         }
-        if (speed > 0.0 && next > clock.nowS())
-            std::this_thread::sleep_for(std::chrono::duration<double>((next - clock.nowS()) / speed));
+        if (speed > 0.0 && !stopAfter && next > clock.nowS()) pace((next - clock.nowS()) / speed, stop);
         jump(next);
     }
     if (!outcome.complete && outcome.stopReason.empty()) outcome.stopReason = "the step limit was reached";
@@ -62,17 +81,18 @@ private:
 }  // namespace
 
 SimulationOutcome runSimulation(LoopEngine& engine, ManualClock& clock, const SimulationTimeline& devices,
-                                std::int64_t maxSteps, double speed) {
+                                std::int64_t maxSteps, double speed, const std::atomic<bool>* stop) {
     return simulate(
-        engine, clock, devices, [&clock](double t) { clock.advanceTo(t); }, maxSteps, speed);
+        engine, clock, devices, [&clock](double t) { clock.advanceTo(t); }, maxSteps, speed, stop);
 }
 
-SimulationOutcome runSimulation(LoopEngine& engine, ShaftMachine& machine, std::int64_t maxSteps, double speed) {
+SimulationOutcome runSimulation(LoopEngine& engine, ShaftMachine& machine, std::int64_t maxSteps, double speed,
+                                const std::atomic<bool>* stop) {
     if (!machine.jumpTo(machine.clock().nowS()))
         throw std::invalid_argument("this machine runs in real time; it cannot be simulated event by event");
     const MachineTimeline timeline(machine);
     return simulate(
-        engine, machine.clock(), timeline, [&machine](double t) { machine.jumpTo(t); }, maxSteps, speed);
+        engine, machine.clock(), timeline, [&machine](double t) { machine.jumpTo(t); }, maxSteps, speed, stop);
 }
 
 }  // namespace tt::core

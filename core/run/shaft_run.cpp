@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/loop/loop_engine.h"
+#include "core/run/run_limits.h"
 #include "core/run/simulated_lathe.h"
 
 namespace tt::core {
@@ -62,8 +63,11 @@ private:
 
 LatheRunRecord runLatheLoop(LatheRunSpec spec) {
     if (!spec.plan.loop.lastPartNumber) throw std::invalid_argument("a headless run needs its number of parts");
-    if (!(spec.speed >= 0.0) || !std::isfinite(spec.speed))
-        throw std::invalid_argument("the simulation speed must be zero or a positive number");
+    checkRunSpeed(spec.speed);
+    if (*spec.plan.loop.lastPartNumber > kMaxRunParts + kMaxWarmupParts)
+        throw std::invalid_argument("a run of " + std::to_string(*spec.plan.loop.lastPartNumber) +
+                                    " parts is too long; the limit is " +
+                                    std::to_string(kMaxRunParts + kMaxWarmupParts) + " parts");
     SimulatedLathe lathe(spec.scenario.shopSpec(spec.seed));
     LatheRunRecord record;
     PartCollector collector(lathe, record, spec.profileZMm, spec.listener);
@@ -84,7 +88,7 @@ LatheRunRecord runLatheLoop(LatheRunSpec spec) {
     } else {
         engine->start(spec.description);
     }
-    record.outcome = runSimulation(*engine, lathe, 100'000'000, spec.speed);
+    record.outcome = runSimulation(*engine, lathe, 100'000'000, spec.speed, spec.stop);
     record.runId = engine->runId();
     return record;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -18,15 +19,16 @@ namespace tt::core {
 /// One closed-loop run on the built-in simulated shop, headless (what `trueturn simulate` runs): the
 /// loop engine on the shop's ports with a virtual clock, optionally paced and stored.
 struct LatheRunSpec {
-    ShaftScenario scenario;             ///< the scenario
-    std::uint64_t seed = 1;             ///< every random source of the simulated shop
-    ShaftRunPlan plan;                  ///< loop.lastPartNumber = the parts of the run
-    HistoryStore* history = nullptr;    ///< none: nothing is stored
-    RunDescription description;         ///< recorded when the run starts
-    std::optional<ResumePoint> resume;  ///< continue this stored run instead of starting one
-    double speed = 0.0;                 ///< 0: as fast as possible; else simulated s per wall s
-    LoopListener* listener = nullptr;   ///< also receives the engine's events
-    std::vector<double> profileZMm;     ///< where to sample each finished part's true profile
+    ShaftScenario scenario;                   ///< the scenario
+    std::uint64_t seed = 1;                   ///< every random source of the simulated shop
+    ShaftRunPlan plan;                        ///< loop.lastPartNumber = the parts of the run
+    HistoryStore* history = nullptr;          ///< none: nothing is stored
+    RunDescription description;               ///< recorded when the run starts
+    std::optional<ResumePoint> resume;        ///< continue this stored run instead of starting one
+    double speed = 0.0;                       ///< 0: as fast as possible; else simulated s per wall s
+    LoopListener* listener = nullptr;         ///< also receives the engine's events
+    std::vector<double> profileZMm;           ///< where to sample each finished part's true profile
+    const std::atomic<bool>* stop = nullptr;  ///< when set: finish the part on the machine and stop (resumable)
 };
 
 /// What the run produced: the true (simulated) diameter deviation of every part at the control points

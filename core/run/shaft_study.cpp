@@ -3,8 +3,11 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "core/control/run_to_run_plant.h"
+#include "core/run/run_limits.h"
 #include "core/run/shaft_run.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
 
@@ -13,6 +16,38 @@ namespace tt::core {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Below this variance a part-to-part variation is not there (σ = 1 nm, under any gauge's resolution), mm².
+constexpr double kMinVarianceMm2 = 1e-12;
+
+/// k_eff = open / closed variance; NaN (not available) when either is below kMinVarianceMm2: a lathe
+/// without variation would give 0 or infinity, neither of which is an effectiveness.
+double varianceRatio(double openMm2, double closedMm2) {
+    return openMm2 >= kMinVarianceMm2 && closedMm2 >= kMinVarianceMm2 ? openMm2 / closedMm2 : kNaN;
+}
+
+/// Passes each finished part on to a progress callback.
+class ProgressRelay final : public LoopListener {
+public:
+    ProgressRelay(const std::function<void(const std::string&, std::int64_t, std::int64_t)>& progress,
+                  std::string stage, std::int64_t total)
+        : m_progress(progress), m_stage(std::move(stage)), m_total(total) {}
+    void onLoopEvent(const LoopEvent& event) override {
+        if (event.kind == LoopEvent::Kind::PartFinished && m_progress) m_progress(m_stage, event.partNumber, m_total);
+    }
+
+private:
+    const std::function<void(const std::string&, std::int64_t, std::int64_t)>& m_progress;
+    std::string m_stage;
+    std::int64_t m_total;
+};
+
+/// The highest part number the record saw finished (0: none).
+std::int64_t lastFinishedPart(const LatheRunRecord& record) {
+    for (std::size_t i = record.seen.size(); i > 0; --i)
+        if (record.seen[i - 1]) return static_cast<std::int64_t>(i);
+    return 0;
+}
 
 LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftRunPlan plan,
                        const LatheStudyOptions& options, bool stored) {
@@ -27,7 +62,12 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
         spec.resume = options.resume;
         spec.speed = options.speed;
     }
+    spec.stop = options.stop;
+    ProgressRelay relay(options.progress, stored ? "closed loop" : "open-loop reference",
+                        spec.plan.loop.lastPartNumber.value_or(0));
+    if (options.progress) spec.listener = &relay;
     LatheRunRecord record = runLatheLoop(std::move(spec));
+    if (record.outcome.interrupted) throw StudyInterrupted(stored, record.runId, lastFinishedPart(record));
     if (!record.outcome.complete)
         throw std::runtime_error("the simulated run stopped before its last part: " + record.outcome.stopReason);
     return record;
@@ -36,8 +76,7 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
 }  // namespace
 
 LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
-    if (options.parts < 2) throw std::invalid_argument("a study needs at least 2 counted parts");
-    if (options.warmupParts < 0) throw std::invalid_argument("the warm-up cannot be negative");
+    checkRunParts(options.parts, options.warmupParts);
     const std::int64_t total = options.warmupParts + options.parts;
     const ShaftRunPlan closedPlan = planShaftRun(scenario, {options.controller, options.ewmaWeight, total});
     const LoopConfig& loop = closedPlan.loop;
@@ -69,10 +108,10 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     }
     for (std::size_t i = 0; i < loop.pointZMm.size(); ++i) {
         const auto k = static_cast<Eigen::Index>(i);
-        result.points.push_back({loop.pointZMm[i], varOpen(k), varClosed(k), varOpen(k) / varClosed(k),
+        result.points.push_back({loop.pointZMm[i], varOpen(k), varClosed(k), varianceRatio(varOpen(k), varClosed(k)),
                                  analytic.available ? analytic.kEff(k) : kNaN});
     }
-    result.kEff = varOpen.sum() / varClosed.sum();
+    result.kEff = varianceRatio(varOpen.sum(), varClosed.sum());
     result.kEffAnalytic = analytic.available ? analytic.kEffOverall : kNaN;
 
     if (!options.profileZMm.empty()) {

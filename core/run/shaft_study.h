@@ -1,7 +1,10 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -15,14 +18,33 @@ namespace tt::core {
 /// What `trueturn simulate` asks of the closed loop on the built-in shop.
 struct LatheStudyOptions {
     ControllerKind controller = ControllerKind::Lqg;
-    std::optional<double> ewmaWeight;   ///< EWMA lambda; none: the setup's (best on the grid when `auto`)
-    std::int64_t parts = 20000;         ///< parts counted in the statistics
-    std::int64_t warmupParts = 100;     ///< machined first and not counted (controller start-up)
-    double speed = 0.0;                 ///< 0: as fast as possible; else simulated s per wall s
-    std::vector<double> profileZMm;     ///< where the profile statistics are taken (may be empty)
-    HistoryStore* history = nullptr;    ///< the closed run is stored here when given
-    RunDescription description;         ///< recorded with the run
-    std::optional<ResumePoint> resume;  ///< continue this stored run (the open reference is re-run)
+    std::optional<double> ewmaWeight;         ///< EWMA lambda; none: the setup's (best on the grid when `auto`)
+    std::int64_t parts = 20000;               ///< parts counted in the statistics
+    std::int64_t warmupParts = 100;           ///< machined first and not counted (controller start-up)
+    double speed = 0.0;                       ///< 0: as fast as possible; else simulated s per wall s
+    std::vector<double> profileZMm;           ///< where the profile statistics are taken (may be empty)
+    HistoryStore* history = nullptr;          ///< the closed run is stored here when given
+    RunDescription description;               ///< recorded with the run
+    std::optional<ResumePoint> resume;        ///< continue this stored run (the open reference is re-run)
+    const std::atomic<bool>* stop = nullptr;  ///< when set: the stored run stops after its current part
+    /// Called after every finished part (may be empty): the stage ("closed loop", "open-loop reference"),
+    /// the part number and the parts of the run (warm-up included).
+    std::function<void(const std::string& stage, std::int64_t part, std::int64_t total)> progress;
+};
+
+/// The study was stopped on request (LatheStudyOptions::stop) after a finished part: what was stored
+/// stays stored, and a stored closed run that was interrupted can be resumed.
+class StudyInterrupted : public std::runtime_error {
+public:
+    /// `closedLoop`: the stored run was interrupted (else the open-loop reference, after it completed).
+    StudyInterrupted(bool closedLoop, std::optional<std::int64_t> runId, std::int64_t lastPart)
+        : std::runtime_error("interrupted after part " + std::to_string(lastPart)),
+          closedLoop(closedLoop),
+          runId(runId),
+          lastPart(lastPart) {}
+    bool closedLoop = true;             ///< the closed (stored) run was the one interrupted
+    std::optional<std::int64_t> runId;  ///< the stored run, when there is a history
+    std::int64_t lastPart = 0;          ///< the last part finished in the interrupted run
 };
 
 /// One control point of the study.
@@ -30,7 +52,7 @@ struct LatheStudyPoint {
     double xMm = 0.0;
     double varOpenMm2 = 0.0;    ///< true diameter deviation, open loop on the same disturbance
     double varClosedMm2 = 0.0;  ///< with the controller
-    double kEff = 0.0;          ///< varOpen / varClosed (paper 000, Table 2)
+    double kEff = 0.0;          ///< varOpen / varClosed (paper 000, Table 2); NaN when either is below 1e-12 mm²
     double kEffAnalytic = 0.0;  ///< the controller's design model, closed-loop Lyapunov (NaN when unavailable)
 };
 
@@ -41,7 +63,7 @@ struct LatheStudyResult {
     std::int64_t parts = 0;
     std::optional<double> ewmaWeight;
     std::vector<LatheStudyPoint> points;
-    double kEff = 0.0;          ///< sum open / sum closed
+    double kEff = 0.0;          ///< sum open / sum closed; NaN when either is below 1e-12 mm² (no variation)
     double kEffAnalytic = 0.0;  ///< NaN when unavailable
     std::int64_t rejectedValues = 0;
     VerdictCounts verdicts;            ///< the closed run's measured parts by tolerance verdict (warm-up included)

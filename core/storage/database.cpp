@@ -1,6 +1,7 @@
 #include "core/storage/database.h"
 
 #include "core/storage/sqlite_identity.h"
+#include "core/storage/sqlite_lock_holder.h"
 #include "core/storage/storage_log.h"
 
 #include <QDateTime>
@@ -13,9 +14,23 @@ namespace tt::storage {
 
 namespace {
 
-QString sqlError(const QSqlError& error) {
-    const QString text = error.databaseText().isEmpty() ? error.text() : error.databaseText();
-    return text.trimmed();
+/// Whether SQLite gave up waiting for another connection's lock (SQLITE_BUSY or SQLITE_LOCKED).
+bool isBusy(const QSqlError& error) {
+    return error.nativeErrorCode() == u"5" || error.nativeErrorCode() == u"6" ||
+           error.databaseText().contains(QLatin1String("database is locked"));
+}
+
+/// The error's text; for an SQLite file (`sqlitePath` not empty) that another writer kept locked past the
+/// busy timeout, also who holds the lock (sqliteLockHolder).
+QString sqlError(const QSqlError& error, const QString& sqlitePath = QString()) {
+    const QString text = (error.databaseText().isEmpty() ? error.text() : error.databaseText()).trimmed();
+    if (sqlitePath.isEmpty() || !isBusy(error)) return text;
+    const std::string holder = sqliteLockHolder(sqlitePath.toStdString());
+    return QStringLiteral("%1: another program kept the file locked for more than %2 s (%3)")
+        .arg(text)
+        .arg(kSqliteBusyTimeoutMs / 1000)
+        .arg(holder.empty() ? QStringLiteral("its process could not be found out")
+                            : QStringLiteral("held by %1").arg(QString::fromStdString(holder)));
 }
 
 }  // namespace
@@ -82,16 +97,21 @@ void Database::openSqlite() {
     db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=%1").arg(kSqliteBusyTimeoutMs));
     if (!db.open())
         throw StorageError("cannot open the history file '" + m_config.sqlitePath.toStdString() +
-                           "': " + sqlError(db.lastError()).toStdString());
+                           "': " + sqlError(db.lastError(), m_config.sqlitePath).toStdString());
     configureSqlite();
 }
 
 void Database::configureSqlite() {
-    // The first statements read the file header: a damaged or foreign file fails here, before
-    // anything is written to it.
+    // The first statement reads the file header and the schema: a damaged or foreign file fails here, before
+    // anything is written to it. Not PRAGMA quick_check: it reads every page (1.4 s of CPU at each open of a
+    // history of a million parts); a page damaged further in fails the statement that reads it, and a failed
+    // statement changes nothing (docs/DECISIONS.md).
     QSqlQuery check(connection());
-    if (!check.exec(QStringLiteral("PRAGMA quick_check")) || !check.next() || check.value(0).toString() != u"ok") {
-        const QString why = check.lastError().isValid() ? sqlError(check.lastError()) : check.value(0).toString();
+    if (!check.exec(QStringLiteral("SELECT COUNT(*) FROM sqlite_master")) && isBusy(check.lastError()))
+        throw StorageError("the history file '" + m_config.sqlitePath.toStdString() +
+                           "' is busy: " + sqlError(check.lastError(), m_config.sqlitePath).toStdString());
+    if (!check.isActive() || !check.next()) {
+        const QString why = sqlError(check.lastError(), m_config.sqlitePath);
         throw StorageError("the history file '" + m_config.sqlitePath.toStdString() +
                            "' is damaged or not a TrueTurn database (" + why.toStdString() +
                            "); it was left untouched");
@@ -104,7 +124,8 @@ void Database::configureSqlite() {
          }) {
         QSqlQuery q(connection());
         if (!q.exec(QString::fromLatin1(pragma)))
-            throw StorageError("cannot configure the history file: " + sqlError(q.lastError()).toStdString());
+            throw StorageError("cannot configure the history file: " +
+                               sqlError(q.lastError(), m_config.sqlitePath).toStdString());
     }
 }
 
@@ -179,8 +200,9 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& bindings) {
         ok = query.exec();
     }
     if (!ok)
-        throw StorageError("database statement failed: " + sqlError(query.lastError()).toStdString() + " [" +
-                           statement.left(80).toStdString() + "]");
+        throw StorageError(
+            "database statement failed: " + sqlError(query.lastError(), m_config.sqlitePath).toStdString() + " [" +
+            statement.left(80).toStdString() + "]");
     return query;
 }
 
@@ -203,13 +225,15 @@ void Database::transaction(const std::function<void()>& work) {
     QSqlDatabase db = connection();
     if (isPostgres()) {
         if (!db.transaction())
-            throw StorageError("cannot start a transaction: " + sqlError(db.lastError()).toStdString());
+            throw StorageError("cannot start a transaction: " +
+                               sqlError(db.lastError(), m_config.sqlitePath).toStdString());
     } else {
         // SQLite: take the write lock at the start (waiting up to the busy timeout), so a transaction that
         // reads before it writes is never refused because another writer committed in between (WAL).
         QSqlQuery begin(db);
         if (!begin.exec(QStringLiteral("BEGIN IMMEDIATE")))
-            throw StorageError("cannot start a transaction: " + sqlError(begin.lastError()).toStdString());
+            throw StorageError("cannot start a transaction: " +
+                               sqlError(begin.lastError(), m_config.sqlitePath).toStdString());
     }
     ++m_transactionDepth;
     try {
@@ -221,7 +245,7 @@ void Database::transaction(const std::function<void()>& work) {
     }
     --m_transactionDepth;
     if (!db.commit()) {
-        const QString why = sqlError(db.lastError());
+        const QString why = sqlError(db.lastError(), m_config.sqlitePath);
         db.rollback();
         throw StorageError("cannot save to the database: " + why.toStdString());
     }

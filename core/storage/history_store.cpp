@@ -112,6 +112,16 @@ SchemaModule historySchema() {
              // The report of one control point over the whole history reads the measurements of that point.
              exec(db, "CREATE INDEX measurements_by_point ON measurements (point_index, part_id)");
          }});
+    module.migrations.push_back(
+        {4, QStringLiteral("the report of one point reads its readings from one covering index"), [](Database& db) {
+             // Every column the statistics of one control point read (measurement_query.cpp), so the report over
+             // a whole history scans this index alone and joins the parts for their order; it replaces the
+             // narrower index by point.
+             exec(db,
+                  "CREATE INDEX measurements_point_values ON measurements (point_index, part_id, measured_mm,"
+                  " measured_s, reason_kind, verdict)");
+             exec(db, "DROP INDEX measurements_by_point");
+         }});
     return module;
 }
 

@@ -36,6 +36,41 @@ struct MeasurementRow {
     std::optional<double> upperLimitMm;
 };
 
+/// One control point's plausible readings as its statistics take them (the report of one point over a whole
+/// history reads only these): the values in production order (run, then part) and their verdict counts.
+struct PointReadings {
+    int pointIndex = 0;                  ///< 0-based
+    double zMm = 0.0;                    ///< position of the point, of its first reading
+    double nominalMm = 0.0;              ///< nominal diameter of its first reading
+    std::optional<double> lowerLimitMm;  ///< tolerance of the latest reading that has one (none: no tolerance)
+    std::optional<double> upperLimitMm;
+    double limitsNominalMm = 0.0;  ///< nominal diameter of that latest reading (the capability's target)
+    std::vector<double> valuesMm;
+    std::vector<std::int64_t> partNumbers;
+    std::vector<double> timesS;    ///< when each reading arrived on the loop's clock, s
+    core::VerdictCounts verdicts;  ///< of these readings; readings without a verdict are not counted
+};
+
+/// The readings of every chosen control point, in point order: one pass over the covering index of the readings
+/// by point (history migration 4) reading only the columns the statistics need, the verdicts as small numbers. The same
+/// readings as queryMeasurements (and in the same order within a point). Throws StorageError on failure.
+std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFilter& filter);
+
+/// Per control point aggregates computed in SQL over the plausible readings (the Reports page's overview of all
+/// points; cross-checked against the same figures from the raw rows in tests/storage/history).
+struct PointAggregate {
+    int pointIndex = 0;  ///< 0-based
+    std::int64_t count = 0;
+    double meanMm = 0.0;
+    double sigmaOverallMm = 0.0;  ///< sample standard deviation (n - 1), two passes in SQL; 0 for one reading
+    double minMm = 0.0;
+    double maxMm = 0.0;
+    core::VerdictCounts verdicts;
+};
+
+/// The aggregates of every chosen control point, in point order. Throws StorageError on failure.
+std::vector<PointAggregate> queryPointAggregates(Database& db, const MeasurementFilter& filter);
+
 /// The plausible readings of the history (a value measured and not refused as implausible or not a number:
 /// what a quality report counts; "accepted" is kept), ordered by run, part and point. One query joined in
 /// SQL; throws StorageError on failure.

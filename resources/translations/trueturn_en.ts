@@ -1901,6 +1901,73 @@
     </message>
 </context>
 <context>
+    <name>tt::ui::About</name>
+    <message>
+        <source>In-process compensation of boring-bar deflection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation, with G-code</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Neural corrective pulse of the feed drives at corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hydraulic feed stabilisation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Calibration of the probe and the gauge, tool stiffness table</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The Reports page and PDF reports</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The Controller page with live predictions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Users, roles and the audit trail</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kiosk mode for the operator&apos;s terminal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Implemented:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Not yet implemented:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Log file: %5&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run-to-run LQG control of the shaft profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices: gauge, probe mandrel, Modbus, CNC correction output</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run history (SQLite, PostgreSQL), SPC figures (report command)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integral action and model-mismatch detection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARMA identification of the process from the history</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::AppState</name>
     <message>
         <source>Idle</source>
@@ -4075,14 +4142,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
     <message>
         <source>History: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Log file: %3&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>not written</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1904,6 +1904,73 @@
     </message>
 </context>
 <context>
+    <name>tt::ui::About</name>
+    <message>
+        <source>Run-to-run LQG control of the shaft profile</source>
+        <translation>LQG-управление профилем вала от детали к детали</translation>
+    </message>
+    <message>
+        <source>In-process compensation of boring-bar deflection</source>
+        <translation>Компенсация прогиба расточной оправки в процессе обработки</translation>
+    </message>
+    <message>
+        <source>Feed scheduling against force deformation, with G-code</source>
+        <translation>Программирование подачи против силовых деформаций, с G-кодом</translation>
+    </message>
+    <message>
+        <source>Neural corrective pulse of the feed drives at corners</source>
+        <translation>Нейросетевой корректирующий импульс приводов подачи на углах</translation>
+    </message>
+    <message>
+        <source>Hydraulic feed stabilisation</source>
+        <translation>Стабилизация гидравлической подачи</translation>
+    </message>
+    <message>
+        <source>Calibration of the probe and the gauge, tool stiffness table</source>
+        <translation>Калибровка датчика и скобы, таблица жёсткости инструмента</translation>
+    </message>
+    <message>
+        <source>Devices: gauge, probe mandrel, Modbus, CNC correction output</source>
+        <translation>Устройства: скоба, оправка, Modbus, коррекция в ЧПУ</translation>
+    </message>
+    <message>
+        <source>Run history (SQLite, PostgreSQL), SPC figures (report command)</source>
+        <translation>История (SQLite, PostgreSQL), показатели SPC (команда report)</translation>
+    </message>
+    <message>
+        <source>The Reports page and PDF reports</source>
+        <translation>Страница «Отчёты» и отчёты в PDF</translation>
+    </message>
+    <message>
+        <source>The Controller page with live predictions</source>
+        <translation>Страница «Регулятор» с прогнозами в реальном времени</translation>
+    </message>
+    <message>
+        <source>Users, roles and the audit trail</source>
+        <translation>Пользователи, роли и журнал аудита</translation>
+    </message>
+    <message>
+        <source>Integral action and model-mismatch detection</source>
+        <translation>Интегральное действие и обнаружение рассогласования модели</translation>
+    </message>
+    <message>
+        <source>ARMA identification of the process from the history</source>
+        <translation>Идентификация ARMA-модели процесса по истории</translation>
+    </message>
+    <message>
+        <source>Kiosk mode for the operator&apos;s terminal</source>
+        <translation>Режим киоска для терминала оператора</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Implemented:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Not yet implemented:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Log file: %5&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Адаптивное управление точностью токарной обработки.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Реализовано:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Пока не реализовано:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Файл журнала: %5&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>not written</source>
+        <translation>не ведётся</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::AppState</name>
     <message>
         <source>Idle</source>
@@ -4099,14 +4166,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     <message>
         <source>History: %1</source>
         <translation>История: %1</translation>
-    </message>
-    <message>
-        <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes: run-to-run control of the shaft profile, in-process compensation of boring-bar deflection, feed scheduling and drive corrections.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Log file: %3&lt;/p&gt;</source>
-        <translation>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Адаптивное управление точностью токарной обработки: управление продольным профилем вала от детали к детали, компенсация прогиба расточной оправки в процессе обработки, программирование подачи и коррекция приводов.&lt;/p&gt;&lt;p&gt;Qt %2&lt;/p&gt;&lt;p&gt;Файл журнала: %3&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>not written</source>
-        <translation>не ведётся</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,8 @@ TEST(Dispatcher, HelpListsOptionsAndCommandsWithoutADisplay) {
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_TRUE(r.out.contains(QStringLiteral("--screenshots")));
     EXPECT_TRUE(r.out.contains(QStringLiteral("Commands:")));
+    // The manual page (help2man) takes its synopsis from this line.
+    EXPECT_TRUE(r.out.startsWith(QStringLiteral("Usage: trueturn [options]"))) << r.out.toStdString();
 }
 
 TEST(Dispatcher, UnknownCommandExitsTwoNamingTheValidCommands) {

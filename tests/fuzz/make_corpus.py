@@ -129,4 +129,20 @@ write("preset_json", "many_components", b"\x00" + b'{"plant": {"part_length_mm":
 write("preset_json", "boring_slow", b"\x01" + b'{"tool": {"id": "t", "section": "round", "diameter_mm": 40, '
       b'"overhang_mm": 200}, "cut": {"bore_length_mm": 5000, "feed_mm_per_rev": 0.01, "spindle_rpm": 1}}')
 
+# --- preset_sections (first byte % 7 picks the reader; see fuzz_preset_sections.cpp) ------------
+write("preset_sections", "corner", b"\x00" + preset_file("1v340-feed-drives"))
+write("preset_sections", "corner_net_header", b"\x01" + b'{"format": "trueturn-corrective-net", "network": {}}')
+write("preset_sections", "deformation_model", b"\x02" + b'{"kind": "trueturn-deformation-model", "format": 1, '
+      b'"factors": {"a_mm": {"centre": 1.25, "half_range": 0.75, "min": 0.5, "max": 2}, '
+      b'"f_mm_rev": {"centre": 0.2, "half_range": 0.1, "min": 0.1, "max": 0.3}, '
+      b'"z_mm": {"centre": 200, "half_range": 200, "min": 0, "max": 400}}, '
+      b'"terms": [{"term": "1", "powers": [0, 0, 0], "coefficient_um": 40, "std_error_um": 0.1, "t": 400}, '
+      b'{"term": "a", "powers": [1, 0, 0], "coefficient_um": 20, "std_error_um": 0.1, "t": 200}]}')
+write("preset_sections", "feed_scheduling", b"\x03" + preset_file("feed-scheduling"))
+write("preset_sections", "hydraulic_feed", b"\x04" + preset_file("hydraulic-feed"))
+write("preset_sections", "lathe_group1", b"\x05" + preset_file("paper-2012-group1"))
+write("preset_sections", "systematic_group2", b"\x06" + preset_file("paper-2012-group2"))
+write("preset_sections", "systematic_huge", b"\x06" + b'{"systematic_model": {"part_length_mm": 325, '
+      b'"coefficients": [1e300, 0, 0]}}')
+
 print("corpora written under", os.path.join(HERE, "corpus"))

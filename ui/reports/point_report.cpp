@@ -52,50 +52,36 @@ std::optional<core::SpecLimits> specOf(const PointRows& point) {
     return std::nullopt;
 }
 
-core::MeasuredSeries seriesOf(const PointRows& point) {
-    core::MeasuredSeries series;
-    series.valuesMm.reserve(point.rows.size());
-    series.partNumbers.reserve(point.rows.size());
-    series.timesS.reserve(point.rows.size());
-    for (const storage::MeasurementRow* row : point.rows) {
-        series.valuesMm.push_back(row->measuredMm);
-        series.partNumbers.push_back(row->partNumber);
-        series.timesS.push_back(row->timeS);
+PointReport pointReportOf(const storage::PointReadings& readings, const core::PointAnalysisSettings& settings) {
+    PointReport report;
+    report.pointIndex = readings.pointIndex;
+    report.zMm = readings.zMm;
+    report.nominalMm = readings.nominalMm;
+    if (readings.lowerLimitMm && readings.upperLimitMm)
+        report.spec = core::SpecLimits{*readings.lowerLimitMm, *readings.upperLimitMm, readings.limitsNominalMm};
+    report.verdicts = readings.verdicts;
+    report.series.valuesMm = readings.valuesMm;
+    report.series.partNumbers = readings.partNumbers;
+    report.series.timesS = readings.timesS;
+    core::PointAnalysisSettings pointSettings = settings;
+    pointSettings.spec = report.spec;
+    try {
+        report.analysis = core::analysePoint(report.series, pointSettings);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("point " + std::to_string(readings.pointIndex + 1) + ": " + e.what());
     }
-    return series;
+    return report;
 }
 
-core::VerdictCounts verdictsOf(const PointRows& point) {
-    core::VerdictCounts counts;
-    for (const storage::MeasurementRow* row : point.rows)
-        if (row->verdict) counts.add(*row->verdict);
-    return counts;
-}
-
-std::vector<PointReport> analyseReport(const std::vector<storage::MeasurementRow>& rows,
+std::vector<PointReport> analyseReport(const std::vector<storage::PointReadings>& readings,
                                        const core::PointAnalysisSettings& settings, const ReportProgress& progress) {
-    const std::vector<PointRows> points = rowsByPoint(rows);
     std::vector<PointReport> reports;
-    reports.reserve(points.size());
-    for (const PointRows& point : points) {
-        if (progress && !progress(reports.size(), points.size())) throw ReportCancelled();
-        PointReport report;
-        report.pointIndex = point.pointIndex;
-        report.zMm = point.rows.front()->zMm;
-        report.nominalMm = point.rows.front()->nominalMm;
-        report.spec = specOf(point);
-        report.verdicts = verdictsOf(point);
-        report.series = seriesOf(point);
-        core::PointAnalysisSettings pointSettings = settings;
-        pointSettings.spec = report.spec;
-        try {
-            report.analysis = core::analysePoint(report.series, pointSettings);
-        } catch (const std::invalid_argument& e) {
-            throw std::invalid_argument("point " + std::to_string(point.pointIndex + 1) + ": " + e.what());
-        }
-        reports.push_back(std::move(report));
+    reports.reserve(readings.size());
+    for (const storage::PointReadings& point : readings) {
+        if (progress && !progress(reports.size(), readings.size())) throw ReportCancelled();
+        reports.push_back(pointReportOf(point, settings));
     }
-    if (progress && !progress(reports.size(), points.size())) throw ReportCancelled();
+    if (progress && !progress(reports.size(), readings.size())) throw ReportCancelled();
     return reports;
 }
 

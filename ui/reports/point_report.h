@@ -50,12 +50,6 @@ std::vector<PointRows> rowsByPoint(const std::vector<storage::MeasurementRow>& r
 /// nominal as target; none when no reading has a tolerance.
 std::optional<core::SpecLimits> specOf(const PointRows& point);
 
-/// The series of the statistics: measured values, part numbers and loop times of the readings.
-core::MeasuredSeries seriesOf(const PointRows& point);
-
-/// The stored verdicts of the readings of one point, counted.
-core::VerdictCounts verdictsOf(const PointRows& point);
-
 /// The report of one control point: where it is, its tolerance, the verdict counts and core/quality's
 /// chart, run rules and capability (analysePoint).
 struct PointReport {
@@ -68,10 +62,15 @@ struct PointReport {
     core::PointAnalysis analysis;
 };
 
-/// The report of every control point of the rows (settings.spec is set per point from specOf). Calls
-/// `progress` after each point; throws ReportCancelled when it returns false, std::invalid_argument
-/// prefixed with "point i: " when a point's statistics cannot be computed (too few readings for the chart).
-std::vector<PointReport> analyseReport(const std::vector<storage::MeasurementRow>& rows,
+/// The report of one control point from its readings (storage::queryPointReadings): the specification limits
+/// are the stored ones of its latest judged reading with that reading's nominal as target. Throws
+/// std::invalid_argument prefixed with "point i: " when the statistics cannot be computed (too few readings for the
+/// chart).
+PointReport pointReportOf(const storage::PointReadings& readings, const core::PointAnalysisSettings& settings);
+
+/// The report of every control point read (settings.spec is set per point). Calls `progress` after each point;
+/// throws ReportCancelled when it returns false; errors as pointReportOf.
+std::vector<PointReport> analyseReport(const std::vector<storage::PointReadings>& readings,
                                        const core::PointAnalysisSettings& settings,
                                        const ReportProgress& progress = {});
 

@@ -65,14 +65,19 @@ void ReportTask::run(Work work) {
 void ReportTask::analyse(const storage::DatabaseConfig& config, const storage::MeasurementFilter& filter,
                          const core::PointAnalysisSettings& settings) {
     run([config, filter, settings](QPromise<ReportTaskResult>& promise, ReportTaskResult& result) {
+        std::vector<storage::PointReadings> readings;
         {
             storage::Database db(config);  // this thread's own connection (QtSql)
+            readings = storage::queryPointReadings(db, filter);
+            promise.setProgressValue(30);
+            if (promise.isCanceled()) throw ReportCancelled();
+            // Every column of every reading: the part profiles and the CSV, DFQ and PDF files.
             result.rows = storage::queryMeasurements(db, filter);
-            promise.setProgressValue(40);
+            promise.setProgressValue(50);
             if (promise.isCanceled()) throw ReportCancelled();
             result.runs = storage::SqlHistoryStore(db).runs();
         }
-        if (!result.rows.empty()) result.points = analyseReport(result.rows, settings, progressOf(promise, 50, 100));
+        result.points = analyseReport(readings, settings, progressOf(promise, 50, 100));
     });
 }
 

@@ -52,7 +52,8 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     TT_REQUIRE_BACKEND(scratch);
     Database db(scratch.config());
     SqlHistoryStore store(db);
-    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 3) << "version 3 keeps the tolerance verdicts";
+    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 4)
+        << "version 3 keeps the tolerance verdicts, 4 the covering index of the readings by point";
     const std::int64_t run = store.beginRun(paperRun(2));
     store.recordPart(run, finished(1));
     store.recordMeasurement(run, measured(1, 0.012));
