@@ -18,7 +18,7 @@ packages=(
 # recommends a real-time kernel.
 test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
-    clang libclang-rt-14-dev postgresql linuxcnc-uspace
+    clang libclang-rt-14-dev postgresql linuxcnc-uspace poppler-utils
     python3-scipy python3-statsmodels
     file help2man lintian desktop-file-utils appstream
 )

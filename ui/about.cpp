@@ -18,11 +18,11 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Calibration of the probe and the gauge, tool stiffness table"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Devices: gauge, probe mandrel, Modbus, CNC correction output"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Run history (SQLite, PostgreSQL), SPC figures (report command)"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The Reports page and PDF reports"),
 };
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
-    QT_TRANSLATE_NOOP("tt::ui::About", "The Reports page and PDF reports"),
     QT_TRANSLATE_NOOP("tt::ui::About", "The Controller page with live predictions"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles and the audit trail"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Integral action and model-mismatch detection"),

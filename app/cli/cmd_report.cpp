@@ -1,15 +1,15 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
 // values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
-// reading for the CSV and DFQ files: storage::queryMeasurements), the statistics from core/quality's analysePoint
-// (chart, run rules, capability with the stored tolerance limits), the verdicts as stored with each reading.
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' analyseReport
+// (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
+// stored with each reading; the files from ui/reports too (the Reports page writes the same).
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QString>
-#include <QTextStream>
 #include <QTimeZone>
-#include <map>
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -18,47 +18,28 @@
 #include "app/cli/command_parser.h"
 #include "config/json_eigen.h"
 #include "core/quality/point_analysis.h"
+#include "core/storage/history_store.h"
 #include "core/storage/measurement_query.h"
+#include "ui/reports/point_report.h"
+#include "ui/reports/report_files.h"
+#include "ui/reports/report_pdf.h"
 
 namespace tt::cli {
 
 namespace {
 
-/// The specification limits of a point: the stored tolerance of its latest reading that has one, the
-/// nominal as target; none when no reading has a tolerance.
-std::optional<core::SpecLimits> specOf(const storage::PointReadings& point) {
-    if (point.lowerLimitMm && point.upperLimitMm)
-        return core::SpecLimits{*point.lowerLimitMm, *point.upperLimitMm, point.limitsNominalMm};
-    return std::nullopt;
-}
-
-core::MeasuredSeries seriesOf(const storage::PointReadings& point) {
-    core::MeasuredSeries series;
-    series.valuesMm = point.valuesMm;
-    series.partNumbers = point.partNumbers;
-    series.timesS = point.timesS;
-    return series;
-}
-
 QJsonValue orNull(const std::optional<double>& v) {
     return v ? config::finiteOrNull(*v) : QJsonValue();
 }
 
-QJsonObject verdictsJson(const storage::PointReadings& point) {
-    return {{QStringLiteral("good"), static_cast<qint64>(point.verdicts.good)},
-            {QStringLiteral("rework"), static_cast<qint64>(point.verdicts.rework)},
-            {QStringLiteral("scrap"), static_cast<qint64>(point.verdicts.scrap)}};
+QJsonObject verdictsJson(const core::VerdictCounts& counts) {
+    return {{QStringLiteral("good"), static_cast<qint64>(counts.good)},
+            {QStringLiteral("rework"), static_cast<qint64>(counts.rework)},
+            {QStringLiteral("scrap"), static_cast<qint64>(counts.scrap)}};
 }
 
-QJsonObject pointJson(const storage::PointReadings& point, const core::PointAnalysisSettings& base) {
-    core::PointAnalysisSettings settings = base;
-    settings.spec = specOf(point);
-    core::PointAnalysis a;
-    try {
-        a = core::analysePoint(seriesOf(point), settings);
-    } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument("point " + std::to_string(point.pointIndex + 1) + ": " + e.what());
-    }
+QJsonObject pointJson(const ui::PointReport& point) {
+    const core::PointAnalysis& a = point.analysis;
     const core::ChartLimits& l = a.chart.limits;
     QJsonArray violations;
     for (const core::PointViolation& v : a.violations) {
@@ -102,86 +83,8 @@ QJsonObject pointJson(const storage::PointReadings& point, const core::PointAnal
                                                {QStringLiteral("r_ucl"), l.spread.upperMm},
                                                {QStringLiteral("r_lcl"), l.spread.lowerMm}}},
         {QStringLiteral("violations"), violations},
-        {QStringLiteral("verdicts"), verdictsJson(point)},
+        {QStringLiteral("verdicts"), verdictsJson(point.verdicts)},
     };
-}
-
-QString csvNumber(double v) {
-    return QString::number(v, 'f', 4);
-}
-
-/// run, machine, part, time (ISO 8601), point, x_mm, nominal_mm, measured_mm, deviation_mm, verdict.
-void writeCsv(const QString& path, const std::vector<storage::MeasurementRow>& rows) {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-        throw std::runtime_error("--csv: cannot write '" + path.toStdString() +
-                                 "': " + file.errorString().toStdString());
-    QTextStream out(&file);
-    out << "run,machine,part,time,point,x_mm,nominal_mm,measured_mm,deviation_mm,verdict\n";
-    for (const storage::MeasurementRow& r : rows) {
-        QString machine = QString::fromStdString(r.machine);
-        if (machine.contains(QLatin1Char(',')) || machine.contains(QLatin1Char('"')))
-            machine = QLatin1Char('"') + machine.replace(QLatin1String("\""), QLatin1String("\"\"")) + QLatin1Char('"');
-        out << r.runId << ',' << machine << ',' << r.partNumber << ',' << QString::fromStdString(r.recordedAt) << ','
-            << r.pointIndex + 1 << ',' << csvNumber(r.zMm) << ',' << csvNumber(r.nominalMm) << ','
-            << csvNumber(r.measuredMm) << ',' << csvNumber(r.measuredMm - r.nominalMm) << ','
-            << (r.verdict ? QString::fromStdString(core::toleranceVerdictName(*r.verdict)) : QString()) << '\n';
-    }
-    out.flush();
-    if (file.error() != QFileDevice::NoError)
-        throw std::runtime_error("--csv: writing '" + path.toStdString() +
-                                 "' failed: " + file.errorString().toStdString());
-}
-
-/// AQDEF (Q-DAS ASCII transfer format) date/time: DD.MM.YYYY/HH:MM:SS, from the stored ISO 8601 UTC.
-QString dfqTime(const std::string& iso) {
-    const QDateTime t = QDateTime::fromString(QString::fromStdString(iso), Qt::ISODateWithMs);
-    return t.isValid() ? t.toUTC().toString(QStringLiteral("dd.MM.yyyy/HH:mm:ss")) : QString();
-}
-
-/// AQDEF for Q-DAS (one key per line, "/i" = characteristic i): K0100 number of characteristics; K1001/K1002
-/// part number and description; per control point K2001/K2002 characteristic number and description, K2022
-/// decimal places, K2101 nominal, K2110/K2111 lower/upper specification limit, K2142 unit; then each
-/// reading as K0001/i value with K0004/i date/time, part by part.
-void writeDfq(const QString& path, const std::vector<storage::MeasurementRow>& rows,
-              const std::vector<storage::PointReadings>& points) {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate))
-        throw std::runtime_error("--dfq: cannot write '" + path.toStdString() +
-                                 "': " + file.errorString().toStdString());
-    QTextStream out(&file);
-    out.setEncoding(QStringConverter::Latin1);
-    std::map<int, int> characteristic;  // point index -> K-field index 1..
-    for (const storage::PointReadings& point : points)
-        characteristic[point.pointIndex] = static_cast<int>(characteristic.size()) + 1;
-    out << "K0100 " << characteristic.size() << "\r\n";
-    out << "K1001 "
-        << (rows.front().machine.empty() ? QStringLiteral("shaft") : QString::fromStdString(rows.front().machine))
-        << "\r\n";
-    out << "K1002 TrueTurn shaft, run(s) " << rows.front().runId << ".." << rows.back().runId << "\r\n";
-    for (const storage::PointReadings& point : points) {
-        const int index = point.pointIndex;
-        const QString k = QStringLiteral("/%1 ").arg(characteristic[index]);
-        const std::optional<core::SpecLimits> spec = specOf(point);
-        out << "K2001" << k << "P" << index + 1 << "\r\n";
-        out << "K2002" << k << "Diameter at x = " << QString::number(point.zMm, 'f', 1) << " mm\r\n";
-        out << "K2022" << k << "4\r\n";
-        out << "K2101" << k << QString::number(point.nominalMm, 'f', 4) << "\r\n";
-        if (spec) {
-            out << "K2110" << k << QString::number(spec->lowerMm, 'f', 4) << "\r\n";
-            out << "K2111" << k << QString::number(spec->upperMm, 'f', 4) << "\r\n";
-        }
-        out << "K2142" << k << "mm\r\n";
-    }
-    for (const storage::MeasurementRow& r : rows) {
-        const QString k = QStringLiteral("/%1 ").arg(characteristic[r.pointIndex]);
-        out << "K0001" << k << QString::number(r.measuredMm, 'f', 4) << "\r\n";
-        out << "K0004" << k << dfqTime(r.recordedAt) << "\r\n";
-    }
-    out.flush();
-    if (file.error() != QFileDevice::NoError)
-        throw std::runtime_error("--dfq: writing '" + path.toStdString() +
-                                 "' failed: " + file.errorString().toStdString());
 }
 
 void printText(const QJsonArray& points) {
@@ -238,7 +141,8 @@ int run(const QStringList& arguments) {
     CommandParser parser(
         QStringLiteral("report"),
         QStringLiteral("The quality report of a stored history: per control point the control chart (I-MR, or "
-                       "X-bar-R of consecutive subgroups) with its limits and Western Electric rule violations, "
+                       "X-bar-R or X-bar-s of consecutive subgroups; phase-I limits from a baseline) with its limits "
+                       "and Western Electric rule violations, "
                        "capability against the stored tolerance (Cp, Cpk with its 95 % interval, Cpm, Pp, Ppk; "
                        "ISO 22514-2 percentile method when Anderson-Darling rejects normality) and the verdict "
                        "counts; the readings as CSV and AQDEF (DFQ)."));
@@ -258,8 +162,21 @@ int run(const QStringList& arguments) {
     parser.addOption(QStringLiteral("point"), QStringLiteral("Only control point i, 1..16 (default: every point)."),
                      QStringLiteral("i"));
     parser.addOption(QStringLiteral("subgroup"),
-                     QStringLiteral("Subgroup size of the chart: 1 for I-MR (default), 2..25 for X-bar-R."),
+                     QStringLiteral("Subgroup size of the chart: 1 for I-MR (default), 2..10 for X-bar-R, 11..25 for "
+                                    "X-bar-s (unless --chart says)."),
                      QStringLiteral("n"), QStringLiteral("1"));
+    parser.addOption(QStringLiteral("chart"),
+                     QStringLiteral("The chart: xbar-r, xbar-s (with --subgroup 2..25) or imr (subgroup 1); default: "
+                                    "by the subgroup size."),
+                     QStringLiteral("kind"));
+    parser.addOption(QStringLiteral("baseline"),
+                     QStringLiteral("Phase I: control limits from the first N chart points (subgroups, or parts for "
+                                    "I-MR), then held for the rest (phase II); default: all."),
+                     QStringLiteral("n"));
+    parser.addOption(QStringLiteral("pdf"),
+                     QStringLiteral("Also write the report as PDF: a title page (machine, job, dates, summary, every "
+                                    "point's chart, signature line) and one page per control point."),
+                     QStringLiteral("file"));
     parser.addOption(QStringLiteral("csv"),
                      QStringLiteral("Also write every reading as CSV (run, machine, part, time, point, x_mm, "
                                     "nominal_mm, measured_mm, deviation_mm, verdict)."),
@@ -284,30 +201,56 @@ int run(const QStringList& arguments) {
         filter.toUtc = utcBound(QStringLiteral("to"), parser.value(QStringLiteral("to")), true);
     if (filter.fromUtc && filter.toUtc && *filter.toUtc <= *filter.fromUtc)
         throw UsageError("--to: must come after --from");
+    const int subgroup = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
+    ui::ReportChart chart = ui::ReportChart::Automatic;
+    if (parser.isSet(QStringLiteral("chart"))) {
+        const QString kind = parser.choice(QStringLiteral("chart"),
+                                           {QStringLiteral("xbar-r"), QStringLiteral("xbar-s"), QStringLiteral("imr")});
+        chart = kind == QStringLiteral("imr")      ? ui::ReportChart::IndividualsMR
+                : kind == QStringLiteral("xbar-s") ? ui::ReportChart::XbarStdDev
+                                                   : ui::ReportChart::XbarRange;
+    }
+    const std::size_t baseline =
+        parser.isSet(QStringLiteral("baseline"))
+            ? static_cast<std::size_t>(parser.integer(QStringLiteral("baseline"), 2, core::kMaxSeriesValues))
+            : 0;
     core::PointAnalysisSettings settings;
-    settings.subgroupSize = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
+    try {
+        settings = ui::reportSettings(subgroup, chart, baseline);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--chart: ") + e.what());
+    }
 
     std::unique_ptr<storage::Database> db;
     std::vector<storage::PointReadings> readings;
-    std::vector<storage::MeasurementRow> rows;  // every column of every reading: only for the CSV and DFQ files
-    const bool files = parser.isSet(QStringLiteral("csv")) || parser.isSet(QStringLiteral("dfq"));
+    std::vector<storage::MeasurementRow> rows;  // every column of every reading: only for the files and the PDF
+    std::vector<core::RunSummary> runs;
+    const bool pdf = parser.isSet(QStringLiteral("pdf"));
+    const bool files = parser.isSet(QStringLiteral("csv")) || parser.isSet(QStringLiteral("dfq")) || pdf;
     try {
         db = std::make_unique<storage::Database>(databaseConfigFromOption(dbValue));
         readings = storage::queryPointReadings(*db, filter);
         if (files) rows = storage::queryMeasurements(*db, filter);
+        if (pdf) runs = storage::SqlHistoryStore(*db).runs();
     } catch (const storage::StorageError& e) {
         throw UsageError(std::string("--db: ") + e.what());
     }
     if (readings.empty() || (files && rows.empty()))
         throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
+    const std::vector<ui::PointReport> reports = ui::analyseReport(readings, settings);
     QJsonArray points;
-    for (const storage::PointReadings& point : readings)
-        points.append(pointJson(point, settings));
-    if (parser.isSet(QStringLiteral("csv"))) writeCsv(parser.value(QStringLiteral("csv")), rows);
-    if (parser.isSet(QStringLiteral("dfq"))) writeDfq(parser.value(QStringLiteral("dfq")), rows, readings);
+    for (const ui::PointReport& point : reports)
+        points.append(pointJson(point));
+    if (parser.isSet(QStringLiteral("csv"))) ui::writeMeasurementsCsv(parser.value(QStringLiteral("csv")), rows);
+    if (parser.isSet(QStringLiteral("dfq"))) ui::writeMeasurementsDfq(parser.value(QStringLiteral("dfq")), rows);
+    if (parser.isSet(QStringLiteral("pdf")))
+        ui::ReportPdf::write(parser.value(QStringLiteral("pdf")), ui::reportHeaderOf(rows, runs), reports);
     if (parser.json()) {
-        QJsonObject out{{QStringLiteral("subgroup"), settings.subgroupSize}, {QStringLiteral("points"), points}};
+        QJsonObject out{{QStringLiteral("subgroup"), settings.subgroupSize},
+                        {QStringLiteral("chart"),
+                         QString::fromStdString(ui::chartKindName(reports.front().analysis.chart.limits.kind))},
+                        {QStringLiteral("points"), points}};
         if (filter.runId) out.insert(QStringLiteral("run"), static_cast<qint64>(*filter.runId));
         printJson(out);
     } else {
@@ -321,8 +264,12 @@ int run(const QStringList& arguments) {
 Command makeReportCommand() {
     return {QStringLiteral("report"),
             QStringLiteral("Quality report of a stored history: control charts, rule violations, capability and "
-                           "verdicts per control point, CSV and AQDEF (DFQ) of the readings"),
-            run};
+                           "verdicts per control point, CSV and AQDEF (DFQ) of the readings, PDF report"),
+            run, [](const QStringList& arguments) {
+                return std::any_of(arguments.begin(), arguments.end(), [](const QString& a) {
+                    return a == QStringLiteral("--pdf") || a.startsWith(QStringLiteral("--pdf="));
+                });
+            }};
 }
 
 }  // namespace tt::cli

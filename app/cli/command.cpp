@@ -1,9 +1,13 @@
 #include "app/cli/command.h"
 
 #include <trueturn/version.h>
+#include <QApplication>
 #include <QCoreApplication>
+#include <QFile>
+#include <QTemporaryDir>
 #include <cstdio>
 #include <exception>
+#include <memory>
 
 #include "app/cli/command_parser.h"
 
@@ -29,10 +33,26 @@ int fail(const QString& prefix, const char* what, int code) {
     return code;
 }
 
+/// A QCoreApplication, or a QApplication on the offscreen platform (never a display) when the command paints.
+std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv) {
+    QStringList raw;
+    for (int i = 2; i < argc; ++i)
+        raw << QString::fromLocal8Bit(argv[i]);
+    const Command* command = argc > 1 ? findCommand(QString::fromLocal8Bit(argv[1])) : nullptr;
+    if (!command || !command->paints || !command->paints(raw)) return std::make_unique<QCoreApplication>(argc, argv);
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
+        // A headless shell has no session runtime folder; a private one (0700) instead of Qt's warning on stderr.
+        static QTemporaryDir runtime;
+        if (runtime.isValid()) qputenv("XDG_RUNTIME_DIR", QFile::encodeName(runtime.path()));
+    }
+    return std::make_unique<QApplication>(argc, argv);
+}
+
 }  // namespace
 
 int runCommand(int argc, char** argv) {
-    QCoreApplication app(argc, argv);
+    const std::unique_ptr<QCoreApplication> app = makeApplication(argc, argv);
     QCoreApplication::setOrganizationName(QStringLiteral("TrueTurn"));
     QCoreApplication::setApplicationName(QStringLiteral("TrueTurn"));
     QCoreApplication::setApplicationVersion(QString::fromLatin1(tt::kVersion));

@@ -26,6 +26,9 @@ struct Command {
     QString summary;  ///< one line, shown by `trueturn --help`
     /// Runs with the arguments after the command name; returns the exit code, throws UsageError.
     std::function<int(const QStringList& arguments)> run;
+    /// Whether the command, given these arguments, paints (fonts, charts into a PDF): runCommand then makes
+    /// a QApplication on the offscreen platform instead of a QCoreApplication. Empty: never.
+    std::function<bool(const QStringList& arguments)> paints = {};
 };
 
 /// Every command, in the order `--help` lists them (app/cli/commands.cpp).

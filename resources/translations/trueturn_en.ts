@@ -4467,14 +4467,6 @@ Quit anyway?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>No runs recorded yet</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Per-part profiles, SPC charts and capability (Cp, Cpk) at the control points, with PDF and CSV export.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Gauge micrometer, probe mandrel, drive-current readout and the correction output to the CNC; the built-in simulator is always available.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -5021,6 +5013,469 @@ Quit anyway?</source>
     </message>
     <message>
         <source>true profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportCharts</name>
+    <message>
+        <source>Individual diameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup means</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part in order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>subgroup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>control limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rule violations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end of the baseline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup ranges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup standard deviations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving ranges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spread, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fitted normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x along the shaft, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no tolerance stored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ppk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>normal distribution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>percentiles (ISO 22514-2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normality p (AD)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>σ within, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>σ overall, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 at x = %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart, limits from %n parts</source>
+        <translation>
+            <numerusform>%1 chart, limits from %n part</numerusform>
+            <numerusform>%1 chart, limits from %n parts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
+        <translation>
+            <numerusform>%1 chart of subgroups of %2, limits from %n subgroup</numerusform>
+            <numerusform>%1 chart of subgroups of %2, limits from %n subgroups</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>good %1 · rework %2 · scrap %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: parts %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportFilterBar</name>
+    <message>
+        <source>all machines</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all runs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Run %1 · %2 · %n parts</source>
+        <translation>
+            <numerusform>Run %1 · %2 · %n part</numerusform>
+            <numerusform>Run %1 · %2 · %n parts</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup, parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Chart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Limits from first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>any date</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>all points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>by subgroup size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X̄-R</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X̄-s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>I-MR</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportPdf</name>
+    <message>
+        <source>Quality report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Job: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, %1</source>
+        <translation>
+            <numerusform>%n part, %1</numerusform>
+            <numerusform>%n parts, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printed %1 UTC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine %1, job %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation>
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportViews</name>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation>
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>run %1, part %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Control chart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distribution and capability</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part profile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part in order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>95 % interval</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportsPage</name>
+    <message>
+        <source>Analyse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DFQ…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No measured parts for this choice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every part measured on the Run page is stored with its diameters and verdicts. Choose the machine, run and dates, then Analyse: control charts, capability and exports.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the history…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No measured parts for this choice.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n readings</source>
+        <translation>
+            <numerusform>%n reading</numerusform>
+            <numerusform>%n readings</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save the PDF report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the readings as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the readings as DFQ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>AQDEF files (*.dfq)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the PDF…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the DFQ file…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writing the CSV file…</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

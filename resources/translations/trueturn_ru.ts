@@ -4495,14 +4495,6 @@ Quit anyway?</source>
         <translation>Транспортное запаздывание z, веса R1 и R2, пределы коррекции, модель возмущений и полученные коэффициенты ЛКГ-регулятора.</translation>
     </message>
     <message>
-        <source>No runs recorded yet</source>
-        <translation>Записанных серий пока нет</translation>
-    </message>
-    <message>
-        <source>Per-part profiles, SPC charts and capability (Cp, Cpk) at the control points, with PDF and CSV export.</source>
-        <translation>Профили деталей, контрольные карты SPC и индексы воспроизводимости (Cp, Cpk) в контрольных точках с экспортом в PDF и CSV.</translation>
-    </message>
-    <message>
         <source>Gauge micrometer, probe mandrel, drive-current readout and the correction output to the CNC; the built-in simulator is always available.</source>
         <translation>Цифровой микрометр, оправка-датчик, считывание тока привода и вывод коррекции в ЧПУ; встроенный симулятор доступен всегда.</translation>
     </message>
@@ -5052,6 +5044,477 @@ Quit anyway?</source>
     <message>
         <source>true profile</source>
         <translation>истинный профиль</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportCharts</name>
+    <message>
+        <source>Individual diameters</source>
+        <translation>Отдельные диаметры</translation>
+    </message>
+    <message>
+        <source>Subgroup means</source>
+        <translation>Средние подгрупп</translation>
+    </message>
+    <message>
+        <source>part in order</source>
+        <translation>деталь по порядку</translation>
+    </message>
+    <message>
+        <source>subgroup</source>
+        <translation>подгруппа</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>diameter, mm</source>
+        <translation>диаметр, мм</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>диаметр</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>среднее</translation>
+    </message>
+    <message>
+        <source>centre line</source>
+        <translation>центральная линия</translation>
+    </message>
+    <message>
+        <source>control limits</source>
+        <translation>контрольные границы</translation>
+    </message>
+    <message>
+        <source>rule violations</source>
+        <translation>нарушения правил</translation>
+    </message>
+    <message>
+        <source>end of the baseline</source>
+        <translation>конец базового периода</translation>
+    </message>
+    <message>
+        <source>Subgroup ranges</source>
+        <translation>Размахи подгрупп</translation>
+    </message>
+    <message>
+        <source>Subgroup standard deviations</source>
+        <translation>Стандартные отклонения подгрупп</translation>
+    </message>
+    <message>
+        <source>Moving ranges</source>
+        <translation>Скользящие размахи</translation>
+    </message>
+    <message>
+        <source>spread, mm</source>
+        <translation>разброс, мм</translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation>Распределение</translation>
+    </message>
+    <message>
+        <source>parts</source>
+        <translation>детали</translation>
+    </message>
+    <message>
+        <source>fitted normal</source>
+        <translation>нормальное распределение</translation>
+    </message>
+    <message>
+        <source>tolerance</source>
+        <translation>допуск</translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation>номинал</translation>
+    </message>
+    <message>
+        <source>x along the shaft, mm</source>
+        <translation>x вдоль вала, мм</translation>
+    </message>
+    <message>
+        <source>tolerance band</source>
+        <translation>поле допуска</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>измерено</translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation>Воспроизводимость</translation>
+    </message>
+    <message>
+        <source>no tolerance stored</source>
+        <translation>допуск не записан</translation>
+    </message>
+    <message>
+        <source>Cp</source>
+        <translation>Cp</translation>
+    </message>
+    <message>
+        <source>Cpk</source>
+        <translation>Cpk</translation>
+    </message>
+    <message>
+        <source>Cpm</source>
+        <translation>Cpm</translation>
+    </message>
+    <message>
+        <source>Pp</source>
+        <translation>Pp</translation>
+    </message>
+    <message>
+        <source>Ppk</source>
+        <translation>Ppk</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <source>normal distribution</source>
+        <translation>нормальное распределение</translation>
+    </message>
+    <message>
+        <source>percentiles (ISO 22514-2)</source>
+        <translation>процентили (ISO 22514-2)</translation>
+    </message>
+    <message>
+        <source>Normality p (AD)</source>
+        <translation>Нормальность p (AD)</translation>
+    </message>
+    <message>
+        <source>σ within, mm</source>
+        <translation>σ внутри подгрупп, мм</translation>
+    </message>
+    <message>
+        <source>σ overall, mm</source>
+        <translation>σ общая, мм</translation>
+    </message>
+    <message>
+        <source>Mean, mm</source>
+        <translation>Среднее, мм</translation>
+    </message>
+    <message>
+        <source>Tolerance, mm</source>
+        <translation>Допуск, мм</translation>
+    </message>
+    <message>
+        <source>Point %1 at x = %2 mm</source>
+        <translation>Точка %1 при x = %2 мм</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart, limits from %n parts</source>
+        <translation>
+            <numerusform>Карта %1, границы по %n детали</numerusform>
+            <numerusform>Карта %1, границы по %n деталям</numerusform>
+            <numerusform>Карта %1, границы по %n деталям</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
+        <translation>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппе</numerusform>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>good %1 · rework %2 · scrap %3</source>
+        <translation>годных %1 · доработка %2 · брак %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… и ещё %n</numerusform>
+            <numerusform>… и ещё %n</numerusform>
+            <numerusform>… и ещё %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: parts %2</source>
+        <translation>%1: детали %2</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportFilterBar</name>
+    <message>
+        <source>all machines</source>
+        <translation>все станки</translation>
+    </message>
+    <message>
+        <source>all runs</source>
+        <translation>все серии</translation>
+    </message>
+    <message numerus="yes">
+        <source>Run %1 · %2 · %n parts</source>
+        <translation>
+            <numerusform>Серия %1 · %2 · %n деталь</numerusform>
+            <numerusform>Серия %1 · %2 · %n детали</numerusform>
+            <numerusform>Серия %1 · %2 · %n деталей</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>Серия</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>С</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>По</translation>
+    </message>
+    <message>
+        <source>Subgroup, parts</source>
+        <translation>Подгруппа, деталей</translation>
+    </message>
+    <message>
+        <source>Chart</source>
+        <translation>Карта</translation>
+    </message>
+    <message>
+        <source>Limits from first</source>
+        <translation>Границы по первым</translation>
+    </message>
+    <message>
+        <source>any date</source>
+        <translation>любая дата</translation>
+    </message>
+    <message>
+        <source>all points</source>
+        <translation>все точки</translation>
+    </message>
+    <message>
+        <source>by subgroup size</source>
+        <translation>по размеру подгруппы</translation>
+    </message>
+    <message>
+        <source>X̄-R</source>
+        <translation>X̄-R</translation>
+    </message>
+    <message>
+        <source>X̄-s</source>
+        <translation>X̄-s</translation>
+    </message>
+    <message>
+        <source>I-MR</source>
+        <translation>I-MR</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportPdf</name>
+    <message>
+        <source>Quality report</source>
+        <translation>Отчёт о качестве</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>Job: %1</source>
+        <translation>Задание: %1</translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation>Серии: %1</translation>
+    </message>
+    <message>
+        <source>Parts stored: %1</source>
+        <translation>Детали записаны: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, %1</source>
+        <translation>
+            <numerusform>%n деталь, %1</numerusform>
+            <numerusform>%n детали, %1</numerusform>
+            <numerusform>%n деталей, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printed %1 UTC</source>
+        <translation>Напечатано %1 UTC</translation>
+    </message>
+    <message>
+        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
+        <translation>Точка · x, мм · n · среднее, мм · Cpk · Ppk · нарушения правил · годных / доработка / брак</translation>
+    </message>
+    <message>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation>Проверил: ______________________   Дата: ____________   Подпись: ______________________</translation>
+    </message>
+    <message>
+        <source>machine %1, job %2</source>
+        <translation>станок %1, задание %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportViews</name>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>run %1, part %2</source>
+        <translation>серия %1, деталь %2</translation>
+    </message>
+    <message>
+        <source>Profile of %1</source>
+        <translation>Профиль: %1</translation>
+    </message>
+    <message>
+        <source>Control chart</source>
+        <translation>Контрольная карта</translation>
+    </message>
+    <message>
+        <source>Distribution and capability</source>
+        <translation>Распределение и воспроизводимость</translation>
+    </message>
+    <message>
+        <source>Part profile</source>
+        <translation>Профиль детали</translation>
+    </message>
+    <message>
+        <source>All points</source>
+        <translation>Все точки</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Точка</translation>
+    </message>
+    <message>
+        <source>Part in order</source>
+        <translation>Деталь по порядку</translation>
+    </message>
+    <message>
+        <source>Index</source>
+        <translation>Индекс</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Значение</translation>
+    </message>
+    <message>
+        <source>95 % interval</source>
+        <translation>95 % интервал</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::ReportsPage</name>
+    <message>
+        <source>Analyse</source>
+        <translation>Анализ</translation>
+    </message>
+    <message>
+        <source>PDF…</source>
+        <translation>PDF…</translation>
+    </message>
+    <message>
+        <source>CSV…</source>
+        <translation>CSV…</translation>
+    </message>
+    <message>
+        <source>DFQ…</source>
+        <translation>DFQ…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
+    </message>
+    <message>
+        <source>No report</source>
+        <translation>Нет отчёта</translation>
+    </message>
+    <message>
+        <source>No measured parts for this choice</source>
+        <translation>Для этого выбора нет измеренных деталей</translation>
+    </message>
+    <message>
+        <source>Every part measured on the Run page is stored with its diameters and verdicts. Choose the machine, run and dates, then Analyse: control charts, capability and exports.</source>
+        <translation>Каждая деталь, измеренная на странице «Работа», записывается с диаметрами и заключениями. Выберите станок, серию и даты, затем «Анализ»: контрольные карты, воспроизводимость и экспорт.</translation>
+    </message>
+    <message>
+        <source>Reading the history…</source>
+        <translation>Чтение истории…</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Отменено.</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Записано: %1</translation>
+    </message>
+    <message>
+        <source>No measured parts for this choice.</source>
+        <translation>Для этого выбора нет измеренных деталей.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n readings</source>
+        <translation>
+            <numerusform>%n измерение</numerusform>
+            <numerusform>%n измерения</numerusform>
+            <numerusform>%n измерений</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Save the PDF report</source>
+        <translation>Сохранить отчёт PDF</translation>
+    </message>
+    <message>
+        <source>Save the readings as CSV</source>
+        <translation>Сохранить измерения в CSV</translation>
+    </message>
+    <message>
+        <source>Save the readings as DFQ</source>
+        <translation>Сохранить измерения в DFQ</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Файлы PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>AQDEF files (*.dfq)</source>
+        <translation>Файлы AQDEF (*.dfq)</translation>
+    </message>
+    <message>
+        <source>Writing the PDF…</source>
+        <translation>Запись PDF…</translation>
+    </message>
+    <message>
+        <source>Writing the DFQ file…</source>
+        <translation>Запись файла DFQ…</translation>
+    </message>
+    <message>
+        <source>Writing the CSV file…</source>
+        <translation>Запись файла CSV…</translation>
     </message>
 </context>
 <context>

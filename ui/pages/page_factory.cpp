@@ -5,6 +5,7 @@
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/process_page.h"
+#include "ui/pages/reports_page.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/settings_page.h"
 #include "ui/pages/tools_page.h"
@@ -27,6 +28,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new ProcessPage(context, parent);
         case PageId::Devices:
             return new DevicesPage(context, parent);
+        case PageId::Reports:
+            return new ReportsPage(context, parent);
         default:
             return new PlannedPage(id, context, parent);
     }

@@ -68,16 +68,12 @@ void PlannedPage::retranslate() {
                               tr("Transport delay z, weights R1 and R2, correction limits, the disturbance model "
                                  "and the resulting LQG gains."));
             break;
-        case PageId::Reports:
-            m_state->setTexts(tr("No runs recorded yet"),
-                              tr("Per-part profiles, SPC charts and capability (Cp, Cpk) at the control points, "
-                                 "with PDF and CSV export."));
-            break;
         case PageId::Devices:
             m_state->setTexts(tr("Devices"),
                               tr("Gauge micrometer, probe mandrel, drive-current readout and the correction output "
                                  "to the CNC; the built-in simulator is always available."));
             break;
+        case PageId::Reports:  // ReportsPage
         case PageId::Process:  // ProcessPage
         case PageId::Settings:
             break;

@@ -19,11 +19,14 @@ void applyStyle(QCPGraph* graph, const QColor& color, Chart::Style style) {
     QPen pen(color);
     pen.setWidthF(2.5);
     graph->setPen(pen);
-    graph->setLineStyle(style == Chart::Style::Points  ? QCPGraph::lsNone
+    const bool pointsOnly = style == Chart::Style::Points || style == Chart::Style::SmallPoints;
+    graph->setLineStyle(pointsOnly                     ? QCPGraph::lsNone
                         : style == Chart::Style::Steps ? QCPGraph::lsStepCenter
                                                        : QCPGraph::lsLine);
     if (style == Chart::Style::Points || style == Chart::Style::LineAndPoints)
         graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, color, color, 9));
+    else if (style == Chart::Style::SmallPoints)
+        graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, color, color, 4));
     else
         graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssNone));
 }
@@ -81,9 +84,10 @@ void Chart::setLegendBelow(int columns) {
     // the width of its entries: without this a short (or empty) legend narrows the axes above it.
     constexpr int kUnlimitedWidth = 100000;
     m_plot->legend->setMaximumSize(kUnlimitedWidth, QWIDGETSIZE_MAX);
-    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     m_plot->legend->setWrap(std::max(1, columns));
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // rearranges the entries already there
     m_plot->legend->setMargins(QMargins(4, 2, 4, 2));
+    m_plot->plotLayout()->setMargins(QMargins(0, 0, 1, 1));  // the legend's frame inside the widget
 }
 
 void Chart::setAxisTitles(const QString& x, const QString& y) {
@@ -162,6 +166,29 @@ void Chart::refresh() {
 
 void Chart::showLegendWhenItHasEntries() {
     m_plot->legend->setVisible(m_plot->legend->itemCount() > 0);  // no empty box on an empty chart
+}
+
+void Chart::setFontPointSize(int pointSize) {
+    QFont f = font();
+    f.setPointSize(pointSize);
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis}) {
+        axis->setLabelFont(f);
+        axis->setTickLabelFont(f);
+    }
+    m_plot->legend->setFont(f);
+    if (auto* element = qobject_cast<QCPTextElement*>(m_plot->plotLayout()->element(0, 0))) {
+        f.setPointSize(pointSize + 1);
+        f.setBold(true);
+        element->setFont(f);
+    }
+}
+
+void Chart::render(QCPPainter& painter, const QRect& target) {
+    showLegendWhenItHasEntries();
+    painter.save();
+    painter.translate(target.topLeft());
+    m_plot->toPainter(&painter, target.width(), target.height());
+    painter.restore();
 }
 
 bool Chart::savePng(const QString& path, int width, int height) {

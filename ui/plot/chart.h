@@ -6,6 +6,7 @@
 #include <vector>
 
 class QCustomPlot;
+class QCPPainter;
 
 namespace tt::ui {
 
@@ -15,7 +16,7 @@ class Chart : public QWidget {
     Q_OBJECT
 public:
     /// How a series is drawn.
-    enum class Style { Line, Points, LineAndPoints, Steps };
+    enum class Style { Line, Points, LineAndPoints, Steps, SmallPoints };
 
     explicit Chart(QWidget* parent = nullptr);
 
@@ -49,6 +50,10 @@ public:
     void setLegendBelow(int columns);
     /// Redraws (queued; cheap to call often).
     void refresh();
+    /// Sets the size of the axis, legend and title fonts, pt (small multiples and printed pages).
+    void setFontPointSize(int pointSize);
+    /// Paints the chart as vector graphics into `target` of an active painter (a PDF page).
+    void render(QCPPainter& painter, const QRect& target);
     /// Writes the chart as PNG; false when the file cannot be written.
     bool savePng(const QString& path, int width = 0, int height = 0);
 
