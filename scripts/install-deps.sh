@@ -18,6 +18,7 @@ test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
     clang libclang-rt-14-dev postgresql linuxcnc-uspace
     python3-scipy python3-statsmodels
+    octave octave-control
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then
     packages+=("${test_packages[@]}")
