@@ -1,6 +1,7 @@
 #include "ui/pages/page_factory.h"
 
 #include "ui/pages/calibration_page.h"
+#include "ui/pages/controller_page.h"
 #include "ui/pages/devices_page.h"
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
@@ -27,6 +28,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new ProcessPage(context, parent);
         case PageId::Devices:
             return new DevicesPage(context, parent);
+        case PageId::Controller:
+            return new ControllerPage(context, parent);
         default:
             return new PlannedPage(id, context, parent);
     }
