@@ -5,8 +5,8 @@
 
 #include "core/control/lqg_design.h"
 #include "core/control/margins.h"
+#include "core/run/tuning_preview.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
-#include "core/sim/statistics/tuning_preview.h"
 
 namespace {
 

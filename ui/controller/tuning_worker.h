@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "core/control/run_to_run_setup.h"
-#include "core/sim/statistics/tuning_preview.h"
+#include "core/run/tuning_preview.h"
 
 namespace tt::ui {
 

@@ -12,7 +12,7 @@
 #include <QTest>
 #include <chrono>
 
-#include "core/sim/statistics/tuning_preview.h"
+#include "core/run/tuning_preview.h"
 #include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"

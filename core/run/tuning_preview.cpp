@@ -1,4 +1,4 @@
-#include "core/sim/statistics/tuning_preview.h"
+#include "core/run/tuning_preview.h"
 
 #include <cmath>
 #include <deque>
