@@ -99,6 +99,7 @@ core::BoringScenario boringScenarioFromPreset(const QJsonObject& preset) {
     c.approachMm = cut.number(QStringLiteral("approach_mm"), c.approachMm, 0.0, 100.0);
     c.entryRampMm = cut.number(QStringLiteral("entry_ramp_mm"), c.entryRampMm, 0.0, 50.0);
     c.gaugeMarginMm = cut.number(QStringLiteral("gauge_margin_mm"), c.gaugeMarginMm, 0.0, c.boreLengthMm / 2.0 - 1.0);
+    c.boreToleranceMm = cut.number(QStringLiteral("bore_tolerance_mm"), c.boreToleranceMm, 0.0, 1.0);
 
     const JsonSection drive(preset, QStringLiteral("drive"));
     core::CrossFeedDriveConfig& d = sc.drive;

@@ -21,6 +21,7 @@ test_packages=(
     clang libclang-rt-14-dev postgresql linuxcnc-uspace poppler-utils
     python3-scipy python3-statsmodels
     file help2man lintian desktop-file-utils appstream
+    octave octave-control
 )
 if [[ "${1:-}" == "--with-test-tools" ]]; then
     packages+=("${test_packages[@]}")

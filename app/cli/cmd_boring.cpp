@@ -110,6 +110,13 @@ int runBoring(const QStringList& arguments) {
                      QStringLiteral("current|probe|none"), QStringLiteral("current"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed (overrides the preset's)."),
                      QStringLiteral("S"));
+    parser.addOption(QStringLiteral("dither-mm"),
+                     QStringLiteral("Dither amplitude A, mm, 0.005 .. 0.05 (overrides the preset's)."),
+                     QStringLiteral("A"));
+    parser.addOption(QStringLiteral("dither-period-s"),
+                     QStringLiteral("Dither period T (one forward and one reverse stroke), s, 0.2 .. 2 (overrides the "
+                                    "preset's)."),
+                     QStringLiteral("T"));
     parser.addOption(QStringLiteral("trace"), QStringLiteral("Write one CSV row per PLC cycle in the bore."),
                      QStringLiteral("FILE.csv"));
     parser.parse(arguments);
@@ -128,6 +135,10 @@ int runBoring(const QStringList& arguments) {
     }();
     if (parser.isSet(QStringLiteral("seed")))
         scenario.seed = static_cast<unsigned long long>(parser.integer(QStringLiteral("seed"), 0, 9007199254740991LL));
+    if (parser.isSet(QStringLiteral("dither-mm")))
+        scenario.dither.amplitudeMm = parser.number(QStringLiteral("dither-mm"), 0.005, 0.05);
+    if (parser.isSet(QStringLiteral("dither-period-s")))
+        scenario.dither.periodS = parser.number(QStringLiteral("dither-period-s"), 0.2, 2.0);
     const core::BoringResult result = core::runBoring(scenario, method);
     if (parser.isSet(QStringLiteral("trace"))) writeTrace(parser.required(QStringLiteral("trace")), result);
     if (parser.json())

@@ -8,6 +8,7 @@
 #include "config/json_eigen.h"
 #include "config/plant_config.h"
 #include "core/control/lqg_design.h"
+#include "core/control/margins.h"
 #include "core/control/run_to_run_plant.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
 
@@ -17,11 +18,67 @@ namespace {
 
 const QString kDefaultPreset = QStringLiteral("paper-2012");
 
+QJsonValue optionalJson(const std::optional<double>& v) {
+    return v ? QJsonValue(*v) : QJsonValue(QJsonValue::Null);
+}
+
+/// Per-channel robustness figures (null: no such crossing, the loop tolerates any change of that kind).
+QJsonObject marginsJson(const core::LoopMargins& m) {
+    QJsonArray gain, gainLower, phase, delay, extra, disk, diskGain, diskPhase, peak;
+    for (const core::ChannelMargins& c : m.channels) {
+        gain.append(optionalJson(c.gain));
+        gainLower.append(optionalJson(c.gainLower));
+        phase.append(optionalJson(c.phaseDeg));
+        delay.append(optionalJson(c.delayParts));
+        extra.append(c.extraPartsTolerated);
+        disk.append(c.disk);
+        diskGain.append(c.diskGainUpper > 0.0 ? QJsonValue(c.diskGainUpper) : QJsonValue(QJsonValue::Null));
+        diskPhase.append(c.diskPhaseDeg);
+        peak.append(c.sensitivityPeak);
+    }
+    return QJsonObject{{QStringLiteral("gain"), gain},
+                       {QStringLiteral("gain_lower"), gainLower},
+                       {QStringLiteral("phase_deg"), phase},
+                       {QStringLiteral("delay_parts"), delay},
+                       {QStringLiteral("extra_parts_tolerated"), extra},
+                       {QStringLiteral("disk"), disk},
+                       {QStringLiteral("disk_gain"), diskGain},
+                       {QStringLiteral("disk_phase_deg"), diskPhase},
+                       {QStringLiteral("sensitivity_peak"), peak},
+                       {QStringLiteral("closed_loop_stable"), m.closedLoopStable}};
+}
+
+/// Stable English warnings: `delay_margin_below_one_part` per point, `closed_loop_unstable`.
+QJsonArray warningsJson(const core::LoopMargins& m) {
+    QJsonArray out;
+    if (!m.closedLoopStable)
+        out.append(QJsonObject{{QStringLiteral("kind"), QStringLiteral("closed_loop_unstable")},
+                               {QStringLiteral("message"), QStringLiteral("the designed loop is unstable")}});
+    for (std::size_t i = 0; i < m.channels.size(); ++i) {
+        const core::ChannelMargins& c = m.channels[i];
+        const bool continuousShort = c.delayParts && *c.delayParts < 1.0;
+        if (!m.closedLoopStable || (!continuousShort && c.extraPartsTolerated >= 1)) continue;
+        out.append(QJsonObject{
+            {QStringLiteral("kind"), QStringLiteral("delay_margin_below_one_part")},
+            {QStringLiteral("point"), static_cast<int>(i)},
+            {QStringLiteral("delay_parts"), optionalJson(c.delayParts)},
+            {QStringLiteral("extra_parts_tolerated"), c.extraPartsTolerated},
+            {QStringLiteral("message"),
+             QStringLiteral("point %1: a plant one part slower than the model destabilises the loop (delay margin "
+                            "%2 parts, %3 whole extra parts tolerated)")
+                 .arg(i + 1)
+                 .arg(c.delayParts ? QString::number(*c.delayParts, 'f', 2) : QStringLiteral("unbounded"))
+                 .arg(c.extraPartsTolerated)}});
+    }
+    return out;
+}
+
 QJsonObject toJson(const core::RunToRunPlant& plant, const core::LqgWeights& w, const core::LqgDesign& d) {
     QJsonArray points;
     for (double x : plant.xMm)
         points.append(QJsonObject{{QStringLiteral("x_mm"), x}});
     using config::matrixToJson;
+    const core::LoopMargins margins = core::lqgMargins(plant, d);
     return QJsonObject{
         {QStringLiteral("delay"), plant.delay},
         {QStringLiteral("points"), points},
@@ -37,11 +94,43 @@ QJsonObject toJson(const core::RunToRunPlant& plant, const core::LqgWeights& w, 
         {QStringLiteral("lq"), QJsonObject{{QStringLiteral("K"), matrixToJson(d.K)}}},
         {QStringLiteral("kalman"),
          QJsonObject{{QStringLiteral("L"), matrixToJson(d.L)}, {QStringLiteral("P"), matrixToJson(d.P)}}},
+        {QStringLiteral("margins"), marginsJson(margins)},
+        {QStringLiteral("warnings"), warningsJson(margins)},
     };
 }
 
 QString g(double v, int precision = 4) {
     return QString::number(v, 'g', precision);
+}
+
+QString optionalText(const std::optional<double>& v, int precision = 3) {
+    return v ? g(*v, precision) : QStringLiteral("none");
+}
+
+void printMargins(const core::LoopMargins& m, const core::RunToRunPlant& plant) {
+    printLine(QStringLiteral("Robustness, loop broken at one point (the others closed):%1")
+                  .arg(m.closedLoopStable ? QString() : QStringLiteral(" THE NOMINAL LOOP IS UNSTABLE")));
+    printLine(QStringLiteral("%1 %2 %3 %4 %5 %6 %7")
+                  .arg(QStringLiteral("x, mm"), 8)
+                  .arg(QStringLiteral("gain"), 7)
+                  .arg(QStringLiteral("phase, °"), 9)
+                  .arg(QStringLiteral("delay, parts"), 13)
+                  .arg(QStringLiteral("+parts ok"), 10)
+                  .arg(QStringLiteral("disk α"), 7)
+                  .arg(QStringLiteral("max|S|"), 7));
+    for (std::size_t i = 0; i < m.channels.size(); ++i) {
+        const core::ChannelMargins& c = m.channels[i];
+        const bool flagged = (c.delayParts && *c.delayParts < 1.0) || c.extraPartsTolerated < 1;
+        printLine(QStringLiteral("%1 %2 %3 %4 %5 %6 %7%8")
+                      .arg(plant.xMm[i], 8, 'f', 1)
+                      .arg(optionalText(c.gain), 7)
+                      .arg(optionalText(c.phaseDeg), 9)
+                      .arg(optionalText(c.delayParts), 13)
+                      .arg(c.extraPartsTolerated, 10)
+                      .arg(g(c.disk, 3), 7)
+                      .arg(g(c.sensitivityPeak, 3), 7)
+                      .arg(flagged ? QStringLiteral("  WARNING: one extra part of delay destabilises") : QString()));
+    }
 }
 
 void printText(const QString& preset, const core::RunToRunPlant& plant, const core::LqgWeights& w,
@@ -76,6 +165,8 @@ void printText(const QString& preset, const core::RunToRunPlant& plant, const co
                       .arg(v.available ? g(v.closedMm2(i)) : QStringLiteral("n/a"), 13)
                       .arg(v.available ? g(v.kEff(i), 3) : QStringLiteral("n/a"), 7)
                       .arg(QString::fromStdString(plant.disturbances[static_cast<std::size_t>(i)].describe())));
+    printLine(QString());
+    printMargins(core::lqgMargins(plant, d), plant);
     printLine(QString());
     printLine(QStringLiteral("u(k) = -K x(k|k); x(k|k) = x(k|k-1) + L (y(k) - C x(k|k-1)). Matrices: --json."));
 }

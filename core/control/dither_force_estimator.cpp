@@ -72,8 +72,6 @@ void DitherForceEstimator::reset() {
     m_lastUsableStrokeS.reset();
     m_lastProblem = DitherRefusal::None;
     m_firstSampleS.reset();
-    m_previousSampleS.reset();
-    m_offsetTravelMm = 0.0;
     m_state = DitherUpdate{};
     m_state.refusal = DitherRefusal::WaitingForStrokes;
     m_state.reason = "waiting for the first dither strokes";
@@ -102,15 +100,15 @@ void DitherForceEstimator::refuse(DitherRefusal refusal, const std::string& reas
     m_state.reason = reason;
 }
 
-DitherUpdate DitherForceEstimator::update(const DriveSample& raw, double offsetVelocityMmPerS) {
+DitherUpdate DitherForceEstimator::update(const DriveSample& sample, double offsetVelocityMmPerS) {
     m_state.newEstimate = false;
-    if (!finite(raw) || !std::isfinite(offsetVelocityMmPerS)) return m_state;  // a corrupt reading is never used
-    if (m_previousSampleS && raw.timeS > *m_previousSampleS)
-        m_offsetTravelMm += offsetVelocityMmPerS * (raw.timeS - *m_previousSampleS);
-    m_previousSampleS = raw.timeS;
-    DriveSample sample = raw;
-    sample.velocityMmPerS -= offsetVelocityMmPerS;
-    sample.positionMm -= m_offsetTravelMm;
+    if (!finite(sample) || !std::isfinite(offsetVelocityMmPerS)) return m_state;  // a corrupt reading is never used
+    // Friction acts on the slide's absolute velocity: direction and strokes are judged on the measured
+    // velocity and position as they are (while the offset moves faster than the dither the slide does not
+    // reverse and no stroke pair completes). The dither's own speed, the slide's minus the offset's, picks
+    // the constant-velocity part of a stroke and compares forward with reverse (a taper's feed shows there,
+    // the offset's motion must not).
+    const double ditherSpeed = std::abs(sample.velocityMmPerS - offsetVelocityMmPerS);
     if (m_segment != SegmentKind::Cylinder) {
         refuse(DitherRefusal::NotCylindrical,
                std::string("the segment is a ") + (m_segment == SegmentKind::Taper ? "taper" : "contour") +
@@ -125,6 +123,7 @@ DitherUpdate DitherForceEstimator::update(const DriveSample& raw, double offsetV
 
     if (direction != 0 && direction == m_stroke.direction) {
         m_stroke.samples.push_back(sample);
+        m_stroke.ditherSpeeds.push_back(ditherSpeed);
         const double duration = sample.timeS - m_stroke.samples.front().timeS;
         if (duration > m_config.maxStrokeS) {
             m_stroke.tooLong = true;
@@ -134,11 +133,15 @@ DitherUpdate DitherForceEstimator::update(const DriveSample& raw, double offsetV
             m_forward.clear();
             m_reverse.clear();
             m_stroke.samples.erase(m_stroke.samples.begin());  // keep the buffer bounded
+            m_stroke.ditherSpeeds.erase(m_stroke.ditherSpeeds.begin());
         }
     } else {
         if (m_stroke.direction != 0) finishStroke();
-        m_stroke = Stroke{direction, {}, false};
-        if (direction != 0) m_stroke.samples.push_back(sample);
+        m_stroke = Stroke{direction, {}, {}, false};
+        if (direction != 0) {
+            m_stroke.samples.push_back(sample);
+            m_stroke.ditherSpeeds.push_back(ditherSpeed);
+        }
     }
 
     // Strokes that cannot be used (too short, no constant-velocity window) are tolerated for a
@@ -172,20 +175,20 @@ void DitherForceEstimator::finishStroke() {
                               fmt(m_config.minStrokeMm * 1000.0, 1) + " µm needed): raise the dither amplitude";
         return;
     }
-    std::vector<double> speeds;
-    for (const DriveSample& d : s)
-        speeds.push_back(std::abs(d.velocityMmPerS));
+    std::vector<double> speeds = m_stroke.ditherSpeeds;
     std::sort(speeds.begin(), speeds.end());
-    // Plateau speed: the median of the faster half (acceleration samples are the slow ones).
-    const std::size_t half = speeds.size() / 2;
-    const double plateau = speeds[half + (speeds.size() - half) / 2];
+    // Plateau speed: the (upper) median of the stroke's speeds. Most of a trapezoidal stroke is at constant
+    // velocity; the acceleration samples are slower and an overshoot after a reversal faster, so neither
+    // end of the sorted speeds is the plateau.
+    const double plateau = speeds[speeds.size() / 2];
     double currentSum = 0.0;
     double speedSum = 0.0;
     int count = 0;
-    for (const DriveSample& d : s) {
-        if (std::abs(std::abs(d.velocityMmPerS) - plateau) <= m_config.plateauTolerance * plateau) {
-            currentSum += d.currentA;
-            speedSum += std::abs(d.velocityMmPerS);
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        const double speed = m_stroke.ditherSpeeds[k];
+        if (std::abs(speed - plateau) <= m_config.plateauTolerance * plateau) {
+            currentSum += s[k].currentA;
+            speedSum += speed;
             ++count;
         }
     }

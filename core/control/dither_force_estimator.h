@@ -79,9 +79,11 @@ public:
     /// Sets the kind of the segment being machined; anything but a cylinder refuses at once.
     void setSegment(SegmentKind kind);
     /// Feeds one drive sample (in time order); returns the state after it. A sample with a
-    /// non-finite value is ignored. `offsetVelocityMmPerS` is the speed at which the PLC was
-    /// moving the dynamic offset while the sample was taken: it is taken off the slide velocity
-    /// and position so the dither strokes are judged on their own.
+    /// non-finite value is ignored. Direction and strokes are judged on the slide's absolute velocity
+    /// and position, on which friction acts (issue 13); `offsetVelocityMmPerS`, the speed at which the
+    /// PLC was moving the dynamic offset, is taken off only to find the dither's constant-velocity part
+    /// and to compare forward with reverse speeds. A dither too slow for the offset is refused before
+    /// the run (core/run/dither_check.h).
     DitherUpdate update(const DriveSample& sample, double offsetVelocityMmPerS = 0.0);
     /// The state after the last update.
     const DitherUpdate& state() const { return m_state; }
@@ -94,7 +96,8 @@ private:
     struct Stroke {
         int direction = 0;
         std::vector<DriveSample> samples;
-        bool tooLong = false;  ///< lasted longer than maxStrokeS: refused, never evaluated
+        std::vector<double> ditherSpeeds;  ///< per sample: |slide velocity - offset velocity|, mm/s
+        bool tooLong = false;              ///< lasted longer than maxStrokeS: refused, never evaluated
     };
     struct StrokeMean {
         double endS = 0.0;
@@ -117,8 +120,6 @@ private:
     DitherRefusal m_lastProblem = DitherRefusal::None;  ///< why the last unusable stroke was not used
     std::string m_lastProblemReason;
     std::optional<double> m_firstSampleS;
-    std::optional<double> m_previousSampleS;
-    double m_offsetTravelMm = 0.0;  ///< integral of the offset velocity since the start
     DitherUpdate m_state;
 };
 

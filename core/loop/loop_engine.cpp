@@ -148,6 +148,36 @@ void LoopEngine::stop() {
     setState(LoopState::Idle, notice(NoticeKind::Stopped));
 }
 
+void LoopEngine::replaceController(std::unique_ptr<RunToRunController> next, int transferParts) {
+    if (!next) throw std::invalid_argument("the loop needs a controller");
+    if (next->pointCount() != m_controller->pointCount())
+        throw std::invalid_argument("the new controller has " + std::to_string(next->pointCount()) +
+                                    " control points, the loop " + std::to_string(m_controller->pointCount()));
+    if (transferParts < 1 || transferParts > 1000)
+        throw std::invalid_argument("the controller transfer must last 1 .. 1000 parts, not " +
+                                    std::to_string(transferParts));
+    m_nextController = std::move(next);
+    m_transferParts = transferParts;
+}
+
+Eigen::VectorXd LoopEngine::correctionWithTransfer(std::int64_t part, const std::vector<double>& previous) {
+    if (m_nextController) {
+        // The new controller takes over at this part: its first correction is offset to the one applied last.
+        m_controller = std::move(m_nextController);
+        Eigen::VectorXd first = m_controller->nextCorrection(part);
+        m_transferOffsetMm =
+            Eigen::Map<const Eigen::VectorXd>(previous.data(), static_cast<Eigen::Index>(previous.size())) - first;
+        m_transferLeft = m_transferParts;
+        return first + m_transferOffsetMm;
+    }
+    Eigen::VectorXd u = m_controller->nextCorrection(part);
+    if (m_transferLeft > 0) {
+        --m_transferLeft;
+        u += m_transferOffsetMm * (static_cast<double>(m_transferLeft) / m_transferParts);
+    }
+    return u;
+}
+
 void LoopEngine::skipMeasurement() {
     if (m_awaiting.empty()) return;
     const std::int64_t part = m_awaiting.front();
@@ -416,7 +446,7 @@ void LoopEngine::startNextPart() {
     LimiterOutcome limited;
     PartCorrection correction;
     try {
-        computed = m_controller->nextCorrection(n);
+        computed = correctionWithTransfer(n, previous);
         limited = m_limiter.apply(computed);
         correction = partCorrectionFor(m_config, n, limited.appliedMm);
     } catch (const std::exception& e) {

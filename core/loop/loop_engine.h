@@ -107,7 +107,20 @@ public:
     /// The run-to-run controller the loop drives.
     const RunToRunController& controller() const { return *m_controller; }
 
+    /// Replaces the controller from the next part on (the commissioning engineer applied a new tuning),
+    /// bumplessly: the first correction after the switch is the one last applied, and the difference
+    /// between it and what the new controller asks for fades out linearly over `transferParts` parts, so
+    /// no part sees a jump. Throws std::invalid_argument for a null controller, another number of points
+    /// or transferParts outside 1 .. 1000. The fading offset is not part of a resume point: a run resumed
+    /// during a transfer continues with the new controller alone (the step limit still applies).
+    void replaceController(std::unique_ptr<RunToRunController> next, int transferParts = 10);
+    /// Parts of a controller transfer still to fade out (0: none in progress).
+    int transferPartsLeft() const { return m_transferLeft; }
+
 private:
+    /// The controller's correction for `part` plus the fading offset of a controller transfer (and the
+    /// switch itself when a new controller waits).
+    Eigen::VectorXd correctionWithTransfer(std::int64_t part, const std::vector<double>& previous);
     struct InProgress {
         std::int64_t partNumber = 0;
         double startedS = 0.0;
@@ -143,6 +156,10 @@ private:
     LoopConfig m_config;
     LoopPorts m_ports;
     std::unique_ptr<RunToRunController> m_controller;
+    std::unique_ptr<RunToRunController> m_nextController;  ///< takes over at the next part
+    int m_transferParts = 0;                               ///< length of the transfer asked for
+    int m_transferLeft = 0;                                ///< parts of the fading offset still to come
+    Eigen::VectorXd m_transferOffsetMm;                    ///< last applied - new controller's first, mm
     CorrectionLimiter m_limiter;
     LoopListener* m_listener = nullptr;
 

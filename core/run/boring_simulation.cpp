@@ -6,6 +6,7 @@
 
 #include "core/model/tool_stiffness.h"
 #include "core/run/boring_run.h"
+#include "core/run/dither_check.h"
 
 namespace tt::core {
 
@@ -59,6 +60,7 @@ BoringTracePoint tracePoint(const BoringState& s, const std::optional<Compensati
 }  // namespace
 
 BoringResult runBoring(const BoringScenario& scenario, BoringMethod method) {
+    if (method == BoringMethod::Current) requireResolvableDither(scenario);
     SimulatedBoringPass pass(scenario, method, false);
     BoringResult result;
     result.method = method;

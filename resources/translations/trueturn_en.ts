@@ -2401,6 +2401,153 @@ L/d %4</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::ControllerPage</name>
+    <message>
+        <source>Controller</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delay z, parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max correction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Max step per part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dead band (EWMA)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filter (z + b)/(z − a)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R1 (error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>R2 (correction)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_eff LQG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>k_eff EWMA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gain marg.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delay, parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disk α</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step at point 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part after the step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error / step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>|S| at point 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>frequency, rad per part</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>|S|</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The design is refused: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Re-synthesis %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warning: a plant one part slower than the model destabilises this design (delay margin under one part). Best EWMA weight %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The design tolerates one more part of delay. Best EWMA weight %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EWMA</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LQG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply the new controller tuning from the next part?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Warning: its delay margin is under one part: a plant one part slower than the model destabilises it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Apply tuning</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delay margin in parts (phase margin / crossover) / whole extra parts of delay the loop stays stable with</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::CornerMoveEditor</name>
     <message>
         <source>Corner between two moves</source>

@@ -2405,6 +2405,153 @@ L/d %4</translation>
     </message>
 </context>
 <context>
+    <name>tt::ui::ControllerPage</name>
+    <message>
+        <source>Controller</source>
+        <translation>Регулятор</translation>
+    </message>
+    <message>
+        <source>Delay z, parts</source>
+        <translation>Задержка z, дет.</translation>
+    </message>
+    <message>
+        <source>Max correction</source>
+        <translation>Макс. коррекция</translation>
+    </message>
+    <message>
+        <source>Max step per part</source>
+        <translation>Макс. шаг за деталь</translation>
+    </message>
+    <message>
+        <source>Dead band (EWMA)</source>
+        <translation>Зона нечувств. (EWMA)</translation>
+    </message>
+    <message>
+        <source>Filter (z + b)/(z − a)</source>
+        <translation>Фильтр (z + b)/(z − a)</translation>
+    </message>
+    <message>
+        <source>Point</source>
+        <translation>Точка</translation>
+    </message>
+    <message>
+        <source>R1 (error)</source>
+        <translation>R1 (ошибка)</translation>
+    </message>
+    <message>
+        <source>R2 (correction)</source>
+        <translation>R2 (коррекция)</translation>
+    </message>
+    <message>
+        <source>k_eff LQG</source>
+        <translation>k_eff LQG</translation>
+    </message>
+    <message>
+        <source>k_eff EWMA</source>
+        <translation>k_eff EWMA</translation>
+    </message>
+    <message>
+        <source>Gain marg.</source>
+        <translation>Запас усил.</translation>
+    </message>
+    <message>
+        <source>Delay, parts</source>
+        <translation>Запас задержки</translation>
+    </message>
+    <message>
+        <source>Disk α</source>
+        <translation>Диск α</translation>
+    </message>
+    <message>
+        <source>%1: %2 mm</source>
+        <translation>%1: %2 мм</translation>
+    </message>
+    <message>
+        <source>Apply…</source>
+        <translation>Применить…</translation>
+    </message>
+    <message>
+        <source>Revert</source>
+        <translation>Вернуть</translation>
+    </message>
+    <message>
+        <source>Step at point 1</source>
+        <translation>Скачок в точке 1</translation>
+    </message>
+    <message>
+        <source>part after the step</source>
+        <translation>деталь после скачка</translation>
+    </message>
+    <message>
+        <source>error / step</source>
+        <translation>ошибка / скачок</translation>
+    </message>
+    <message>
+        <source>|S| at point 1</source>
+        <translation>|S| в точке 1</translation>
+    </message>
+    <message>
+        <source>frequency, rad per part</source>
+        <translation>частота, рад на деталь</translation>
+    </message>
+    <message>
+        <source>|S|</source>
+        <translation>|S|</translation>
+    </message>
+    <message>
+        <source>The design is refused: %1</source>
+        <translation>Синтез отклонён: %1</translation>
+    </message>
+    <message>
+        <source>Re-synthesis %1 ms</source>
+        <translation>Пересчёт %1 мс</translation>
+    </message>
+    <message>
+        <source>Warning: a plant one part slower than the model destabilises this design (delay margin under one part). Best EWMA weight %1.</source>
+        <translation>Внимание: объект с задержкой на одну деталь больше модели делает этот регулятор неустойчивым (запас по задержке меньше одной детали). Лучший вес EWMA %1.</translation>
+    </message>
+    <message>
+        <source>The design tolerates one more part of delay. Best EWMA weight %1.</source>
+        <translation>Регулятор выдерживает задержку на одну деталь больше. Лучший вес EWMA %1.</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>без рег.</translation>
+    </message>
+    <message>
+        <source>EWMA</source>
+        <translation>EWMA</translation>
+    </message>
+    <message>
+        <source>LQG</source>
+        <translation>LQG</translation>
+    </message>
+    <message>
+        <source>Apply the new controller tuning from the next part?</source>
+        <translation>Применить новую настройку регулятора со следующей детали?</translation>
+    </message>
+    <message>
+        <source>Warning: its delay margin is under one part: a plant one part slower than the model destabilises it.</source>
+        <translation>Внимание: запас по задержке меньше одной детали: объект с задержкой на одну деталь больше модели сделает контур неустойчивым.</translation>
+    </message>
+    <message>
+        <source>Apply tuning</source>
+        <translation>Применить настройку</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> мм</translation>
+    </message>
+    <message>
+        <source> mm²</source>
+        <translation> мм²</translation>
+    </message>
+    <message>
+        <source>Delay margin in parts (phase margin / crossover) / whole extra parts of delay the loop stays stable with</source>
+        <translation>Запас по задержке в деталях (запас по фазе / частота среза) / сколько лишних деталей задержки контур выдерживает</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::CornerMoveEditor</name>
     <message>
         <source>Corner between two moves</source>

@@ -1,6 +1,7 @@
 #include "ui/pages/page_factory.h"
 
 #include "ui/pages/calibration_page.h"
+#include "ui/pages/controller_page.h"
 #include "ui/pages/devices_page.h"
 #include "ui/pages/measurements_page.h"
 #include "ui/pages/planned_page.h"
@@ -30,6 +31,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new DevicesPage(context, parent);
         case PageId::Reports:
             return new ReportsPage(context, parent);
+        case PageId::Controller:
+            return new ControllerPage(context, parent);
         default:
             return new PlannedPage(id, context, parent);
     }

@@ -54,6 +54,7 @@ void validateScenario(const BoringScenario& s) {
     requireWithin(c.approachMm, 0.0, 100.0, "approach (mm)");
     requireWithin(c.entryRampMm, 0.0, 50.0, "entry ramp (mm)");
     requireWithin(c.gaugeMarginMm, 0.0, c.boreLengthMm / 2.0 - 1.0, "gauge margin (mm)");
+    requireWithin(c.boreToleranceMm, 0.0, 1.0, "bore tolerance (mm)");
     requireWithin(s.plcCycleS, 0.01, 0.1, "PLC cycle (s)");
     requireWithin(s.simStepS, 1.0e-5, 1.0e-3, "simulation step (s)");
     if (s.simStepS > s.plcCycleS / 10.0) throw std::invalid_argument("the simulation step must be ≤ PLC cycle / 10");

@@ -34,6 +34,7 @@ struct BoringCutConfig {
     double approachMm = 3.0;          ///< air travel before the tool meets the face, mm
     double entryRampMm = 1.0;         ///< the nose enters the stock over this length, mm
     double gaugeMarginMm = 5.0;       ///< the bore is gauged from this far inside each end, mm
+    double boreToleranceMm = 0.0;     ///< diameter tolerance of the finished bore, mm (0: not given)
 };
 
 /// How the simulated mandrel is calibrated before a probe run (a jack loads the bar tip; a dial

@@ -44,11 +44,30 @@ double at(const QJsonValue& m, int r, int c) {
 
 class RunToRunCommands : public tt::test::CliTest {};
 
+TEST_F(RunToRunCommands, LqgJsonReportsMarginsPerPointAndFlagsTheShortDelayMargin) {
+    // Issue 13 item 3: margins {gain, phase_deg, delay_parts, disk} per point. Values at z = 1 from Octave's
+    // control package (tests/crosscheck/lqg_margins.m): gain margin 1.651585, delay margin 0.7528 parts,
+    // disk alpha 0.491468; tolerance 1e-4. A delay margin under one part gives a warning per point.
+    const CliResult r = runTrueturn({"lqg", "--delay", "1", "--json"});
+    ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+    const QJsonObject m = r.json()["margins"].toObject();
+    for (const char* key : {"gain", "phase_deg", "delay_parts", "disk", "extra_parts_tolerated", "sensitivity_peak"})
+        ASSERT_EQ(m[QString::fromLatin1(key)].toArray().size(), 5) << key;
+    EXPECT_TRUE(m["closed_loop_stable"].toBool());
+    EXPECT_NEAR(m["gain"].toArray()[2].toDouble(), 1.651585, 1e-4);
+    EXPECT_NEAR(m["delay_parts"].toArray()[2].toDouble(), 0.7528, 1e-4);
+    EXPECT_NEAR(m["disk"].toArray()[2].toDouble(), 0.491468, 1e-4);
+    const QJsonArray warnings = r.json()["warnings"].toArray();
+    ASSERT_EQ(warnings.size(), 5);
+    EXPECT_EQ(warnings[0].toObject()["kind"].toString(), "delay_margin_below_one_part");
+    EXPECT_EQ(warnings[4].toObject()["point"].toInt(), 4);
+}
+
 TEST_F(RunToRunCommands, LqgJsonHasExactlyTheIssuesFields) {
     const CliResult r = runTrueturn({"lqg", "--preset", "paper-2012", "--delay", "4", "--json"});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     const QJsonObject j = r.json();
-    EXPECT_EQ(keysOf(j), set({"delay", "points", "plant", "noise", "weights", "lq", "kalman"}));
+    EXPECT_EQ(keysOf(j), set({"delay", "points", "plant", "noise", "weights", "lq", "kalman", "margins", "warnings"}));
     EXPECT_EQ(keysOf(j["plant"].toObject()), set({"A", "B", "C", "D", "G"}));
     EXPECT_EQ(keysOf(j["noise"].toObject()), set({"W", "V"}));
     EXPECT_EQ(keysOf(j["weights"].toObject()), set({"R1", "R2"}));

@@ -418,3 +418,56 @@ TEST(LoopEngine, TheLoopPausesOnAScrapPartWhenAskedAndContinuesWhenTheOperatorSa
 
 }  // namespace
 }  // namespace tt::core
+
+namespace tt::core {
+namespace {
+
+/// Steps the rig until part `part` has been started (its correction applied).
+void runToPart(Rig& rig, std::int64_t part) {
+    for (int i = 0; i < 10000 && rig.engine->nextPartNumber() <= part && !rig.engine->complete(); ++i)
+        rig.runUntil(rig.clock.nowS() + 30.0);
+}
+
+TEST(LoopEngine, ANewControllerTakesOverAtTheNextPartWithoutAJump) {
+    // Issue 13 item 6: Apply on the Controller page takes effect at the next part without a jump in the
+    // correction. The running integrator (gain 0.5) has taken the barrel out (about -0.05 mm at the middle
+    // point); a fresh controller (gain 0.2) would start from zero, a jump of that size. With the transfer
+    // the first part after the switch gets exactly the correction applied last, the offset fades over 10
+    // parts (each part moves by at most |offset| / 10 plus the controller's own step), and the loop still
+    // holds the shaft: the last 10 parts within 6 um at every point, as before the switch.
+    Rig rig(2, 60);
+    rig.engine->start(rig.run());
+    runToPart(rig, 20);
+    ASSERT_EQ(rig.engine->nextPartNumber(), 21);
+    const std::vector<double> before = rig.engine->lastAppliedMm();
+    ASSERT_LT(before[2], -0.03);  // the barrel's correction is there to jump from
+    rig.engine->replaceController(std::make_unique<test::IntegratorController>(5, 0.2), 10);
+    runToPart(rig, 21);
+    const std::vector<double> first = rig.engine->lastAppliedMm();
+    for (std::size_t i = 0; i < 5; ++i)
+        EXPECT_NEAR(first[i], before[i], 1e-12) << "point " << i;
+    EXPECT_EQ(rig.engine->controller().name(), "test integrator");
+    EXPECT_EQ(rig.engine->transferPartsLeft(), 10);
+    std::vector<double> last = first;
+    for (std::int64_t part = 22; part <= 31; ++part) {
+        runToPart(rig, part);
+        const std::vector<double>& now = rig.engine->lastAppliedMm();
+        for (std::size_t i = 0; i < 5; ++i)
+            EXPECT_LT(std::abs(now[i] - last[i]), 0.1 * std::abs(before[i]) + 0.005)
+                << "part " << part << " point " << i;
+        last = now;
+    }
+    EXPECT_EQ(rig.engine->transferPartsLeft(), 0);
+    ASSERT_TRUE(runSimulation(*rig.engine, rig.clock, *rig.station).complete);
+    const auto parts = rig.history.parts(1);
+    ASSERT_EQ(parts.size(), 60u);
+    for (std::size_t k = 50; k < 60; ++k)
+        for (const auto& p : parts[k].measurement->points)
+            EXPECT_NEAR(*p.measuredMm - 27.0, 0.0, 0.006);
+    EXPECT_THROW(rig.engine->replaceController(std::make_unique<test::IntegratorController>(4, 0.2)),
+                 std::invalid_argument);
+    EXPECT_THROW(rig.engine->replaceController(nullptr), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tt::core

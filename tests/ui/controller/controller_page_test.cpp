@@ -1,0 +1,130 @@
+// The Controller page offscreen (issue 13 item 6): changing a weight re-synthesises the LQG design off
+// the GUI thread and the page shows the engine's predictions for the new setup (compared with
+// core::computeTuningPreview on the same setup); Apply asks first, records who changed what and keeps the
+// applied setup; a No leaves everything as it was. Screenshots in English and Russian in the 1280 x 800
+// main window: screenshots/controller_page_en.png, controller_page_ru.png.
+#include <gtest/gtest.h>
+
+#include <QDoubleSpinBox>
+#include <QPushButton>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTest>
+#include <chrono>
+
+#include "core/run/tuning_preview.h"
+#include "devices/api/device_manager.h"
+#include "screenshots.h"
+#include "scripted_prompt.h"
+#include "ui/app_state.h"
+#include "ui/controller/tuning_worker.h"
+#include "ui/controller/weight_row.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/pages/controller_page.h"
+
+namespace tt::ui {
+namespace {
+
+class ControllerPageTest : public ::testing::Test {
+protected:
+    void TearDown() override { language.apply(QStringLiteral("en")); }
+
+    /// Waits until the page shows the result of the worker's newest request.
+    static bool waitForNewest(ControllerPage& page) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (std::chrono::steady_clock::now() < deadline) {
+            QTest::qWait(10);
+            const TuningResult* shown = page.shownResult();
+            if (shown && shown->generation == page.worker().latestGeneration()) return true;
+        }
+        return false;
+    }
+
+    QTemporaryDir dir;
+    test::ScriptedPrompt prompt;
+    AppState state;
+    LanguageSwitcher language;
+    devices::DeviceManager devices;
+    AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
+};
+
+TEST_F(ControllerPageTest, ChangingAWeightUpdatesThePredictionsToTheEnginesValues) {
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    window.showPage(PageId::Controller);
+    auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+    ASSERT_NE(page, nullptr);
+    state.setOperatorName(QStringLiteral("Anna Test"));
+    ASSERT_TRUE(waitForNewest(*page));
+    // paper-2012 at its preset delay: the LQG k_eff the page shows is the engine's for the preset.
+    const core::TuningPreview before = core::computeTuningPreview(page->editedSetup());
+    EXPECT_EQ(page->shownLqgKEff(0), QString::number(before.lqgKEff(0), 'f', 2));
+
+    // Point 1: R2 0.01 -> 1 (a hundred times more expensive corrections) by typing into the field, point 2
+    // by dragging the slider to its far left.
+    QDoubleSpinBox* r2 = page->r2(0).field();
+    r2->setValue(1.0);
+    page->r1(1).slider()->setValue(0);
+    ASSERT_TRUE(waitForNewest(*page));
+    const core::RunToRunSetup edited = page->editedSetup();
+    EXPECT_DOUBLE_EQ(edited.weights.R2(0, 0), 1.0);
+    EXPECT_NEAR(edited.weights.R1(1, 1), 0.01, 1e-12);  // the slider's left end
+    const core::TuningPreview after = core::computeTuningPreview(edited);
+    // Expensive corrections control less: k_eff of point 1 falls (values vs the engine, 2 decimals shown).
+    EXPECT_LT(after.lqgKEff(0), before.lqgKEff(0));
+    for (int i = 0; i < 5; ++i)
+        EXPECT_EQ(page->shownLqgKEff(i), QString::number(after.lqgKEff(i), 'f', 2)) << i;
+    const core::TuningPreview& shown = *page->shownResult()->preview;
+    EXPECT_DOUBLE_EQ(*shown.lqgMargins.channels[0].gain, *after.lqgMargins.channels[0].gain);
+    EXPECT_EQ(shown.stepLqg, after.stepLqg);
+    EXPECT_LE(window.width(), 1280);
+    EXPECT_LE(window.height(), 800);
+    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_page_en")));
+
+    // Apply: No leaves the applied setup alone; Yes records who changed what.
+    const double appliedR2 = page->appliedSetup().weights.R2(0, 0);
+    prompt.answers.push_back(Prompt::Answer::No);
+    QTest::mouseClick(window.findChild<QPushButton*>(QStringLiteral("applyTuning")), Qt::LeftButton);
+    EXPECT_DOUBLE_EQ(page->appliedSetup().weights.R2(0, 0), appliedR2);
+    EXPECT_TRUE(page->lastRecord().isEmpty());
+    prompt.answers.push_back(Prompt::Answer::Yes);
+    QTest::mouseClick(window.findChild<QPushButton*>(QStringLiteral("applyTuning")), Qt::LeftButton);
+    EXPECT_DOUBLE_EQ(page->appliedSetup().weights.R2(0, 0), 1.0);
+    EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("Anna Test"))) << qPrintable(page->lastRecord());
+    EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("point 1 R2 0.01 -> 1"))) << qPrintable(page->lastRecord());
+    EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("point 2 R1 1 -> 0.01"))) << qPrintable(page->lastRecord());
+}
+
+TEST_F(ControllerPageTest, DragsCoalesceAndTheNewestAlwaysArrives) {
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    window.showPage(PageId::Controller);
+    auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+    ASSERT_NE(page, nullptr);
+    // A fast drag: 60 positions without giving the event loop a chance; the worker computes at most the
+    // one running and the newest, and the page ends on the newest.
+    for (int p = 0; p <= 60; ++p)
+        page->r2(2).slider()->setValue(p);
+    ASSERT_TRUE(waitForNewest(*page));
+    EXPECT_DOUBLE_EQ(page->shownResult()->setup.weights.R2(2, 2), page->r2(2).value());
+}
+
+TEST_F(ControllerPageTest, RussianScreenshot) {
+    ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    window.showPage(PageId::Controller);
+    auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+    ASSERT_NE(page, nullptr);
+    ASSERT_TRUE(waitForNewest(*page));
+    EXPECT_LE(window.width(), 1280);
+    EXPECT_LE(window.height(), 800);
+    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_page_ru")));
+}
+
+}  // namespace
+}  // namespace tt::ui

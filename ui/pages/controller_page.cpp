@@ -1,0 +1,364 @@
+#include "ui/pages/controller_page.h"
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "config/plant_config.h"
+#include "core/model/disturbance_model.h"
+#include "ui/controller/controller_apply.h"
+#include "ui/controller/tuning_worker.h"
+#include "ui/controller/weight_row.h"
+#include "ui/plot/chart.h"
+#include "ui/prompt.h"
+
+namespace tt::ui {
+
+namespace {
+
+const QString kPreset = QStringLiteral("paper-2012");
+const QColor kLqgColour(0x1f, 0x6f, 0xb4);
+const QColor kEwmaColour(0xd2, 0x6a, 0x1e);
+const QColor kOpenColour(0x80, 0x80, 0x80);
+
+QDoubleSpinBox* numberField(double lo, double hi, int decimals, double step, const QString& suffix) {
+    auto* f = new QDoubleSpinBox;
+    f->setRange(lo, hi);
+    f->setDecimals(decimals);
+    f->setSingleStep(step);
+    f->setSuffix(suffix);
+    f->setKeyboardTracking(false);
+    f->setMaximumWidth(150);
+    return f;
+}
+
+QLabel* valueLabel() {
+    auto* l = new QLabel;
+    l->setMinimumWidth(48);
+    l->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    l->setStyleSheet(QStringLiteral("font-weight: bold; color: #1f2a36;"));
+    return l;
+}
+
+QString fixed(double v, int decimals) {
+    return std::isfinite(v) ? QString::number(v, 'f', decimals) : QStringLiteral("—");
+}
+
+/// The shaping filter the fields describe: W(z) = (z + b)/(z - a) scaled to variance sigma^2 (paper 000).
+core::DisturbanceModel typedFilter(double pole, double zero, double varianceMm2) {
+    return core::DisturbanceModel({core::DisturbanceComponent::shapingFilterWithVariance(
+        core::ShapingFilter::fromRoots({1.0, zero}, {{pole, 0.0}}), varianceMm2)});
+}
+
+}  // namespace
+
+ControllerPage::ControllerPage(AppContext& context, QWidget* parent)
+    : Page(PageId::Controller, context, parent), m_worker(std::make_unique<TuningWorker>()) {
+    m_applied = config::loadRunToRunSetup(kPreset);
+    auto* layout = new QHBoxLayout(this);
+    auto* left = new QVBoxLayout;
+    left->addWidget(buildSettings());
+    left->addWidget(buildPoints(), 1);
+    m_status = new QLabel;
+    m_status->setWordWrap(true);
+    left->addWidget(m_status);
+    auto* buttons = new QHBoxLayout;
+    m_timing = new QLabel;
+    m_timing->setStyleSheet(QStringLiteral("color: #56616d;"));
+    buttons->addWidget(m_timing, 1);
+    m_revert = new QPushButton;
+    m_apply = new QPushButton;
+    m_apply->setObjectName(QStringLiteral("applyTuning"));
+    buttons->addWidget(m_revert);
+    buttons->addWidget(m_apply);
+    left->addLayout(buttons);
+    layout->addLayout(left, 5);
+    layout->addWidget(buildCharts(), 3);
+
+    connect(m_worker.get(), &TuningWorker::finished, this, &ControllerPage::showResult);
+    connect(m_apply, &QPushButton::clicked, this, &ControllerPage::apply);
+    connect(m_revert, &QPushButton::clicked, this, &ControllerPage::revert);
+    loadSetup(m_applied);
+    retranslate();
+    requestPreview();
+}
+
+ControllerPage::~ControllerPage() = default;
+
+QWidget* ControllerPage::buildSettings() {
+    auto* box = new QGroupBox;
+    auto* grid = new QGridLayout(box);
+    m_settingsTitle = new QLabel;
+    m_settingsTitle->setStyleSheet(QStringLiteral("font-weight: bold;"));
+    m_delayLabel = new QLabel;
+    m_delay = new QSpinBox;
+    m_delay->setRange(1, core::kMaxDelay);
+    m_maxAbsLabel = new QLabel;
+    m_maxAbs = numberField(0.001, 5.0, 3, 0.01, QString());
+    m_maxStepLabel = new QLabel;
+    m_maxStep = numberField(0.001, 5.0, 3, 0.01, QString());
+    m_deadBandLabel = new QLabel;
+    m_deadBand = numberField(0.0, 0.5, 4, 0.001, QString());
+    m_filterLabel = new QLabel;
+    m_poleLabel = new QLabel(QStringLiteral("a"));
+    m_pole = numberField(-0.99, 0.999, 4, 0.005, QString());
+    m_zeroLabel = new QLabel(QStringLiteral("b"));
+    m_zero = numberField(-0.99, 0.99, 3, 0.01, QString());
+    m_varianceLabel = new QLabel(QStringLiteral("σ²"));
+    m_variance = numberField(1e-6, 1.0, 6, 0.0001, QString());
+    m_variance->setMaximumWidth(190);
+    grid->addWidget(m_delayLabel, 0, 0);
+    grid->addWidget(m_delay, 0, 1);
+    grid->addWidget(m_deadBandLabel, 0, 2);
+    grid->addWidget(m_deadBand, 0, 3);
+    grid->addWidget(m_maxAbsLabel, 1, 0);
+    grid->addWidget(m_maxAbs, 1, 1);
+    grid->addWidget(m_maxStepLabel, 1, 2);
+    grid->addWidget(m_maxStep, 1, 3);
+    grid->addWidget(m_filterLabel, 2, 0);
+    auto* filter = new QHBoxLayout;
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{m_poleLabel, m_pole, m_zeroLabel, m_zero, m_varianceLabel, m_variance})
+        filter->addWidget(w);
+    filter->addStretch(1);
+    grid->addLayout(filter, 2, 1, 1, 3);
+    // Row 3 is kept for integral action (on/off, its weight) and "identify from history": another part of
+    // the issue adds them.
+    for (QSpinBox* s : {m_delay})
+        connect(s, &QSpinBox::valueChanged, this, &ControllerPage::requestPreview);
+    for (QDoubleSpinBox* f : {m_maxAbs, m_maxStep, m_deadBand, m_pole, m_zero, m_variance})
+        connect(f, &QDoubleSpinBox::valueChanged, this, &ControllerPage::requestPreview);
+    return box;
+}
+
+QWidget* ControllerPage::buildPoints() {
+    auto* box = new QGroupBox;
+    auto* grid = new QGridLayout(box);
+    const int columns = 8;
+    for (int c = 0; c < columns; ++c) {
+        auto* h = new QLabel;
+        h->setStyleSheet(QStringLiteral("color: #56616d;"));
+        h->setWordWrap(true);
+        m_headers.push_back(h);
+    }
+    grid->addWidget(m_headers[0], 0, 0);
+    grid->addWidget(m_headers[1], 0, 1, 1, 2);
+    grid->addWidget(m_headers[2], 0, 3, 1, 2);
+    for (int c = 3; c < 8; ++c)
+        grid->addWidget(m_headers[static_cast<std::size_t>(c)], 0, c + 2);
+    const int points = static_cast<int>(m_applied.plant.points.size());
+    for (int i = 0; i < points; ++i) {
+        auto* name = new QLabel;
+        m_pointNames.push_back(name);
+        auto* r1 = new WeightEditor(0.01, 100.0, 3, this);
+        auto* r2 = new WeightEditor(1e-4, 10.0, 4, this);
+        m_r1.push_back(r1);
+        m_r2.push_back(r2);
+        connect(r1, &WeightEditor::changed, this, &ControllerPage::requestPreview);
+        connect(r2, &WeightEditor::changed, this, &ControllerPage::requestPreview);
+        const int row = i + 1;
+        grid->addWidget(name, row, 0);
+        grid->addWidget(r1->slider(), row, 1);
+        grid->addWidget(r1->field(), row, 2);
+        grid->addWidget(r2->slider(), row, 3);
+        grid->addWidget(r2->field(), row, 4);
+        for (auto* list : {&m_kEffLqg, &m_kEffEwma, &m_gainMargin, &m_delayMargin, &m_disk})
+            list->push_back(valueLabel());
+        grid->addWidget(m_kEffLqg.back(), row, 5);
+        grid->addWidget(m_kEffEwma.back(), row, 6);
+        grid->addWidget(m_gainMargin.back(), row, 7);
+        m_delayMargin.back()->setMinimumWidth(84);
+        grid->addWidget(m_delayMargin.back(), row, 8);
+        grid->addWidget(m_disk.back(), row, 9);
+    }
+    grid->setRowStretch(points + 1, 1);
+    return box;
+}
+
+QWidget* ControllerPage::buildCharts() {
+    auto* column = new QWidget;
+    auto* v = new QVBoxLayout(column);
+    v->setContentsMargins(0, 0, 0, 0);
+    m_stepChart = new Chart;
+    m_sensitivityChart = new Chart;
+    for (Chart* c : {m_stepChart, m_sensitivityChart}) {
+        c->setMinimumHeight(220);
+        c->setMinimumWidth(240);
+        c->setLegendBelow(2);
+        c->setXTickCount(5);
+        c->setYTickCount(5);
+        v->addWidget(c, 1);
+    }
+    return column;
+}
+
+QString ControllerPage::title() const {
+    return tr("Controller");
+}
+
+void ControllerPage::retranslate() {
+    m_delayLabel->setText(tr("Delay z, parts"));
+    m_maxAbsLabel->setText(tr("Max correction"));
+    m_maxStepLabel->setText(tr("Max step per part"));
+    m_deadBandLabel->setText(tr("Dead band (EWMA)"));
+    for (QDoubleSpinBox* f : {m_maxAbs, m_maxStep, m_deadBand})
+        f->setSuffix(tr(" mm"));
+    m_variance->setSuffix(tr(" mm²"));
+    m_filterLabel->setText(tr("Filter (z + b)/(z − a)"));
+    const QStringList headers{tr("Point"),      tr("R1 (error)"), tr("R2 (correction)"), tr("k_eff LQG"),
+                              tr("k_eff EWMA"), tr("Gain marg."), tr("Delay, parts"),    tr("Disk α")};
+    for (int c = 0; c < headers.size(); ++c)
+        m_headers[static_cast<std::size_t>(c)]->setText(headers[c]);
+    m_headers[6]->setToolTip(
+        tr("Delay margin in parts (phase margin / crossover) / whole extra parts of delay "
+           "the loop stays stable with"));
+    for (std::size_t i = 0; i < m_pointNames.size(); ++i)
+        m_pointNames[i]->setText(tr("%1: %2 mm").arg(i + 1).arg(m_applied.plant.points[i].xMm, 0, 'f', 1));
+    m_apply->setText(tr("Apply…"));
+    m_revert->setText(tr("Revert"));
+    m_stepChart->setTitle(tr("Step at point 1"));
+    m_stepChart->setAxisTitles(tr("part after the step"), tr("error / step"));
+    m_sensitivityChart->setTitle(tr("|S| at point 1"));
+    m_sensitivityChart->setAxisTitles(tr("frequency, rad per part"), tr("|S|"));
+    if (m_shown) showResult(m_shown);
+}
+
+core::RunToRunSetup ControllerPage::editedSetup() const {
+    core::RunToRunSetup s = m_applied;
+    s.plant.delay = m_delay->value();
+    for (std::size_t i = 0; i < m_r1.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        s.weights.R1(k, k) = m_r1[i]->value();
+        s.weights.R2(k, k) = m_r2[i]->value();
+    }
+    s.limits.maxAbsMm = m_maxAbs->value();
+    s.limits.maxStepMm = m_maxStep->value();
+    s.ewma.deadBandMm = m_deadBand->value();
+    const core::DisturbanceModel filter = typedFilter(m_pole->value(), m_zero->value(), m_variance->value());
+    for (core::ControlPointSpec& p : s.plant.points)
+        p.disturbance = filter;
+    return s;
+}
+
+void ControllerPage::loadSetup(const core::RunToRunSetup& setup) {
+    m_loading = true;
+    m_delay->setValue(setup.plant.delay);
+    for (std::size_t i = 0; i < m_r1.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        m_r1[i]->setValue(setup.weights.R1(k, k));
+        m_r2[i]->setValue(setup.weights.R2(k, k));
+    }
+    m_maxAbs->setValue(std::isfinite(setup.limits.maxAbsMm) ? setup.limits.maxAbsMm : m_maxAbs->maximum());
+    m_maxStep->setValue(std::isfinite(setup.limits.maxStepMm) ? setup.limits.maxStepMm : m_maxStep->maximum());
+    m_deadBand->setValue(setup.ewma.deadBandMm);
+    // The typed filter starts from the first point's model when it is one first-order shaping filter
+    // (paper-2012: (z + 0.246)/(z - 0.9215), 0.0013 mm^2).
+    const core::DisturbanceModel& d = setup.plant.points.front().disturbance;
+    if (d.components().size() == 1 && d.components().front().filter()) {
+        const core::ShapingFilter& f = *d.components().front().filter();
+        if (f.poles().size() == 1 && f.numerator().size() == 2) {
+            m_pole->setValue(f.poles().front().real());
+            m_zero->setValue(f.numerator()[1] / f.numerator()[0]);
+            m_variance->setValue(d.stationaryVarianceMm2());
+        }
+    }
+    m_loading = false;
+}
+
+void ControllerPage::requestPreview() {
+    if (m_loading) return;
+    m_worker->request(editedSetup());
+}
+
+void ControllerPage::showResult(std::shared_ptr<const TuningResult> result) {
+    m_shown = std::move(result);
+    const bool newest = m_shown->generation == m_worker->latestGeneration();
+    if (!m_shown->problem.isEmpty()) {
+        m_status->setText(tr("The design is refused: %1").arg(m_shown->problem));
+        m_status->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
+        m_apply->setEnabled(false);
+        return;
+    }
+    showPredictions(*m_shown);
+    showCharts(*m_shown);
+    m_timing->setText(tr("Re-synthesis %1 ms").arg(m_shown->computeMs, 0, 'f', 1));
+    m_apply->setEnabled(newest);
+}
+
+void ControllerPage::showPredictions(const TuningResult& r) {
+    const core::TuningPreview& p = *r.preview;
+    for (std::size_t i = 0; i < m_kEffLqg.size(); ++i) {
+        const auto k = static_cast<Eigen::Index>(i);
+        const core::ChannelMargins& m = p.lqgMargins.channels[i];
+        m_kEffLqg[i]->setText(p.varianceAvailable ? fixed(p.lqgKEff(k), 2) : QStringLiteral("—"));
+        m_kEffEwma[i]->setText(p.varianceAvailable ? fixed(p.ewmaKEff(k), 2) : QStringLiteral("—"));
+        m_gainMargin[i]->setText(m.gain ? fixed(*m.gain, 2) : QStringLiteral("∞"));
+        m_delayMargin[i]->setText(QStringLiteral("%1 / %2")
+                                      .arg(m.delayParts ? fixed(*m.delayParts, 2) : QStringLiteral("∞"))
+                                      .arg(m.extraPartsTolerated));
+        m_disk[i]->setText(fixed(m.disk, 2));
+        const bool weak = (m.delayParts && *m.delayParts < 1.0) || m.extraPartsTolerated < 1;
+        m_delayMargin[i]->setStyleSheet(weak ? QStringLiteral("font-weight: bold; color: #b00020;")
+                                             : QStringLiteral("font-weight: bold; color: #1f2a36;"));
+    }
+    if (p.lqgMargins.delayMarginBelowOnePart) {
+        m_status->setText(tr("Warning: a plant one part slower than the model destabilises this design "
+                             "(delay margin under one part). Best EWMA weight %1.")
+                              .arg(p.ewmaWeight, 0, 'f', 2));
+        m_status->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
+    } else {
+        m_status->setText(
+            tr("The design tolerates one more part of delay. Best EWMA weight %1.").arg(p.ewmaWeight, 0, 'f', 2));
+        m_status->setStyleSheet(QStringLiteral("color: #1b5e20; font-weight: bold;"));
+    }
+}
+
+void ControllerPage::showCharts(const TuningResult& r) {
+    const core::TuningPreview& p = *r.preview;
+    std::vector<double> parts(p.stepLqg.size());
+    for (std::size_t k = 0; k < parts.size(); ++k)
+        parts[k] = static_cast<double>(k);
+    m_stepChart->setSeries(QStringLiteral("open"), tr("open"), parts, p.stepOpen, kOpenColour, Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), parts, p.stepEwma, kEwmaColour, Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("lqg"), tr("LQG"), parts, p.stepLqg, kLqgColour, Chart::Style::Steps);
+    m_stepChart->rescale(true);
+    m_sensitivityChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), p.frequencyRadPerPart, p.sensitivityEwma,
+                                  kEwmaColour);
+    m_sensitivityChart->setSeries(QStringLiteral("lqg"), tr("LQG"), p.frequencyRadPerPart, p.sensitivityLqg,
+                                  kLqgColour);
+    m_sensitivityChart->rescale(true);
+    m_stepChart->refresh();
+    m_sensitivityChart->refresh();
+}
+
+QString ControllerPage::shownLqgKEff(int point) const {
+    return m_kEffLqg[static_cast<std::size_t>(point)]->text();
+}
+
+void ControllerPage::apply() {
+    if (!m_shown || !m_shown->preview || !context().prompt) return;
+    const core::RunToRunSetup next = m_shown->setup;
+    const QString change = describeTuningChange(m_applied, next);
+    if (change.isEmpty()) return;
+    QString question = tr("Apply the new controller tuning from the next part?");
+    if (m_shown->preview->lqgMargins.delayMarginBelowOnePart)
+        question += QStringLiteral("\n\n") + tr("Warning: its delay margin is under one part: a plant one part "
+                                                "slower than the model destabilises it.");
+    if (context().prompt->ask(this, tr("Apply tuning"), question) != Prompt::Answer::Yes) return;
+    m_lastRecord = recordTuningChange(context(), m_applied, next);
+    m_applied = next;
+}
+
+void ControllerPage::revert() {
+    loadSetup(m_applied);
+    requestPreview();
+}
+
+}  // namespace tt::ui

@@ -1,0 +1,99 @@
+#pragma once
+
+#include <QString>
+#include <memory>
+#include <vector>
+
+#include "core/control/run_to_run_setup.h"
+#include "ui/page.h"
+
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+
+namespace tt::ui {
+
+class Chart;
+class TuningWorker;
+class WeightEditor;
+struct TuningResult;
+
+/// The Controller page for the commissioning engineer (issue 13 item 6): delay z, weights R1 / R2 per
+/// point (slider and field), correction limits, dead band and the shaping filter W(z) = (z + b)/(z - a);
+/// while anything moves, the LQG design is re-synthesised off the GUI thread (coalesced) and the page
+/// shows the predicted k_eff per point beside the best EWMA's, the margins, the step response and |S|.
+/// Apply asks first, records who changed what and keeps the applied setup.
+class ControllerPage : public Page {
+    Q_OBJECT
+public:
+    ControllerPage(AppContext& context, QWidget* parent = nullptr);
+    ~ControllerPage() override;
+    QString title() const override;
+    void retranslate() override;
+
+    /// The setup the fields describe now.
+    core::RunToRunSetup editedSetup() const;
+    /// The setup last applied (the preset's until Apply).
+    const core::RunToRunSetup& appliedSetup() const { return m_applied; }
+    /// The result shown now (null before the first one arrives).
+    const TuningResult* shownResult() const { return m_shown.get(); }
+    /// The re-synthesis worker (tests wait for its generation).
+    const TuningWorker& worker() const { return *m_worker; }
+    /// The record of the last Apply (empty before).
+    const QString& lastRecord() const { return m_lastRecord; }
+    /// The weight editors of point `point` (tests drive them).
+    WeightEditor& r1(int point) { return *m_r1[static_cast<std::size_t>(point)]; }
+    WeightEditor& r2(int point) { return *m_r2[static_cast<std::size_t>(point)]; }
+    /// The k_eff label of `point` (LQG) as shown.
+    QString shownLqgKEff(int point) const;
+
+private:
+    QWidget* buildSettings();
+    QWidget* buildPoints();
+    QWidget* buildCharts();
+    void loadSetup(const core::RunToRunSetup& setup);
+    void requestPreview();
+    void showResult(std::shared_ptr<const TuningResult> result);
+    void showPredictions(const TuningResult& result);
+    void showCharts(const TuningResult& result);
+    void apply();
+    void revert();
+
+    core::RunToRunSetup m_applied;
+    std::unique_ptr<TuningWorker> m_worker;
+    std::shared_ptr<const TuningResult> m_shown;
+    QString m_lastRecord;
+    bool m_loading = false;
+
+    QLabel* m_settingsTitle = nullptr;
+    QLabel* m_delayLabel = nullptr;
+    QSpinBox* m_delay = nullptr;
+    QLabel* m_maxAbsLabel = nullptr;
+    QDoubleSpinBox* m_maxAbs = nullptr;
+    QLabel* m_maxStepLabel = nullptr;
+    QDoubleSpinBox* m_maxStep = nullptr;
+    QLabel* m_deadBandLabel = nullptr;
+    QDoubleSpinBox* m_deadBand = nullptr;
+    QLabel* m_filterLabel = nullptr;
+    QDoubleSpinBox* m_pole = nullptr;
+    QDoubleSpinBox* m_zero = nullptr;
+    QDoubleSpinBox* m_variance = nullptr;
+    QLabel* m_poleLabel = nullptr;
+    QLabel* m_zeroLabel = nullptr;
+    QLabel* m_varianceLabel = nullptr;
+
+    std::vector<QLabel*> m_headers;
+    std::vector<QLabel*> m_pointNames;
+    std::vector<WeightEditor*> m_r1, m_r2;
+    std::vector<QLabel*> m_kEffLqg, m_kEffEwma, m_gainMargin, m_delayMargin, m_disk;
+
+    QLabel* m_status = nullptr;
+    QLabel* m_timing = nullptr;
+    QPushButton* m_apply = nullptr;
+    QPushButton* m_revert = nullptr;
+    Chart* m_stepChart = nullptr;
+    Chart* m_sensitivityChart = nullptr;
+};
+
+}  // namespace tt::ui
