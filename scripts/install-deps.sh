@@ -9,7 +9,7 @@ packages=(
     qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libqt6sql6-sqlite libqt6sql6-psql qt6-serialport-dev qt6-serialbus-dev libqt6svg6
     qt6-qpa-plugins libgl-dev fonts-dejavu-core
-    libeigen3-dev libqcustomplot-dev libboost-dev
+    libeigen3-dev libqcustomplot-dev libboost-dev libsodium-dev
 )
 # linuxcnc-uspace: LinuxCNC's standalone G-code interpreter rs274 (/usr/bin/rs274), which the feed-schedule
 # tests run on the emitted programs. It must be installed with --no-install-recommends (as below): it
