@@ -24,6 +24,23 @@ QString localTime(const QString& isoUtc) {
     return t.isValid() ? t.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")) : isoUtc;
 }
 
+/// A stored value in the user's language where it is one of the product's own words (a role key, a
+/// log-in event, a secret's kind); anything else (numbers, names, tool fields) as stored.
+QString displayValue(const QString& value) {
+    for (core::auth::Role role : core::auth::kAllRoles)
+        if (value == QString::fromStdString(core::auth::roleKey(role))) return UserSession::roleName(role);
+    if (value == QLatin1String("logged in")) return AuditDialog::tr("logged in");
+    if (value == QLatin1String("password set")) return AuditDialog::tr("password set");
+    if (value == QLatin1String("pin set")) return AuditDialog::tr("PIN set");
+    if (value == QLatin1String("unlocked")) return AuditDialog::tr("unlocked");
+    return value;
+}
+
+QString displaySubject(const QString& subject) {
+    if (subject.startsWith(QLatin1String("user "))) return AuditDialog::tr("user %1").arg(subject.mid(5));
+    return subject;
+}
+
 }  // namespace
 
 QString AuditDialog::categoryName(const QString& category) {
@@ -116,9 +133,14 @@ void AuditDialog::reload() {
         const storage::AuditRecord& r = m_records[static_cast<std::size_t>(row)];
         const QString role =
             r.role.isEmpty() ? QString() : UserSession::roleName(core::auth::roleFromKey(r.role.toStdString()));
-        const QString cells[] = {
-            localTime(r.changedAt), r.changedBy,     role,          categoryName(r.change.category), r.change.subject,
-            r.change.field,         r.change.before, r.change.after};
+        const QString cells[] = {localTime(r.changedAt),
+                                 r.changedBy,
+                                 role,
+                                 categoryName(r.change.category),
+                                 displaySubject(r.change.subject),
+                                 r.change.field,
+                                 displayValue(r.change.before),
+                                 displayValue(r.change.after)};
         for (int col = 0; col < 8; ++col)
             m_table->setItem(row, col, new QTableWidgetItem(cells[col]));
     }

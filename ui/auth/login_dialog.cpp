@@ -39,6 +39,7 @@ LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, bool a
     m_message->setObjectName(QStringLiteral("authProblem"));
     m_message->setStyleSheet(QStringLiteral("color: #c62828; font-weight: bold;"));
     m_message->setWordWrap(true);
+    m_message->setMinimumHeight(96);  // three lines of the lock-out message without squeezing the form
 
     auto* form = new QFormLayout;
     form->setVerticalSpacing(14);
@@ -92,7 +93,9 @@ QWidget* LoginDialog::buildKeypad() {
         key->setObjectName(QStringLiteral("key_%1").arg(i));
         key->setFixedSize(96, 76);
         key->setFocusPolicy(Qt::NoFocus);
-        key->setStyleSheet(QStringLiteral("font-size: 20pt; font-weight: bold;"));
+        // The word key (Clear) in a smaller size so it fits in every language.
+        key->setStyleSheet(i == 9 ? QStringLiteral("font-size: 13pt; font-weight: bold; padding: 0px;")
+                                  : QStringLiteral("font-size: 20pt; font-weight: bold; padding: 0px;"));
         grid->addWidget(key, i / 3, i % 3);
         connect(key, &QPushButton::clicked, this, [this, i, text = keys[i]] {
             if (i == 9)

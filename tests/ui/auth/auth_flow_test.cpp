@@ -165,6 +165,9 @@ TEST_P(AuthFlowTest, FirstStartLogInRefusalAndAuditTrail) {
               QStringLiteral("Olga (%1)").arg(UserSession::roleName(Role::Engineer)));
     EXPECT_TRUE(settings.findChild<QPushButton*>(QStringLiteral("auditButton"))->isEnabled());
     EXPECT_FALSE(settings.findChild<QPushButton*>(QStringLiteral("usersButton"))->isEnabled());
+    settings.resize(1100, 640);
+    settings.show();
+    EXPECT_TRUE(test::saveScreenshot(settings, shot(QStringLiteral("settings"))));
 
     AuditDialog audit(context);
     audit.show();
