@@ -70,9 +70,9 @@ QString UserStore::actorName(const QString& fallback) const {
 }
 
 void UserStore::audit(const QString& subject, const QString& field, const QString& before, const QString& after,
-                      const QString& who) {
-    const QString role = m_access && m_access->identity() ? roleText(m_access->identity()->role) : QString();
-    m_audit.record({audit_category::kUser, subject, field, before, after}, who, role);
+                      const QString& who, const QString& role) {
+    const QString actorRole = m_access && m_access->identity() ? roleText(m_access->identity()->role) : role;
+    m_audit.record({audit_category::kUser, subject, field, before, after}, who, actorRole);
 }
 
 bool UserStore::hasUsers() {
@@ -106,16 +106,16 @@ int UserStore::administrators() {
 }
 
 void UserStore::insert(const QString& name, Role role, const std::string& secret, SecretKind kind,
-                       const QString& createdBy) {
+                       const QString& createdBy, const QString& creatorRole) {
     core::auth::checkSecret(secret, kind);
     if (find(name)) throw std::invalid_argument("a user named '" + name.toStdString() + "' exists already");
     const QString hash = QString::fromStdString(core::auth::hashSecret(secret));
     m_db.exec(QStringLiteral("INSERT INTO users (name, role, secret_kind, secret_hash, created_at, created_by,"
                              " failures, locked_until) VALUES (?, ?, ?, ?, ?, ?, 0, 0)"),
               {name, roleText(role), kindKey(kind), hash, utcNowText(), createdBy});
-    audit(QStringLiteral("user ") + name, QStringLiteral("role"), QString(), roleText(role), createdBy);
+    audit(QStringLiteral("user ") + name, QStringLiteral("role"), QString(), roleText(role), createdBy, creatorRole);
     audit(QStringLiteral("user ") + name, QStringLiteral("secret"), QString(), kindKey(kind) + QStringLiteral(" set"),
-          createdBy);
+          createdBy, creatorRole);
 }
 
 core::auth::Identity UserStore::createFirstAdministrator(const QString& name, const std::string& secret,
@@ -123,7 +123,7 @@ core::auth::Identity UserStore::createFirstAdministrator(const QString& name, co
     const QString user = checkedName(name);
     m_db.transaction([&] {
         if (hasUsers()) throw std::logic_error("the administrator exists already; log in");
-        insert(user, Role::Administrator, secret, kind, user);
+        insert(user, Role::Administrator, secret, kind, user, roleText(Role::Administrator));
     });
     return {user.toStdString(), Role::Administrator};
 }
@@ -131,7 +131,7 @@ core::auth::Identity UserStore::createFirstAdministrator(const QString& name, co
 void UserStore::addUser(const QString& name, Role role, const std::string& secret, SecretKind kind) {
     requireManager();
     const QString user = checkedName(name);
-    m_db.transaction([&] { insert(user, role, secret, kind, actorName(QStringLiteral("administrator"))); });
+    m_db.transaction([&] { insert(user, role, secret, kind, actorName(QStringLiteral("administrator")), QString()); });
 }
 
 void UserStore::setRole(const QString& name, Role role) {

@@ -88,11 +88,12 @@ private:
     const core::auth::Identity* requireManager() const;
     QString actorName(const QString& fallback) const;
     std::optional<UserRecord> find(const QString& name);
+    /// Audits a user change by `who` (the logged-in user's name and role when guarded, else `role`).
     void audit(const QString& subject, const QString& field, const QString& before, const QString& after,
-               const QString& who);
+               const QString& who, const QString& role = {});
     int administrators();
     void insert(const QString& name, core::auth::Role role, const std::string& secret, core::auth::SecretKind kind,
-                const QString& createdBy);
+                const QString& createdBy, const QString& creatorRole);
 
     Database& m_db;
     AuditStore& m_audit;
