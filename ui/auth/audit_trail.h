@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QString>
+#include <QVariantMap>
 
 #include "core/auth/permission.h"
 #include "core/storage/audit_store.h"
@@ -28,6 +29,12 @@ public:
     /// opened, std::invalid_argument for an empty category, subject, field or user name.
     storage::AuditRecord record(const QString& category, const QString& subject, const QString& field,
                                 const QString& before, const QString& after);
+
+    /// One record per key whose value differs between `before` and `after` (a key missing on one side
+    /// is recorded with an empty value there). A failure to write is logged as a warning, not thrown:
+    /// the change itself is already made. Returns the records written.
+    int recordValues(const QString& category, const QString& subject, const QVariantMap& before,
+                     const QVariantMap& after);
 
 private:
     AppContext& m_context;

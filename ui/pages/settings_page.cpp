@@ -11,6 +11,7 @@
 
 #include "ui/app_state.h"
 #include "ui/auth/audit_dialog.h"
+#include "ui/auth/audit_trail.h"
 #include "ui/auth/user_session.h"
 #include "ui/auth/users_dialog.h"
 #include "ui/language.h"
@@ -99,7 +100,13 @@ void SettingsPage::fillLanguages() {
 }
 
 void SettingsPage::onLanguageChosen(int index) {
-    if (context().language) context().language->apply(m_language->itemData(index).toString());
+    if (!context().language) return;
+    const QString before = context().language->current();
+    const QString after = m_language->itemData(index).toString();
+    if (before == after) return;
+    context().language->apply(after);
+    AuditTrail(context()).recordValues(QStringLiteral("setting"), QStringLiteral("terminal"),
+                                       {{QStringLiteral("language"), before}}, {{QStringLiteral("language"), after}});
 }
 
 void SettingsPage::onOperatorEdited() {

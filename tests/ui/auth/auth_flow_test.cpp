@@ -196,6 +196,23 @@ TEST_P(AuthFlowTest, FirstStartLogInRefusalAndAuditTrail) {
     EXPECT_EQ(lines[0], QStringLiteral("when_utc,who,role,category,subject,field,old_value,new_value"));
     EXPECT_TRUE(lines.filter(QStringLiteral(",Anna,administrator,user,user Olga,role,operator,engineer")).size() == 1)
         << lines.join(QLatin1Char('\n')).toStdString();
+
+    // A setting changed on the Settings page is audited too: the language, old and new.
+    auto* languages = settings.findChild<QComboBox*>(QStringLiteral("languageCombo"));
+    const QString other = GetParam() == QLatin1String("en") ? QStringLiteral("ru") : QStringLiteral("en");
+    const int index = languages->findData(other);
+    languages->setCurrentIndex(index);
+    emit languages->activated(index);
+    EXPECT_EQ(language.current(), other);
+    storage::AuditFilter settingsOnly;
+    settingsOnly.category = storage::audit_category::kSetting;
+    const std::vector<storage::AuditRecord> changes = context.data().audit()->query(settingsOnly);
+    ASSERT_EQ(changes.size(), 1u);
+    EXPECT_EQ(changes[0].change.field.toStdString(), "language");
+    EXPECT_EQ(changes[0].change.before, GetParam());
+    EXPECT_EQ(changes[0].change.after, other);
+    EXPECT_EQ(changes[0].changedBy.toStdString(), "Olga");
+    EXPECT_EQ(changes[0].role.toStdString(), "engineer");
 }
 
 TEST_P(AuthFlowTest, LockOutAfterFiveFailuresAndReleaseAfterFiveMinutes) {
