@@ -114,7 +114,8 @@ TEST_P(AuditStoreTest, LongValuesAreCutAndEmptyFieldsRefused) {
         std::invalid_argument);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, AuditStoreTest, ::testing::ValuesIn(test::backends()));
+INSTANTIATE_TEST_SUITE_P(Backends, AuditStoreTest, ::testing::ValuesIn(test::backends()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace tt::storage

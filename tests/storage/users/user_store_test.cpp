@@ -185,7 +185,8 @@ TEST_P(UserStoreTest, AnOperatorCannotChangeToolStiffnessOrCalibrationThroughThe
     EXPECT_EQ(stores.calibration()->saveKp(kp).createdBy, QStringLiteral("Olga"));
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, UserStoreTest, ::testing::ValuesIn(test::backends()));
+INSTANTIATE_TEST_SUITE_P(Backends, UserStoreTest, ::testing::ValuesIn(test::backends()),
+                         [](const auto& info) { return info.param; });
 
 }  // namespace
 }  // namespace tt::storage
