@@ -12,6 +12,8 @@
 #include "core/storage/database_location.h"
 #include "devices/api/plugin_folder.h"
 #include "ui/app_state.h"
+#include "ui/auth/log_in_gate.h"
+#include "ui/auth/user_session.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/history_check.h"
 #include "ui/kiosk.h"
@@ -90,7 +92,21 @@ int runGui(int argc, char** argv) {
     }
     // The one data access object of the history database, shared by every page of the GUI thread.
     context.stores = std::make_shared<storage::DataStores>(context.databasePath);
+    // Roles: every store asks the session's guard; the first start creates the administrator, later
+    // starts ask for a log-in (not for --screenshots, which changes nothing and logs nobody in).
+    ui::UserSession session(&state);
+    context.session = &session;
+    context.access = &session.guard();
+    // --quit-after-ms (tests) also closes a log-in dialog that nobody answers, and ends the event loop directly:
+    // quit() would close the window, which in kiosk mode or with a run going asks the user first.
+    if (options.quitAfterMs >= 0)
+        QTimer::singleShot(options.quitAfterMs, &app, [] {
+            if (QWidget* dialog = QApplication::activeModalWidget()) dialog->close();
+            QCoreApplication::exit(0);
+        });
+    if (options.screenshotDir.isEmpty() && !ui::logInAtStart(context)) return 0;
     ui::MainWindow window(context);
+    ui::logInAgainAfterLogOut(context, &window);
     for (ui::PageId id : ui::kAllPages)
         if (ui::pageKey(id) == options.page) window.showPage(id);
     window.setKiosk(options.kiosk);
@@ -109,9 +125,6 @@ int runGui(int argc, char** argv) {
         std::printf("trueturn: %d page screenshots written to %s\n", written, qPrintable(options.screenshotDir));
         return written == static_cast<int>(window.pages().size()) ? 0 : 1;
     }
-    // The test hook ends the event loop directly: quit() would close the window, which in kiosk mode or with a
-    // run going asks the user first.
-    if (options.quitAfterMs >= 0) QTimer::singleShot(options.quitAfterMs, &app, [] { QCoreApplication::exit(0); });
     return QApplication::exec();
 }
 

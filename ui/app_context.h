@@ -3,6 +3,7 @@
 #include <QString>
 #include <memory>
 
+#include "core/auth/access_guard.h"
 #include "core/storage/data_stores.h"
 
 namespace tt::devices {
@@ -14,6 +15,7 @@ namespace tt::ui {
 class AppState;
 class Prompt;
 class LanguageSwitcher;
+class UserSession;
 
 /// The services every page receives from the application (wired in app/gui.cpp or a test):
 /// the prompt for dialogs, the shared machine state, where history is stored and its one data access
@@ -28,10 +30,16 @@ struct AppContext {
     devices::DeviceManager* devices = nullptr;
     /// The data access object of `databasePath` (made on first use, or given by the application).
     std::shared_ptr<storage::DataStores> stores = nullptr;
+    /// Who is logged in and the idle log-out (ui/auth/user_session.h); null = no log-in (tests of pages).
+    UserSession* session = nullptr;
+    /// The session's access guard, given to every store: a change the logged-in role may not make is
+    /// refused by the store. Null = not access-controlled (tests of pages that log nobody in).
+    const core::auth::AccessGuard* access = nullptr;
 
     /// The database's stores for the GUI thread; made again when `databasePath` changes.
     storage::DataStores& data() {
         if (!stores || stores->location() != databasePath) stores = std::make_shared<storage::DataStores>(databasePath);
+        stores->setAccess(access);
         return *stores;
     }
 };

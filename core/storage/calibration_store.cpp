@@ -4,6 +4,8 @@
 #include <QVariant>
 #include <stdexcept>
 
+#include "core/auth/access_guard.h"
+
 namespace tt::storage {
 
 namespace {
@@ -71,6 +73,11 @@ CalibrationStore::CalibrationStore(Database& database) : m_db(database) {
     m_db.migrate(calibrationSchema());
 }
 
+QString CalibrationStore::actor(const QString& who) const {
+    if (!m_access) return who;
+    return QString::fromStdString(m_access->require(core::auth::Permission::EditCalibration).name);
+}
+
 int CalibrationStore::nextTableVersion(const QString& probe, int plane) {
     QSqlQuery q = m_db.exec(QStringLiteral("SELECT MAX(version) FROM probe_tables WHERE probe = ? AND plane = ?"),
                             {probe, plane});
@@ -78,6 +85,7 @@ int CalibrationStore::nextTableVersion(const QString& probe, int plane) {
 }
 
 ProbeTableRecord CalibrationStore::saveTable(ProbeTableRecord r) {
+    r.createdBy = actor(r.createdBy);
     if (r.probe.trimmed().isEmpty()) throw std::invalid_argument("the table needs the probe's name");
     if (r.createdBy.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed to save a table (Settings → Operator)");
@@ -99,9 +107,10 @@ ProbeTableRecord CalibrationStore::saveTable(ProbeTableRecord r) {
 
 void CalibrationStore::recordUpload(qint64 tableId, const QString& who, std::optional<qint64> readbackCrc,
                                     bool verified) {
+    const QString uploader = actor(who);
     m_db.exec(QStringLiteral("UPDATE probe_tables SET uploaded_at = ?, uploaded_by = ?, readback_crc = ?, verified = ?"
                              " WHERE id = ?"),
-              {utcNowText(), who, nullable<qint64>(readbackCrc), verified ? 1 : 0, tableId});
+              {utcNowText(), uploader, nullable<qint64>(readbackCrc), verified ? 1 : 0, tableId});
 }
 
 std::vector<ProbeTableRecord> CalibrationStore::tables(const QString& probe) {
@@ -119,6 +128,7 @@ std::vector<ProbeTableRecord> CalibrationStore::tables(const QString& probe) {
 }
 
 KpCalibrationRecord CalibrationStore::saveKp(KpCalibrationRecord r) {
+    r.createdBy = actor(r.createdBy);
     if (r.createdBy.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed to save a calibration (Settings → Operator)");
     r.createdAt = utcNowText();

@@ -7,6 +7,10 @@
 
 #include "core/storage/database.h"
 
+namespace tt::core::auth {
+class AccessGuard;
+}
+
 namespace tt::storage {
 
 /// The schema module "calibration": versioned linearisation tables of the probe mandrels
@@ -55,6 +59,10 @@ class CalibrationStore {
 public:
     /// Applies the "calibration" migrations to `database` (which must outlive the store).
     explicit CalibrationStore(Database& database);
+    /// With a guard, saving a table, recording an upload and saving a k_p need the EditCalibration
+    /// permission (else core::auth::PermissionDenied, nothing stored) and record the logged-in user as
+    /// the creator; null = not access-controlled (the command line). The guard must outlive the store.
+    void setAccess(const core::auth::AccessGuard* access) { m_access = access; }
 
     /// The version the next table of this probe and plane gets (1 for the first).
     int nextTableVersion(const QString& probe, int plane);
@@ -72,7 +80,11 @@ public:
     std::vector<KpCalibrationRecord> kpCalibrations();
 
 private:
+    /// `who`, or the logged-in user when guarded (after the permission check).
+    QString actor(const QString& who) const;
+
     Database& m_db;
+    const core::auth::AccessGuard* m_access = nullptr;
 };
 
 }  // namespace tt::storage

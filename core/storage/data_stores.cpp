@@ -27,10 +27,15 @@ bool DataStores::open() {
         m_history = std::make_unique<SqlHistoryStore>(*database);
         m_tools = std::make_unique<ToolStore>(*database);
         m_calibration = std::make_unique<CalibrationStore>(*database);
+        m_audit = std::make_unique<AuditStore>(*database);
+        m_users = std::make_unique<UserStore>(*database, *m_audit);
         m_database = std::move(database);
+        setAccess(m_access);
         m_problem.clear();
         return true;
     } catch (const std::exception& e) {
+        m_users.reset();
+        m_audit.reset();
         m_calibration.reset();
         m_tools.reset();
         m_history.reset();
@@ -54,6 +59,26 @@ ToolStore* DataStores::tools() {
 
 CalibrationStore* DataStores::calibration() {
     return open() ? m_calibration.get() : nullptr;
+}
+
+}  // namespace tt::storage
+
+namespace tt::storage {
+
+AuditStore* DataStores::audit() {
+    return open() ? m_audit.get() : nullptr;
+}
+
+UserStore* DataStores::users() {
+    return open() ? m_users.get() : nullptr;
+}
+
+void DataStores::setAccess(const core::auth::AccessGuard* access) {
+    m_access = access;
+    if (m_tools) m_tools->setAccess(access);
+    if (m_calibration) m_calibration->setAccess(access);
+    if (m_audit) m_audit->setAccess(access);
+    if (m_users) m_users->setAccess(access);
 }
 
 }  // namespace tt::storage

@@ -3,16 +3,18 @@
 #include <QString>
 #include <memory>
 
+#include "core/storage/audit_store.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "core/storage/tool_store.h"
+#include "core/storage/user_store.h"
 
 namespace tt::storage {
 
 /// The data access object of one database for the thread that owns it (the GUI's): opens the
 /// connection once, migrates every schema module (schemas.h) and hands out the stores (run history,
-/// tool table, calibration records). The application makes one and gives it to the pages
+/// tool table, calibration records, audit trail, users). The application makes one and gives it to the pages
 /// (ui::AppContext::data()), so no page opens connections itself. A worker thread opens its own
 /// connection from config() (a QtSql connection belongs to the thread that made it).
 class DataStores {
@@ -39,6 +41,13 @@ public:
     SqlHistoryStore* history();
     ToolStore* tools();
     CalibrationStore* calibration();
+    AuditStore* audit();
+    UserStore* users();
+
+    /// The terminal's access guard, given to every store (now and when opened later): with it, a change
+    /// the logged-in user's role may not make is refused by the store (core::auth::PermissionDenied).
+    /// Null = not access-controlled. The guard must outlive this object.
+    void setAccess(const core::auth::AccessGuard* access);
 
 private:
     QString m_location;
@@ -47,6 +56,9 @@ private:
     std::unique_ptr<SqlHistoryStore> m_history;
     std::unique_ptr<ToolStore> m_tools;
     std::unique_ptr<CalibrationStore> m_calibration;
+    std::unique_ptr<AuditStore> m_audit;
+    std::unique_ptr<UserStore> m_users;
+    const core::auth::AccessGuard* m_access = nullptr;
 };
 
 }  // namespace tt::storage

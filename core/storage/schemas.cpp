@@ -1,13 +1,15 @@
 #include "core/storage/schemas.h"
 
+#include "core/storage/audit_store.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/history_store.h"
 #include "core/storage/tool_store.h"
+#include "core/storage/user_store.h"
 
 namespace tt::storage {
 
 std::vector<SchemaModule> allSchemas() {
-    return {historySchema(), toolSchema(), calibrationSchema()};
+    return {historySchema(), toolSchema(), calibrationSchema(), auditSchema(), userSchema()};
 }
 
 void migrateAll(Database& database) {

@@ -6,7 +6,7 @@
 
 namespace tt::storage {
 
-/// Every schema module of the product's database: history, tools, calibration.
+/// Every schema module of the product's database: history, tools, calibration, audit, users.
 std::vector<SchemaModule> allSchemas();
 
 /// Brings every module of `database` to the version this program knows; throws StorageError

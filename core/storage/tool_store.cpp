@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/auth/access_guard.h"
 #include "core/model/tool_table.h"
 
 namespace tt::storage {
@@ -117,7 +118,13 @@ ToolAuditEntry ToolStore::record(const QString& now, const QString& who, const Q
     return {m_db.lastInsertId(q), now, who, subject, field, notNull(before), notNull(after)};
 }
 
-std::vector<ToolAuditEntry> ToolStore::apply(const std::vector<ToolEdit>& edits, const QString& who) {
+QString ToolStore::actor(const QString& who) const {
+    if (!m_access) return who;
+    return QString::fromStdString(m_access->require(core::auth::Permission::EditTools).name);
+}
+
+std::vector<ToolAuditEntry> ToolStore::apply(const std::vector<ToolEdit>& edits, const QString& operatorName) {
+    const QString who = actor(operatorName);
     if (who.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed for the audit record (Settings → Operator)");
     for (const ToolEdit& e : edits) {
@@ -168,7 +175,8 @@ std::vector<ToolAuditEntry> ToolStore::apply(const std::vector<ToolEdit>& edits,
     return written;
 }
 
-std::vector<ToolAuditEntry> ToolStore::saveMaterial(const core::Material& material, const QString& who) {
+std::vector<ToolAuditEntry> ToolStore::saveMaterial(const core::Material& material, const QString& operatorName) {
+    const QString who = actor(operatorName);
     if (who.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed for the audit record (Settings → Operator)");
     if (material.name.empty()) throw std::invalid_argument("material: the name must not be empty");
@@ -198,7 +206,8 @@ std::vector<ToolAuditEntry> ToolStore::saveMaterial(const core::Material& materi
     return written;
 }
 
-std::vector<ToolAuditEntry> ToolStore::removeMaterial(const std::string& name, const QString& who) {
+std::vector<ToolAuditEntry> ToolStore::removeMaterial(const std::string& name, const QString& operatorName) {
+    const QString who = actor(operatorName);
     if (who.trimmed().isEmpty())
         throw std::invalid_argument("the operator's name is needed for the audit record (Settings → Operator)");
     const QString now = utcNowText();

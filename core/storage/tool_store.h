@@ -8,6 +8,10 @@
 #include "core/model/tool_stiffness.h"
 #include "core/storage/database.h"
 
+namespace tt::core::auth {
+class AccessGuard;
+}
+
 namespace tt::storage {
 
 /// The schema module "tools": the tool stiffness table (tools), the materials list with Young's
@@ -40,6 +44,10 @@ class ToolStore {
 public:
     /// Applies the "tools" migrations to `database` (which must outlive the store).
     explicit ToolStore(Database& database);
+    /// With a guard every change needs the EditTools permission (else core::auth::PermissionDenied,
+    /// nothing changed) and is audited under the logged-in user's name whatever `who` says; null = not
+    /// access-controlled (the command line). The guard must outlive the store.
+    void setAccess(const core::auth::AccessGuard* access) { m_access = access; }
 
     /// Every stored tool, ordered by id.
     std::vector<core::ToolRecord> tools();
@@ -65,7 +73,11 @@ private:
     ToolAuditEntry record(const QString& now, const QString& who, const QString& subject, const QString& field,
                           const QString& before, const QString& after);
 
+    /// The name audited for a change by `who`: the logged-in user when guarded (after the check).
+    QString actor(const QString& who) const;
+
     Database& m_db;
+    const core::auth::AccessGuard* m_access = nullptr;
 };
 
 }  // namespace tt::storage

@@ -1990,6 +1990,145 @@
     </message>
 </context>
 <context>
+    <name>tt::ui::AuditDialog</name>
+    <message>
+        <source>Setting</source>
+        <translation>Настройка</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Калибровка</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Инструмент</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <source>Controller</source>
+        <translation>Регулятор</translation>
+    </message>
+    <message>
+        <source>Log-in</source>
+        <translation>Вход</translation>
+    </message>
+    <message>
+        <source>Audit trail</source>
+        <translation>Журнал аудита</translation>
+    </message>
+    <message>
+        <source>All changes</source>
+        <translation>Все изменения</translation>
+    </message>
+    <message>
+        <source>Filter: name, tool, field or value</source>
+        <translation>Фильтр: имя, инструмент, поле или значение</translation>
+    </message>
+    <message>
+        <source>When</source>
+        <translation>Когда</translation>
+    </message>
+    <message>
+        <source>Who</source>
+        <translation>Кто</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Роль</translation>
+    </message>
+    <message>
+        <source>What</source>
+        <translation>Что</translation>
+    </message>
+    <message>
+        <source>Subject</source>
+        <translation>Объект</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <translation>Поле</translation>
+    </message>
+    <message>
+        <source>Old value</source>
+        <translation>Было</translation>
+    </message>
+    <message>
+        <source>New value</source>
+        <translation>Стало</translation>
+    </message>
+    <message>
+        <source>Export CSV…</source>
+        <translation>Экспорт CSV…</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>Show</source>
+        <translation>Показать</translation>
+    </message>
+    <message>
+        <source>The database cannot be opened: %1</source>
+        <translation>Не удаётся открыть базу данных: %1</translation>
+    </message>
+    <message>
+        <source>Not shown: %1</source>
+        <translation>Не показано: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n record(s)</source>
+        <translation>
+            <numerusform>%n запись</numerusform>
+            <numerusform>%n записи</numerusform>
+            <numerusform>%n записей</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Export the audit trail</source>
+        <translation>Экспорт журнала аудита</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Файлы CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Not written: %1 (%2)</source>
+        <translation>Не записано: %1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n record(s) written to %1</source>
+        <translation>
+            <numerusform>%n запись записана в %1</numerusform>
+            <numerusform>%n записи записаны в %1</numerusform>
+            <numerusform>%n записей записано в %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>logged in</source>
+        <translation>вход выполнен</translation>
+    </message>
+    <message>
+        <source>password set</source>
+        <translation>пароль задан</translation>
+    </message>
+    <message>
+        <source>PIN set</source>
+        <translation>PIN задан</translation>
+    </message>
+    <message>
+        <source>unlocked</source>
+        <translation>разблокирован</translation>
+    </message>
+    <message>
+        <source>user %1</source>
+        <translation>пользователь %1</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::BoringPanel</name>
     <message>
         <source>The devices were changed, so the compensation stopped. The CNC keeps the offset it holds.</source>
@@ -3611,6 +3750,49 @@ output</source>
     </message>
 </context>
 <context>
+    <name>tt::ui::FirstStartDialog</name>
+    <message>
+        <source>First start: create the administrator</source>
+        <translation>Первый запуск: создание администратора</translation>
+    </message>
+    <message>
+        <source>Create the administrator</source>
+        <translation>Создайте администратора</translation>
+    </message>
+    <message>
+        <source>No user exists yet. The administrator adds the operators, engineers and quality staff and sets what they may change. The password needs at least %1 characters.</source>
+        <translation>Пользователей ещё нет. Администратор добавляет операторов, инженеров и сотрудников ОТК и определяет, что им разрешено менять. Пароль — не короче %1 символов.</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Имя</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Пароль</translation>
+    </message>
+    <message>
+        <source>Repeat the password</source>
+        <translation>Повторите пароль</translation>
+    </message>
+    <message>
+        <source>Create and log in</source>
+        <translation>Создать и войти</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Выйти</translation>
+    </message>
+    <message>
+        <source>The two passwords differ; type them again.</source>
+        <translation>Пароли не совпадают; введите их ещё раз.</translation>
+    </message>
+    <message>
+        <source>Not created: %1</source>
+        <translation>Не создан: %1</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::HistoryCheck</name>
     <message>
         <source>not available — %1</source>
@@ -4230,6 +4412,49 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     <message>
         <source>Part finished</source>
         <translation>Деталь готова</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::LoginDialog</name>
+    <message>
+        <source>Log in</source>
+        <translation>Войти</translation>
+    </message>
+    <message>
+        <source>Log in to TrueTurn</source>
+        <translation>Вход в TrueTurn</translation>
+    </message>
+    <message>
+        <source>Password or PIN</source>
+        <translation>Пароль или PIN</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Пользователь</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Выйти</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Сброс</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wrong name or password. %n attempt(s) left before the lock-out.</source>
+        <translation>
+            <numerusform>Неверное имя или пароль. До блокировки осталась %n попытка.</numerusform>
+            <numerusform>Неверное имя или пароль. До блокировки осталось %n попытки.</numerusform>
+            <numerusform>Неверное имя или пароль. До блокировки осталось %n попыток.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Too many failed log-ins: %1 is locked until %2. An administrator can unlock it.</source>
+        <translation>Слишком много неудачных попыток входа: %1 заблокирован до %2. Разблокировать может администратор.</translation>
+    </message>
+    <message>
+        <source>Cannot log in: %1</source>
+        <translation>Не удаётся войти: %1</translation>
     </message>
 </context>
 <context>
@@ -5704,6 +5929,26 @@ Quit anyway?</source>
         <source>Run history</source>
         <translation>История серий</translation>
     </message>
+    <message>
+        <source>Users and audit</source>
+        <translation>Пользователи и аудит</translation>
+    </message>
+    <message>
+        <source>Logged in</source>
+        <translation>Вошёл</translation>
+    </message>
+    <message>
+        <source>Log out</source>
+        <translation>Выйти из системы</translation>
+    </message>
+    <message>
+        <source>Users…</source>
+        <translation>Пользователи…</translation>
+    </message>
+    <message>
+        <source>Audit trail…</source>
+        <translation>Журнал аудита…</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::ShaftRunPanel</name>
@@ -6370,6 +6615,164 @@ Your edits are still here.</source>
             <numerusform>%n изменённых инструмента на странице «Инструменты»</numerusform>
             <numerusform>%n изменённых инструментов на странице «Инструменты»</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::UserSession</name>
+    <message>
+        <source>Operator</source>
+        <translation>Оператор</translation>
+    </message>
+    <message>
+        <source>Engineer</source>
+        <translation>Инженер</translation>
+    </message>
+    <message>
+        <source>Quality</source>
+        <translation>ОТК</translation>
+    </message>
+    <message>
+        <source>Administrator</source>
+        <translation>Администратор</translation>
+    </message>
+    <message>
+        <source>nobody is logged in</source>
+        <translation>никто не вошёл</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::UsersDialog</name>
+    <message>
+        <source>Users</source>
+        <translation>Пользователи</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Имя</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Роль</translation>
+    </message>
+    <message>
+        <source>Logs in with</source>
+        <translation>Способ входа</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source>PIN (digits)</source>
+        <translation>PIN (цифры)</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Пароль</translation>
+    </message>
+    <message>
+        <source> failed log-ins</source>
+        <translation> неудачных входов</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> мин</translation>
+    </message>
+    <message>
+        <source>PIN or password</source>
+        <translation>PIN или пароль</translation>
+    </message>
+    <message>
+        <source>Add user</source>
+        <translation>Добавить</translation>
+    </message>
+    <message>
+        <source>Set role</source>
+        <translation>Назначить роль</translation>
+    </message>
+    <message>
+        <source>Set PIN or password</source>
+        <translation>Задать PIN или пароль</translation>
+    </message>
+    <message>
+        <source>Unlock</source>
+        <translation>Разблокировать</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Удалить</translation>
+    </message>
+    <message>
+        <source>Log-in rules</source>
+        <translation>Правила входа</translation>
+    </message>
+    <message>
+        <source>Lock out after</source>
+        <translation>Блокировать после</translation>
+    </message>
+    <message>
+        <source>Lock-out lasts</source>
+        <translation>Блокировка длится</translation>
+    </message>
+    <message>
+        <source>Log out when idle for</source>
+        <translation>Выход при бездействии</translation>
+    </message>
+    <message>
+        <source>Apply the rules</source>
+        <translation>Применить правила</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрыть</translation>
+    </message>
+    <message>
+        <source>locked until %1</source>
+        <translation>заблокирован до %1</translation>
+    </message>
+    <message>
+        <source>active</source>
+        <translation>активен</translation>
+    </message>
+    <message>
+        <source>PIN</source>
+        <translation>PIN</translation>
+    </message>
+    <message>
+        <source>Not changed: %1</source>
+        <translation>Не изменено: %1</translation>
+    </message>
+    <message>
+        <source>%1 added.</source>
+        <translation>%1 добавлен.</translation>
+    </message>
+    <message>
+        <source>%1 is now %2.</source>
+        <translation>%1 теперь: %2.</translation>
+    </message>
+    <message>
+        <source>select a user first</source>
+        <translation>сначала выберите пользователя</translation>
+    </message>
+    <message>
+        <source>New PIN or password of %1 stored.</source>
+        <translation>Новый PIN или пароль пользователя %1 сохранён.</translation>
+    </message>
+    <message>
+        <source>%1 unlocked.</source>
+        <translation>%1 разблокирован.</translation>
+    </message>
+    <message>
+        <source>%1 removed.</source>
+        <translation>%1 удалён.</translation>
+    </message>
+    <message>
+        <source>Log-in rules stored.</source>
+        <translation>Правила входа сохранены.</translation>
     </message>
 </context>
 <context>

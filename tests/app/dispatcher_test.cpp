@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QTemporaryDir>
 
@@ -68,6 +69,10 @@ TEST(Gui, StartsOffscreenOnTheSimulatorAndQuitsCleanly) {
     EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
     EXPECT_TRUE(QFileInfo::exists(home.filePath(QStringLiteral("data/TrueTurn/TrueTurn/history.sqlite"))))
         << "the embedded history is created in the user's data folder";
+    // A fresh machine has no user: the first start asks for the administrator (the log says so).
+    QFile log(home.filePath(QStringLiteral("data/TrueTurn/TrueTurn/logs/trueturn.log")));
+    ASSERT_TRUE(log.open(QIODevice::ReadOnly)) << log.fileName().toStdString();
+    EXPECT_TRUE(log.readAll().contains("first start: no user yet, asking for the administrator"));
 }
 
 TEST(Gui, KioskModeStartsAndTheTestTimerEndsItWithoutTheEngineersQuestion) {

@@ -21,6 +21,7 @@
 
 #include "devices/api/device_manager.h"
 #include "ui/app_state.h"
+#include "ui/auth/audit_trail.h"
 #include "ui/devices/device_status_bridge.h"
 #include "ui/devices/settings_form.h"
 #include "ui/empty_state.h"
@@ -448,7 +449,14 @@ QString DevicesPage::unappliedEdits() const {
 void DevicesPage::apply() {
     if (!m_selection) return;
     const QVariantMap values = m_form->values();
+    // Device settings are the engineer's (enforced here and audited with old and new values).
+    AuditTrail trail(context());
+    QVariantMap before = m_selection->deviceId.isEmpty() ? QVariantMap() : m_savedValues;
+    if (!m_selection->deviceId.isEmpty()) before.insert(QStringLiteral("name"), m_savedName);
+    QVariantMap after = values;
+    after.insert(QStringLiteral("name"), m_name->text());
     try {
+        trail.require(core::auth::Permission::EditSettings);
         if (m_selection->deviceId.isEmpty()) {
             const QString id = m_manager->addDevice(m_selection->pluginId, m_selection->kind, m_name->text(), values);
             m_selection->deviceId = id;
@@ -458,11 +466,12 @@ void DevicesPage::apply() {
             m_manager->updateDevice(m_selection->deviceId, m_name->text(), values);
             selectDevice(m_selection->deviceId);
         }
-    } catch (const std::invalid_argument& e) {
+    } catch (const std::exception& e) {  // a refused value, or a role without EditSettings
         m_problems->setText(QString::fromStdString(e.what()));
         m_problems->setVisible(true);
         return;
     }
+    trail.recordValues(QStringLiteral("setting"), QStringLiteral("device ") + m_selection->deviceId, before, after);
     if (devices::Device* d = selectedDevice()) d->open();
     saveSettings();
     refreshStatus();
@@ -485,6 +494,16 @@ void DevicesPage::removeSelected() {
     }
     const devices::DeviceEntry* e = m_manager->entry(m_selection->deviceId);
     if (!e) return;
+    AuditTrail trail(context());
+    try {
+        trail.require(core::auth::Permission::EditSettings);
+    } catch (const std::exception& refused) {
+        m_problems->setText(QString::fromStdString(refused.what()));
+        m_problems->setVisible(true);
+        return;
+    }
+    QVariantMap before = e->settings;
+    before.insert(QStringLiteral("name"), e->name);
     if (context().prompt &&
         context().prompt->ask(this, tr("Remove device"),
                               tr("Remove %1? Its settings are deleted; the loop can no longer use it.").arg(e->name)) !=
@@ -493,6 +512,7 @@ void DevicesPage::removeSelected() {
     const QString id = m_selection->deviceId;
     m_selection.reset();
     m_manager->removeDevice(id);
+    trail.recordValues(QStringLiteral("setting"), QStringLiteral("device ") + id, before, {});
     saveSettings();
     if (m_list->count() > 0) m_list->setCurrentRow(0);
     showSelection();

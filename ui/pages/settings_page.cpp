@@ -2,12 +2,18 @@
 
 #include <QComboBox>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QSettings>
 #include <QVBoxLayout>
 
 #include "ui/app_state.h"
+#include "ui/auth/audit_dialog.h"
+#include "ui/auth/audit_trail.h"
+#include "ui/auth/user_session.h"
+#include "ui/auth/users_dialog.h"
 #include "ui/language.h"
 #include "ui/pages/planned_page.h"
 
@@ -25,8 +31,19 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
       m_operator(new QLineEdit(this)),
       m_databaseLabel(new QLabel(this)),
       m_database(new QLabel(this)),
-      m_sectionGeneral(new QLabel(this)) {
+      m_sectionGeneral(new QLabel(this)),
+      m_sectionUsers(new QLabel(this)),
+      m_userLabel(new QLabel(this)),
+      m_user(new QLabel(this)),
+      m_logOut(new QPushButton(this)),
+      m_users(new QPushButton(this)),
+      m_audit(new QPushButton(this)) {
     m_sectionGeneral->setObjectName(QStringLiteral("SectionTitle"));
+    m_sectionUsers->setObjectName(QStringLiteral("SectionTitle"));
+    m_user->setObjectName(QStringLiteral("sessionUser"));
+    m_logOut->setObjectName(QStringLiteral("logOutButton"));
+    m_users->setObjectName(QStringLiteral("usersButton"));
+    m_audit->setObjectName(QStringLiteral("auditButton"));
     m_language->setObjectName(QStringLiteral("languageCombo"));
     m_operator->setObjectName(QStringLiteral("operatorEdit"));
     m_operator->setMaxLength(64);
@@ -42,16 +59,33 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
     layout->setContentsMargins(32, 24, 32, 24);
     layout->addWidget(m_sectionGeneral);
     layout->addLayout(form);
+    layout->addSpacing(16);
+    layout->addWidget(m_sectionUsers);
+    auto* userRow = new QHBoxLayout;
+    userRow->setSpacing(12);
+    userRow->addWidget(m_userLabel);
+    userRow->addWidget(m_user, 1);
+    userRow->addWidget(m_logOut);
+    userRow->addWidget(m_users);
+    userRow->addWidget(m_audit);
+    layout->addLayout(userRow);
     layout->addStretch(1);
 
     fillLanguages();
     const QString savedOperator = QSettings().value(kOperatorKey).toString();
     m_operator->setText(savedOperator);
-    if (context.state) context.state->setOperatorName(savedOperator);
+    if (context.state && !context.session) context.state->setOperatorName(savedOperator);
     m_database->setText(context.databasePath);
 
     connect(m_language, &QComboBox::activated, this, &SettingsPage::onLanguageChosen);
     connect(m_operator, &QLineEdit::editingFinished, this, &SettingsPage::onOperatorEdited);
+    connect(m_users, &QPushButton::clicked, this, &SettingsPage::openUsers);
+    connect(m_audit, &QPushButton::clicked, this, &SettingsPage::openAudit);
+    if (context.session) {
+        connect(m_logOut, &QPushButton::clicked, context.session, [s = context.session] { s->logOut(); });
+        connect(context.session, &UserSession::loggedIn, this, &SettingsPage::showSession);
+        connect(context.session, &UserSession::loggedOut, this, &SettingsPage::showSession);
+    }
     retranslate();
 }
 
@@ -66,7 +100,13 @@ void SettingsPage::fillLanguages() {
 }
 
 void SettingsPage::onLanguageChosen(int index) {
-    if (context().language) context().language->apply(m_language->itemData(index).toString());
+    if (!context().language) return;
+    const QString before = context().language->current();
+    const QString after = m_language->itemData(index).toString();
+    if (before == after) return;
+    context().language->apply(after);
+    AuditTrail(context()).recordValues(QStringLiteral("setting"), QStringLiteral("terminal"),
+                                       {{QStringLiteral("language"), before}}, {{QStringLiteral("language"), after}});
 }
 
 void SettingsPage::onOperatorEdited() {
@@ -75,7 +115,40 @@ void SettingsPage::onOperatorEdited() {
     if (context().state) context().state->setOperatorName(name);
 }
 
+void SettingsPage::showSession() {
+    UserSession* session = context().session;
+    m_sectionUsers->setVisible(session != nullptr);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_userLabel, m_user, m_logOut, m_users, m_audit})
+        w->setVisible(session != nullptr);
+    if (!session) return;
+    m_user->setText(session->describe());
+    // The logged-in user is the name recorded with every change.
+    m_operator->setReadOnly(true);
+    m_operator->setText(session->identity() ? QString::fromStdString(session->identity()->name) : QString());
+    m_logOut->setEnabled(session->identity().has_value());
+    m_users->setEnabled(session->may(core::auth::Permission::ManageUsers));
+    m_audit->setEnabled(session->may(core::auth::Permission::ViewAudit));
+}
+
+void SettingsPage::openUsers() {
+    storage::UserStore* users = context().data().users();
+    if (!users) return;
+    UsersDialog dialog(*users, this);
+    dialog.exec();
+}
+
+void SettingsPage::openAudit() {
+    AuditDialog dialog(context(), this);
+    dialog.exec();
+}
+
 void SettingsPage::retranslate() {
+    m_sectionUsers->setText(tr("Users and audit"));
+    m_userLabel->setText(tr("Logged in"));
+    m_logOut->setText(tr("Log out"));
+    m_users->setText(tr("Users…"));
+    m_audit->setText(tr("Audit trail…"));
+    showSession();
     m_sectionGeneral->setText(tr("Terminal"));
     m_languageLabel->setText(tr("Language"));
     m_operatorLabel->setText(tr("Operator"));

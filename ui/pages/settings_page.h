@@ -10,7 +10,8 @@ class QPushButton;
 namespace tt::ui {
 
 /// Operator and terminal settings: interface language, the operator's name (recorded with every
-/// change the operator applies), and where the run history is stored.
+/// change the operator applies; the logged-in user when there is a session), where the run history is
+/// stored; who is logged in, log out, the users (administrator) and the audit trail.
 class SettingsPage : public Page {
     Q_OBJECT
 public:
@@ -22,6 +23,10 @@ private:
     void fillLanguages();
     void onLanguageChosen(int index);
     void onOperatorEdited();
+    /// The logged-in user, what they may open, the operator field following the session.
+    void showSession();
+    void openUsers();
+    void openAudit();
 
     QLabel* m_languageLabel;
     QComboBox* m_language;
@@ -30,6 +35,12 @@ private:
     QLabel* m_databaseLabel;
     QLabel* m_database;
     QLabel* m_sectionGeneral;
+    QLabel* m_sectionUsers;
+    QLabel* m_userLabel;
+    QLabel* m_user;
+    QPushButton* m_logOut;
+    QPushButton* m_users;
+    QPushButton* m_audit;
 };
 
 }  // namespace tt::ui
