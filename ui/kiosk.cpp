@@ -3,6 +3,11 @@
 #include <QCoreApplication>
 #include <QWidget>
 
+#include "core/auth/permission.h"
+#include "core/storage/data_stores.h"
+#include "ui/app_context.h"
+#include "ui/auth/login_dialog.h"
+#include "ui/auth/user_session.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -15,6 +20,16 @@ bool engineerMayQuit(QWidget* parent, Prompt* prompt) {
         "This terminal runs in kiosk mode: only an engineer may quit it.\n\nAre you an engineer, and do you want "
         "to quit TrueTurn?");
     return prompt->ask(parent, title, question) == Prompt::Answer::Yes;
+}
+
+bool engineerMayQuit(AppContext& context, QWidget* parent) {
+    constexpr auto kQuitting = core::auth::Permission::EditSettings;  // the engineer's and administrator's
+    UserSession* session = context.session;
+    if (!session || session->may(kQuitting)) return engineerMayQuit(parent, context.prompt);
+    storage::UserStore* users = context.data().users();
+    if (!users) return false;
+    LoginDialog logIn(*users, *session, /*allowQuit=*/true, parent);
+    return logIn.exec() == QDialog::Accepted && session->may(kQuitting);
 }
 
 void showAsKiosk(QWidget* window) {

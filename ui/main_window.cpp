@@ -225,7 +225,7 @@ void MainWindow::showAbout() {
 }
 
 bool MainWindow::mayClose() {
-    if (m_kiosk && !engineerMayQuit(this, m_context.prompt)) return false;
+    if (m_kiosk && !engineerMayQuit(m_context, this)) return false;
     QStringList reasons;
     const AppState::Loop loop = m_context.state ? m_context.state->loop() : AppState::Loop::Idle;
     if (loop == AppState::Loop::Running || loop == AppState::Loop::Paused)

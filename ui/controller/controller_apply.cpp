@@ -1,9 +1,13 @@
 #include "ui/controller/controller_apply.h"
 
+#include <QList>
 #include <QLoggingCategory>
+#include <QPair>
 #include <QStringList>
+#include <QVariantMap>
 
 #include "ui/app_state.h"
+#include "ui/auth/audit_trail.h"
 #include "ui/log_categories.h"
 
 namespace tt::ui {
@@ -14,31 +18,58 @@ QString number(double v) {
     return QString::number(v, 'g', 6);
 }
 
-void compare(QStringList& out, const QString& what, double before, double after) {
-    if (before != after) out << QStringLiteral("%1 %2 -> %3").arg(what, number(before), number(after));
+/// The tuning as named values, in the order they are described ("delay z", "point 1 R1", ...).
+QList<QPair<QString, QString>> tuningValues(const core::RunToRunSetup& setup, Eigen::Index points) {
+    QList<QPair<QString, QString>> values;
+    values.append({QStringLiteral("delay z"), number(setup.plant.delay)});
+    for (Eigen::Index i = 0; i < points; ++i) {
+        values.append({QStringLiteral("point %1 R1").arg(i + 1), number(setup.weights.R1(i, i))});
+        values.append({QStringLiteral("point %1 R2").arg(i + 1), number(setup.weights.R2(i, i))});
+    }
+    values.append({QStringLiteral("max correction mm"), number(setup.limits.maxAbsMm)});
+    values.append({QStringLiteral("max step mm"), number(setup.limits.maxStepMm)});
+    values.append({QStringLiteral("dead band mm"), number(setup.ewma.deadBandMm)});
+    const std::string filter =
+        setup.plant.points.empty() ? std::string() : setup.plant.points[0].disturbance.describe();
+    values.append({QStringLiteral("shaping filter"), QString::fromStdString(filter)});
+    return values;
+}
+
+/// The values that differ between two setups: name, before, after.
+struct TuningChange {
+    QString name;
+    QString before;
+    QString after;
+};
+
+QList<TuningChange> tuningChanges(const core::RunToRunSetup& before, const core::RunToRunSetup& after) {
+    const Eigen::Index points = std::min(before.weights.R1.rows(), after.weights.R1.rows());
+    const auto b = tuningValues(before, points);
+    const auto a = tuningValues(after, points);
+    QList<TuningChange> changes;
+    for (qsizetype i = 0; i < b.size(); ++i)
+        if (b[i].second != a[i].second) changes.append({b[i].first, b[i].second, a[i].second});
+    return changes;
 }
 
 }  // namespace
 
 QString describeTuningChange(const core::RunToRunSetup& before, const core::RunToRunSetup& after) {
     QStringList out;
-    compare(out, QStringLiteral("delay z"), before.plant.delay, after.plant.delay);
-    const Eigen::Index n = std::min(before.weights.R1.rows(), after.weights.R1.rows());
-    for (Eigen::Index i = 0; i < n; ++i) {
-        compare(out, QStringLiteral("point %1 R1").arg(i + 1), before.weights.R1(i, i), after.weights.R1(i, i));
-        compare(out, QStringLiteral("point %1 R2").arg(i + 1), before.weights.R2(i, i), after.weights.R2(i, i));
-    }
-    compare(out, QStringLiteral("max correction mm"), before.limits.maxAbsMm, after.limits.maxAbsMm);
-    compare(out, QStringLiteral("max step mm"), before.limits.maxStepMm, after.limits.maxStepMm);
-    compare(out, QStringLiteral("dead band mm"), before.ewma.deadBandMm, after.ewma.deadBandMm);
-    const std::string da = before.plant.points.empty() ? std::string() : before.plant.points[0].disturbance.describe();
-    const std::string db = after.plant.points.empty() ? std::string() : after.plant.points[0].disturbance.describe();
-    if (da != db)
-        out << QStringLiteral("shaping filter %1 -> %2").arg(QString::fromStdString(da), QString::fromStdString(db));
+    for (const TuningChange& change : tuningChanges(before, after))
+        out << QStringLiteral("%1 %2 -> %3").arg(change.name, change.before, change.after);
     return out.join(QStringLiteral("; "));
 }
 
 QString recordTuningChange(AppContext& context, const core::RunToRunSetup& before, const core::RunToRunSetup& after) {
+    QVariantMap valuesBefore;
+    QVariantMap valuesAfter;
+    for (const TuningChange& change : tuningChanges(before, after)) {
+        valuesBefore.insert(change.name, change.before);
+        valuesAfter.insert(change.name, change.after);
+    }
+    AuditTrail(context).recordValues(storage::audit_category::kController, QStringLiteral("controller"), valuesBefore,
+                                     valuesAfter);
     const QString who = context.state ? context.state->operatorName() : QString();
     const QString record =
         QStringLiteral("controller tuning applied by %1: %2")

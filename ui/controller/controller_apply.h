@@ -11,9 +11,9 @@ namespace tt::ui {
 /// "point 2 R2 0.01 -> 0.02"), in English for the record; empty when nothing changed.
 QString describeTuningChange(const core::RunToRunSetup& before, const core::RunToRunSetup& after);
 
-/// Records that the operator in `context` applied `after` in place of `before` (who, what). Today it writes
-/// the record to the log (category trueturn.loop); the audit trail takes it over at integration. Returns
-/// the record's text.
+/// Records that the user in `context` applied `after` in place of `before`: one audit-trail row per changed
+/// value (category "controller", who, when, old and new) and a line in the log (trueturn.loop). Returns the
+/// log line's text.
 QString recordTuningChange(AppContext& context, const core::RunToRunSetup& before, const core::RunToRunSetup& after);
 
 }  // namespace tt::ui

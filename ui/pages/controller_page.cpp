@@ -13,6 +13,7 @@
 
 #include "config/plant_config.h"
 #include "core/model/disturbance_model.h"
+#include "ui/auth/audit_trail.h"
 #include "ui/controller/controller_apply.h"
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
@@ -347,6 +348,12 @@ void ControllerPage::apply() {
     const core::RunToRunSetup next = m_shown->setup;
     const QString change = describeTuningChange(m_applied, next);
     if (change.isEmpty()) return;
+    try {
+        AuditTrail(context()).require(core::auth::Permission::EditControllerTuning);
+    } catch (const core::auth::PermissionDenied& refused) {
+        context().prompt->warn(this, tr("Apply tuning"), QString::fromStdString(refused.what()));
+        return;
+    }
     QString question = tr("Apply the new controller tuning from the next part?");
     if (m_shown->preview->lqgMargins.delayMarginBelowOnePart)
         question += QStringLiteral("\n\n") + tr("Warning: its delay margin is under one part: a plant one part "
