@@ -6,6 +6,7 @@
 
 #include "core/control/correction_limits.h"
 #include "core/control/ewma_controller.h"
+#include "core/control/integral_action.h"
 #include "core/control/lqg_controller.h"
 #include "core/control/lqg_design.h"
 #include "core/control/run_to_run_plant.h"
@@ -21,6 +22,7 @@ struct RunToRunSetup {
     LqgControllerOptions lqg;
     EwmaOptions ewma;
     bool ewmaWeightAuto = true;  ///< choose the EWMA weight on a grid (fair baseline) unless one is given
+    IntegralAction integral;     ///< LQG only: the integrating disturbance state of the design model
 };
 
 /// The controllers a run can use.

@@ -15,6 +15,7 @@
 #include "core/loop/loop_events.h"
 #include "core/loop/loop_state.h"
 #include "core/loop/measurement_session.h"
+#include "core/loop/mismatch_monitor.h"
 #include "core/ports/clock.h"
 #include "core/ports/correction_output.h"
 #include "core/ports/diameter_gauge.h"
@@ -106,6 +107,9 @@ public:
     const LoopConfig& config() const { return m_config; }
     /// The run-to-run controller the loop drives.
     const RunToRunController& controller() const { return *m_controller; }
+    /// The plant no longer matched the model and the CNC keeps the last correction (MismatchAction::Hold)
+    /// until the run is restarted.
+    bool holdingOnMismatch() const { return m_holding; }
 
 private:
     struct InProgress {
@@ -130,6 +134,7 @@ private:
                                 double timeS) const;
     void offerMeasurement(PartMeasurementRecord& record);
     void judgeTolerances(const PartMeasurementRecord& record);  // out-of-tolerance alarms, pause on scrap
+    void watchModel(std::int64_t partNumber);                   // the mismatch monitor after a measurement
     void setState(LoopState state, const Notice& status);
     void alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part = std::nullopt);
     void fault(const Notice& what);
@@ -144,6 +149,8 @@ private:
     LoopPorts m_ports;
     std::unique_ptr<RunToRunController> m_controller;
     CorrectionLimiter m_limiter;
+    MismatchMonitor m_monitor;
+    bool m_holding = false;
     LoopListener* m_listener = nullptr;
 
     LoopState m_state = LoopState::Idle;

@@ -27,6 +27,8 @@ public:
         if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
             if (const auto verdict = event.measurement->verdict()) m_record.verdicts.add(*verdict);
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == "out-of-tolerance") ++m_record.toleranceAlarms;
+        if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == kModelMismatchAlarm)
+            m_record.modelAlarms.push_back({event.partNumber, event.alarmKind, event.notice});
         if (m_next) m_next->onLoopEvent(event);
     }
 

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,6 +30,13 @@ struct LatheRunSpec {
     std::vector<double> profileZMm;     ///< where to sample each finished part's true profile
 };
 
+/// An alarm of the run as the loop raised it (its stable kind, the part, the notice with its data).
+struct RecordedAlarm {
+    std::int64_t part = 0;
+    std::string kind;
+    Notice notice;
+};
+
 /// What the run produced: the true (simulated) diameter deviation of every part at the control points
 /// and at the profile positions, indexed by part number - 1.
 struct LatheRunRecord {
@@ -40,6 +48,7 @@ struct LatheRunRecord {
     std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
     VerdictCounts verdicts;                           ///< measured parts by tolerance verdict (this session)
     std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
+    std::vector<RecordedAlarm> modelAlarms;           ///< the mismatch monitor's alarms ("model-mismatch")
 };
 
 /// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until
