@@ -197,6 +197,10 @@ void addRobustOptions(CommandParser& parser) {
                      QStringLiteral("Step variance of the integrating state as a share of the disturbance "
                                     "variance, 1e-6..1 (default: the preset's, 0.3)."),
                      QStringLiteral("w"));
+    parser.addOption(QStringLiteral("drift-weight"),
+                     QStringLiteral("Double EWMA: the drift weight lambda2 in (0, 1) (default 0.1; the offset's "
+                                    "weight is --ewma-weight)."),
+                     QStringLiteral("w"));
     parser.addOption(QStringLiteral("mismatch-action"),
                      QStringLiteral("When the plant no longer matches the model: hold (the CNC keeps the last "
                                     "correction) or alarm (alarm only); default: the preset's, hold."),
@@ -206,7 +210,7 @@ void addRobustOptions(CommandParser& parser) {
 /// The robustness options given on the command line (a resumed run keeps its own settings).
 bool robustOptionsSet(const CommandParser& parser) {
     for (const char* option : {"plant-gain", "plant-delay", "step-at", "step-mm", "step-point", "integral",
-                               "integral-weight", "mismatch-action"})
+                               "integral-weight", "mismatch-action", "drift-weight"})
         if (parser.isSet(QString::fromLatin1(option))) return true;
     return false;
 }
@@ -243,6 +247,12 @@ void applyRobustOptions(const CommandParser& parser, config::LoopScenario& scena
     if (parser.isSet(QStringLiteral("integral-weight")))
         scenario.control.integral.weight =
             parser.number(QStringLiteral("integral-weight"), core::kMinIntegralWeight, core::kMaxIntegralWeight);
+    if (parser.isSet(QStringLiteral("drift-weight"))) {
+        if (parser.value(QStringLiteral("controller")) != QLatin1String("dewma"))
+            throw UsageError("--drift-weight: only with --controller dewma");
+        scenario.control.ewma.driftWeight = parser.number(QStringLiteral("drift-weight"), 0.0, 0.999);
+        if (scenario.control.ewma.driftWeight <= 0.0) throw UsageError("--drift-weight: must be in (0, 1)");
+    }
     if (parser.isSet(QStringLiteral("mismatch-action")))
         scenario.mismatchMonitor.action = core::mismatchActionFromName(
             parser.choice(QStringLiteral("mismatch-action"), {QStringLiteral("hold"), QStringLiteral("alarm")})
@@ -295,6 +305,11 @@ void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const conf
                                   {QStringLiteral("held"), a.notice.cause == "hold"},
                                   {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}});
     out.insert(QStringLiteral("alarms"), alarms);
+    out.insert(QStringLiteral("corrections"),
+               QJsonObject{{QStringLiteral("max_abs_mm"), r.maxCorrectionMm},
+                           {QStringLiteral("max_step_mm"), r.maxCorrectionStepMm},
+                           {QStringLiteral("limit_abs_mm"), scenario.control.limits.maxAbsMm},
+                           {QStringLiteral("limit_step_mm"), scenario.control.limits.maxStepMm}});
 }
 
 /// The step residual and the model alarms in the text output.
@@ -331,8 +346,9 @@ int run(const QStringList& arguments) {
                      QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));
-    parser.addOption(QStringLiteral("controller"), QStringLiteral("lqg, ewma or open (default lqg)."),
-                     QStringLiteral("kind"), QStringLiteral("lqg"));
+    parser.addOption(QStringLiteral("controller"),
+                     QStringLiteral("lqg, ewma, dewma (double EWMA) or open (default lqg)."), QStringLiteral("kind"),
+                     QStringLiteral("lqg"));
     parser.addOption(QStringLiteral("ewma-weight"),
                      QStringLiteral("EWMA weight in (0, 1], or auto: the best on a grid 0.05..1 (default: the "
                                     "preset's)."),
@@ -408,13 +424,13 @@ int run(const QStringList& arguments) {
         choice.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
         choice.controller = core::controllerKindFromName(
             parser
-                .choice(QStringLiteral("controller"),
-                        {QStringLiteral("lqg"), QStringLiteral("ewma"), QStringLiteral("open")})
+                .choice(QStringLiteral("controller"), {QStringLiteral("lqg"), QStringLiteral("ewma"),
+                                                       QStringLiteral("open"), QStringLiteral("dewma")})
                 .toStdString());
         choice.preset = parser.value(QStringLiteral("preset"));
         if (parser.isSet(QStringLiteral("ewma-weight"))) {
-            if (choice.controller != core::ControllerKind::Ewma)
-                throw UsageError("--ewma-weight: only with --controller ewma");
+            if (choice.controller != core::ControllerKind::Ewma && choice.controller != core::ControllerKind::Dewma)
+                throw UsageError("--ewma-weight: only with --controller ewma or dewma");
             if (parser.value(QStringLiteral("ewma-weight")) == QLatin1String("auto")) {
                 choice.ewmaAuto = true;
             } else {

@@ -15,6 +15,7 @@ Command makeFitDeformationCommand();
 Command makeScheduleFeedCommand();
 Command makeCornerCommand();
 Command makeReportCommand();
+Command makeIdentifyCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -30,6 +31,7 @@ const std::vector<Command>& commands() {
         makeCornerCommand(),
         makeFeedStabiliseCommand(),
         makeReportCommand(),
+        makeIdentifyCommand(),
     };
     return all;
 }

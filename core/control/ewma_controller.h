@@ -20,6 +20,11 @@ struct EwmaOptions {
     double warningMm = std::numeric_limits<double>::infinity();  ///< |measured deviation| >= this: warning
     double alarmMm = std::numeric_limits<double>::infinity();    ///< >= this: alarm, value not used
     int historyParts = 64;  ///< applied corrections kept to pair late measurements with their part
+    /// lambda2 in [0, 1): 0 = EWMA; > 0 = double EWMA (Butler & Stefani 1994), which also tracks a drift per
+    /// part p(k) = lambda2 (m - k_i u - offset(k-1)) + (1 - lambda2) p(k-1) and corrects for offset +
+    /// driftHorizonParts x p (the drift over the transport delay).
+    double driftWeight = 0.0;
+    int driftHorizonParts = 1;  ///< parts the drift is extrapolated over (the delay z), 1 .. 8
 
     /// Throws std::invalid_argument for a weight outside (0, 1], negative bands, warning > alarm.
     void validate() const;
@@ -37,7 +42,7 @@ public:
     /// `gain`: k_i per point. Throws std::invalid_argument for invalid options or limits.
     EwmaController(const Eigen::VectorXd& gain, const CorrectionLimits& limits, const EwmaOptions& options);
 
-    std::string name() const override { return "ewma"; }
+    std::string name() const override { return m_options.driftWeight > 0.0 ? "dewma" : "ewma"; }
     int pointCount() const override { return static_cast<int>(m_gain.size()); }
     MeasurementVerdict addMeasurement(const PartMeasurement& measurement) override;
     Eigen::VectorXd nextCorrection(std::int64_t partNumber) override;
@@ -48,6 +53,8 @@ public:
     const std::vector<ToleranceBand>& bands() const { return m_bands; }
     /// Estimated uncorrected deviation per point, mm of diameter.
     const Eigen::VectorXd& offsetMm() const { return m_offset; }
+    /// Estimated drift per part and point (double EWMA; zero for EWMA), mm of diameter.
+    const Eigen::VectorXd& driftMm() const { return m_drift; }
     /// The options the controller was made with.
     const EwmaOptions& options() const { return m_options; }
 
@@ -62,6 +69,7 @@ private:
     std::int64_t m_firstPart = 0;
     std::int64_t m_lastPart = 0;
     Eigen::VectorXd m_offset;
+    Eigen::VectorXd m_drift;
     Eigen::VectorXd m_lastApplied;
     std::vector<ToleranceBand> m_bands;
     std::vector<std::int64_t> m_historyPart;      // ring: part number per slot (-1: empty)

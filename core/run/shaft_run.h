@@ -49,6 +49,8 @@ struct LatheRunRecord {
     VerdictCounts verdicts;                           ///< measured parts by tolerance verdict (this session)
     std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
     std::vector<RecordedAlarm> modelAlarms;           ///< the mismatch monitor's alarms ("model-mismatch")
+    double maxCorrectionMm = 0.0;                     ///< largest |correction| sent to the CNC, radial mm
+    double maxCorrectionStepMm = 0.0;                 ///< largest change of a point's correction between parts
 };
 
 /// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until

@@ -29,7 +29,7 @@ ShaftRunPlan planShaftRun(const ShaftScenario& scenario, const ShaftRunChoice& c
                                         ? withIntegralAction(scenario.control.plant, scenario.control.integral)
                                         : scenario.control.plant);
     plan.controller = choice.controller;
-    plan.ewmaWeight = choice.controller == ControllerKind::Ewma
+    plan.ewmaWeight = choice.controller == ControllerKind::Ewma || choice.controller == ControllerKind::Dewma
                           ? chooseEwmaWeight(scenario.control, plan.plant, choice.ewmaWeight)
                           : scenario.control.ewma.weight;
     plan.loop = scenario.loopConfig(choice.controller != ControllerKind::Open, choice.lastPartNumber);

@@ -72,11 +72,16 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.controller = options.controller;
     result.delay = closedPlan.plant.delay;
     result.parts = options.parts;
-    if (options.controller == ControllerKind::Ewma) result.ewmaWeight = closedPlan.ewmaWeight;
+    if (options.controller == ControllerKind::Ewma || options.controller == ControllerKind::Dewma)
+        result.ewmaWeight = closedPlan.ewmaWeight;
     // The disturbance as modelled, without the controller's integrating state (integral action).
-    const SteadyStateVariances analytic = analyseSteadyState(
-        buildRunToRunPlant(scenario.control.plant),
-        controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
+    // No analytic figure for the double EWMA (no linear model of it here).
+    const SteadyStateVariances analytic =
+        options.controller == ControllerKind::Dewma
+            ? SteadyStateVariances{}
+            : analyseSteadyState(
+                  buildRunToRunPlant(scenario.control.plant),
+                  controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
 
     const LatheRunRecord closed = runOnce(scenario, seed, closedPlan, options, true);
     result.runId = closed.runId;
@@ -85,6 +90,8 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.verdicts = closed.verdicts;
     result.toleranceAlarms = closed.toleranceAlarms;
     result.modelAlarms = closed.modelAlarms;
+    result.maxCorrectionMm = closed.maxCorrectionMm;
+    result.maxCorrectionStepMm = closed.maxCorrectionStepMm;
     if (scenario.plantMismatch.step) result.step = stepResidual(scenario, seed, closedPlan, options, closed);
 
     const std::int64_t from = options.warmupParts + 1;

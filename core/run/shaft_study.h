@@ -71,6 +71,8 @@ struct LatheStudyResult {
     SimulationOutcome outcome;
     std::optional<StepResidual> step;        ///< when the scenario's plant has a step
     std::vector<RecordedAlarm> modelAlarms;  ///< the mismatch monitor's alarms in the closed run
+    double maxCorrectionMm = 0.0;            ///< the closed run's largest |correction| sent, radial mm
+    double maxCorrectionStepMm = 0.0;        ///< and its largest change between parts, radial mm
 };
 
 /// Runs the closed loop of `scenario` (planned by planShaftRun: with the feed-forward unless open) with the
