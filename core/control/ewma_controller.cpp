@@ -93,7 +93,9 @@ Eigen::VectorXd EwmaController::nextCorrection(std::int64_t partNumber) {
     }
     Eigen::VectorXd candidate(m_gain.size());
     for (Eigen::Index i = 0; i < m_gain.size(); ++i) {
-        const double expected = m_offset(i) + m_options.driftHorizonParts * m_drift(i);
+        // a + p predicts the next part (p -> D / lambda1 on a ramp of D per part, the offset's lag included);
+        // each further part of the horizon adds the drift D = lambda1 p.
+        const double expected = m_offset(i) + (1.0 + (m_options.driftHorizonParts - 1) * m_options.weight) * m_drift(i);
         const double predicted = expected + m_gain(i) * m_lastApplied(i);
         candidate(i) = std::abs(predicted) < m_options.deadBandMm ? m_lastApplied(i) : -expected / m_gain(i);
     }

@@ -20,9 +20,10 @@ struct EwmaOptions {
     double warningMm = std::numeric_limits<double>::infinity();  ///< |measured deviation| >= this: warning
     double alarmMm = std::numeric_limits<double>::infinity();    ///< >= this: alarm, value not used
     int historyParts = 64;  ///< applied corrections kept to pair late measurements with their part
-    /// lambda2 in [0, 1): 0 = EWMA; > 0 = double EWMA (Butler & Stefani 1994), which also tracks a drift per
-    /// part p(k) = lambda2 (m - k_i u - offset(k-1)) + (1 - lambda2) p(k-1) and corrects for offset +
-    /// driftHorizonParts x p (the drift over the transport delay).
+    /// lambda2 in [0, 1): 0 = EWMA; > 0 = double EWMA (Butler & Stefani 1994), which also tracks
+    /// p(k) = lambda2 (m - k_i u - offset(k-1)) + (1 - lambda2) p(k-1) (D / lambda1 on a ramp of D per part)
+    /// and corrects for offset + (1 + (driftHorizonParts - 1) lambda1) p: the next part, then the drift
+    /// lambda1 p per further part of the transport delay.
     double driftWeight = 0.0;
     int driftHorizonParts = 1;  ///< parts the drift is extrapolated over (the delay z), 1 .. 8
 
