@@ -4,6 +4,7 @@
 // (`trueturn identify`).
 #include <gtest/gtest.h>
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QTemporaryDir>
@@ -80,6 +81,35 @@ TEST(RobustCli, MismatchIsDetectedWithin50Parts) {
             EXPECT_LE(c.value("max_step_mm").toDouble(), c.value("limit_step_mm").toDouble() + 1e-12);
         }
     }
+}
+
+// The same from a preset: "plant_mismatch" (a plant with twice the gain) and "controller.integral".
+TEST(RobustCli, PresetSectionsSetThePlantAndTheController) {
+    QTemporaryDir dir;
+    const QString preset = dir.filePath("mismatch.json");
+    QFile file(preset);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+    file.write(R"({"name": "mismatch", "description": "paper-2012 with a plant of twice the gain and integral action",
+                   "based_on": "paper-2012",
+                   "plant_mismatch": {"gain_factor": 2, "step": {"at_part": 150, "size_mm": 0.02, "point": 3}},
+                   "controller": {"output_weight": 1, "correction_weight": 0.01, "max_correction_mm": 0.3,
+                                  "max_step_mm": 0.1, "integral": {"enabled": true, "weight": 0.3}}})");
+    file.close();
+    const QJsonObject j =
+        runJson({"simulate", "--preset", preset, "--delay", "2", "--parts", "300", "--warmup", "0", "--json"});
+    EXPECT_DOUBLE_EQ(j.value("plant").toObject().value("gain_factor").toDouble(), 2.0);
+    EXPECT_DOUBLE_EQ(j.value("integral").toObject().value("weight").toDouble(), 0.3);
+    EXPECT_EQ(j.value("step").toObject().value("point").toInt(), 3);
+    ASSERT_EQ(j.value("alarms").toArray().size(), 1);
+    EXPECT_LE(j.value("alarms").toArray().first().toObject().value("part").toInteger(), 50);
+    QFile bad(dir.filePath("bad.json"));
+    ASSERT_TRUE(bad.open(QIODevice::WriteOnly));
+    bad.write(R"({"name": "bad", "description": "a gain factor out of range", "based_on": "paper-2012",
+                  "plant_mismatch": {"gain_factor": 50}})");
+    bad.close();
+    const CliResult r = runTrueturn({"simulate", "--preset", dir.filePath("bad.json"), "--parts", "100", "--json"});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_TRUE(r.err.contains("gain_factor")) << qPrintable(r.err);
 }
 
 TEST(RobustCli, RefusesBadMismatchOptions) {
