@@ -10,6 +10,7 @@
 #include "config/plant_config.h"
 #include "config/preset_library.h"
 #include "config/profile_model_config.h"
+#include "config/robust_config.h"
 #include "core/quality/iso286.h"
 
 namespace tt::config {
@@ -135,6 +136,9 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
             throw std::invalid_argument(std::string("loop.interpolation: ") + e.what());
         }
     }
+    s.control.integral = integralActionFromPreset(s.json);
+    s.plantMismatch = plantMismatchFromPreset(s.json);
+    s.mismatchMonitor = mismatchMonitorFromPreset(s.json);
     for (const core::ControlPointSpec& p : s.control.plant.points)
         if (p.xMm < 0.0 || p.xMm > s.partLengthMm)
             throw std::invalid_argument("plant: control point x = " + std::to_string(p.xMm) +

@@ -21,6 +21,7 @@
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
+#include "core/loop/mismatch_monitor.h"
 #include "core/run/shaft_study.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
@@ -171,6 +172,163 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("largest mean error %1 mm at x = %2 mm").arg(value, 0, 'f', 4).arg(x, 0, 'f', 1));
 }
 
+// ---- plant mismatch, integral action, mismatch monitor (options and output) ------------------------------
+
+/// --plant-gain, --plant-delay, --step-at, --step-mm, --step-point, --integral, --integral-weight,
+/// --mismatch-action.
+void addRobustOptions(CommandParser& parser) {
+    parser.addOption(QStringLiteral("plant-gain"),
+                     QStringLiteral("The simulated plant's gain as a multiple of the model's k_i, 0.1..10 (default 1; "
+                                    "statistical plant only)."),
+                     QStringLiteral("k"));
+    parser.addOption(QStringLiteral("plant-delay"),
+                     QStringLiteral("The simulated plant's delay in parts, from the model's z to 8 (default: the "
+                                    "model's)."),
+                     QStringLiteral("z"));
+    parser.addOption(QStringLiteral("step-at"),
+                     QStringLiteral("A step in the plant from this part on, 1..10000000 (with --step-mm)."),
+                     QStringLiteral("n"));
+    parser.addOption(QStringLiteral("step-mm"), QStringLiteral("Size of the step in diameter, -1..1 mm, not 0."),
+                     QStringLiteral("mm"));
+    parser.addOption(QStringLiteral("step-point"),
+                     QStringLiteral("The step at this control point only, 1..16 (default: the whole part)."),
+                     QStringLiteral("i"));
+    parser.addOption(QStringLiteral("integral"),
+                     QStringLiteral("Integral action of the LQG (an integrating disturbance state): on or off "
+                                    "(default: the preset's)."),
+                     QStringLiteral("on|off"));
+    parser.addOption(QStringLiteral("integral-weight"),
+                     QStringLiteral("Step variance of the integrating state as a share of the disturbance "
+                                    "variance, 1e-6..1 (default: the preset's, 0.3)."),
+                     QStringLiteral("w"));
+    parser.addOption(QStringLiteral("drift-weight"),
+                     QStringLiteral("Double EWMA: the drift weight lambda2 in (0, 1) (default 0.1; the offset's "
+                                    "weight is --ewma-weight)."),
+                     QStringLiteral("w"));
+    parser.addOption(QStringLiteral("mismatch-action"),
+                     QStringLiteral("When the plant no longer matches the model: hold (the CNC keeps the last "
+                                    "correction) or alarm (alarm only); default: the preset's, hold."),
+                     QStringLiteral("hold|alarm"));
+}
+
+/// The robustness options given on the command line (a resumed run keeps its own settings).
+bool robustOptionsSet(const CommandParser& parser) {
+    for (const char* option : {"plant-gain", "plant-delay", "step-at", "step-mm", "step-point", "integral",
+                               "integral-weight", "mismatch-action", "drift-weight"})
+        if (parser.isSet(QString::fromLatin1(option))) return true;
+    return false;
+}
+
+/// Applies the robustness options to the scenario; throws UsageError naming the option.
+void applyRobustOptions(const CommandParser& parser, config::LoopScenario& scenario) {
+    core::PlantMismatch& m = scenario.plantMismatch;
+    if (parser.isSet(QStringLiteral("plant-gain")))
+        m.gainFactor =
+            parser.number(QStringLiteral("plant-gain"), core::kMinPlantGainFactor, core::kMaxPlantGainFactor);
+    if (parser.isSet(QStringLiteral("plant-delay")))
+        m.delayParts =
+            static_cast<int>(parser.integer(QStringLiteral("plant-delay"), scenario.delay(), core::kMaxDelay));
+    if (parser.isSet(QStringLiteral("step-at")) != parser.isSet(QStringLiteral("step-mm")))
+        throw UsageError("--step-at and --step-mm: give both (the part and the size of the step)");
+    if (parser.isSet(QStringLiteral("step-point")) && !parser.isSet(QStringLiteral("step-at")))
+        throw UsageError("--step-point: only with --step-at and --step-mm");
+    if (parser.isSet(QStringLiteral("step-at"))) {
+        core::PlantStep step;
+        step.atPart = parser.integer(QStringLiteral("step-at"), 1, 10000000);
+        step.sizeMm = parser.number(QStringLiteral("step-mm"), -core::kMaxPlantStepMm, core::kMaxPlantStepMm);
+        if (step.sizeMm == 0.0) throw UsageError("--step-mm: must not be 0");
+        if (parser.isSet(QStringLiteral("step-point")))
+            step.point =
+                static_cast<int>(parser.integer(QStringLiteral("step-point"), 1,
+                                                static_cast<long long>(scenario.control.plant.points.size()))) -
+                1;
+        m.step = step;
+    }
+    if (parser.isSet(QStringLiteral("integral")))
+        scenario.control.integral.enabled =
+            parser.choice(QStringLiteral("integral"), {QStringLiteral("on"), QStringLiteral("off")}) ==
+            QLatin1String("on");
+    if (parser.isSet(QStringLiteral("integral-weight")))
+        scenario.control.integral.weight =
+            parser.number(QStringLiteral("integral-weight"), core::kMinIntegralWeight, core::kMaxIntegralWeight);
+    if (parser.isSet(QStringLiteral("drift-weight"))) {
+        if (parser.value(QStringLiteral("controller")) != QLatin1String("dewma"))
+            throw UsageError("--drift-weight: only with --controller dewma");
+        scenario.control.ewma.driftWeight = parser.number(QStringLiteral("drift-weight"), 0.0, 0.999);
+        if (scenario.control.ewma.driftWeight <= 0.0) throw UsageError("--drift-weight: must be in (0, 1)");
+    }
+    if (parser.isSet(QStringLiteral("mismatch-action")))
+        scenario.mismatchMonitor.action = core::mismatchActionFromName(
+            parser.choice(QStringLiteral("mismatch-action"), {QStringLiteral("hold"), QStringLiteral("alarm")})
+                .toStdString());
+    try {
+        m.validate(scenario.delay(), scenario.control.plant.points.size());
+        if (scenario.lathe && (m.gainFactor != 1.0 || (m.step && m.step->point)))
+            throw std::invalid_argument(
+                "--plant-gain and --step-point: simulated on the statistical plant only (a preset without a lathe "
+                "section)");
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+}
+
+/// The stable kind name of an alarm in JSON ("model-mismatch" -> "model_mismatch").
+QString alarmKindJson(const std::string& kind) {
+    return QString::fromStdString(kind).replace(QLatin1Char('-'), QLatin1Char('_'));
+}
+
+/// step:{at_part, size_mm, point, from_part, to_part, residual_pct}, alarms:[{part, kind, point, test,
+/// statistic, limit, window_parts, held, message}] and the settings of the plant and the controller.
+void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const config::LoopScenario& scenario) {
+    const core::PlantMismatch& m = scenario.plantMismatch;
+    out.insert(QStringLiteral("plant"),
+               QJsonObject{{QStringLiteral("gain_factor"), m.gainFactor},
+                           {QStringLiteral("delay"), m.delayParts.value_or(scenario.delay())}});
+    out.insert(QStringLiteral("integral"),
+               scenario.control.integral.enabled && r.controller == core::ControllerKind::Lqg
+                   ? QJsonValue(QJsonObject{{QStringLiteral("weight"), scenario.control.integral.weight}})
+                   : QJsonValue(false));
+    if (r.step)
+        out.insert(QStringLiteral("step"),
+                   QJsonObject{{QStringLiteral("at_part"), static_cast<qint64>(r.step->atPart)},
+                               {QStringLiteral("size_mm"), r.step->sizeMm},
+                               {QStringLiteral("point"), r.step->point ? QJsonValue(*r.step->point + 1) : QJsonValue()},
+                               {QStringLiteral("from_part"), static_cast<qint64>(r.step->fromPart)},
+                               {QStringLiteral("to_part"), static_cast<qint64>(r.step->toPart)},
+                               {QStringLiteral("residual_pct"), config::finiteOrNull(r.step->residualPct)}});
+    QJsonArray alarms;
+    for (const core::RecordedAlarm& a : r.modelAlarms)
+        alarms.append(QJsonObject{{QStringLiteral("part"), static_cast<qint64>(a.part)},
+                                  {QStringLiteral("kind"), alarmKindJson(a.kind)},
+                                  {QStringLiteral("point"), a.notice.point},
+                                  {QStringLiteral("test"), a.notice.reference == 1.0 ? QStringLiteral("correlation")
+                                                                                     : QStringLiteral("variance")},
+                                  {QStringLiteral("statistic"), config::finiteOrNull(a.notice.value)},
+                                  {QStringLiteral("limit"), config::finiteOrNull(a.notice.limit)},
+                                  {QStringLiteral("window_parts"), static_cast<qint64>(a.notice.otherPart)},
+                                  {QStringLiteral("held"), a.notice.cause == "hold"},
+                                  {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}});
+    out.insert(QStringLiteral("alarms"), alarms);
+    out.insert(QStringLiteral("corrections"),
+               QJsonObject{{QStringLiteral("max_abs_mm"), r.maxCorrectionMm},
+                           {QStringLiteral("max_step_mm"), r.maxCorrectionStepMm},
+                           {QStringLiteral("limit_abs_mm"), scenario.control.limits.maxAbsMm},
+                           {QStringLiteral("limit_step_mm"), scenario.control.limits.maxStepMm}});
+}
+
+/// The step residual and the model alarms in the text output.
+void printRobustText(const core::LatheStudyResult& r) {
+    if (r.step)
+        printLine(QStringLiteral("step of %1 mm at part %2: %3 % of it left over parts %4 .. %5")
+                      .arg(r.step->sizeMm)
+                      .arg(r.step->atPart)
+                      .arg(g(r.step->residualPct, 3))
+                      .arg(r.step->fromPart)
+                      .arg(r.step->toPart));
+    for (const core::RecordedAlarm& a : r.modelAlarms)
+        printLine(QStringLiteral("alarm: ") + QString::fromStdString(core::describe(a.notice)));
+}
+
 int run(const QStringList& arguments) {
     CommandParser parser(QStringLiteral("simulate"),
                          QStringLiteral("The closed loop on the built-in simulator, headless (paper 000): parts are "
@@ -192,8 +350,9 @@ int run(const QStringList& arguments) {
                      QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));
-    parser.addOption(QStringLiteral("controller"), QStringLiteral("lqg, ewma or open (default lqg)."),
-                     QStringLiteral("kind"), QStringLiteral("lqg"));
+    parser.addOption(QStringLiteral("controller"),
+                     QStringLiteral("lqg, ewma, dewma (double EWMA) or open (default lqg)."), QStringLiteral("kind"),
+                     QStringLiteral("lqg"));
     parser.addOption(QStringLiteral("ewma-weight"),
                      QStringLiteral("EWMA weight in (0, 1], or auto: the best on a grid 0.05..1 (default: the "
                                     "preset's)."),
@@ -222,6 +381,7 @@ int run(const QStringList& arguments) {
                      QStringLiteral("Simulated time per wall time: 0 (the default: as fast as possible) or 1..1e9 "
                                     "(1: the lathe's own pace; 360: a 6-minute part per second)."),
                      QStringLiteral("x"), QStringLiteral("0"));
+    addRobustOptions(parser);
     parser.parse(splitResumeRun(arguments));
 
     const bool resume = parser.isSet(QStringLiteral("resume"));
@@ -252,6 +412,10 @@ int run(const QStringList& arguments) {
             if (parser.isSet(QString::fromLatin1(option)))
                 throw UsageError(std::string("--") + option +
                                  ": a resumed run keeps its own settings; leave the option out");
+        if (robustOptionsSet(parser))
+            throw UsageError(
+                "--resume: a resumed run keeps its own plant and controller; leave the plant, step, "
+                "integral and mismatch options out");
         resumePoint = findResumePoint(*history, resumeRun);
         const QJsonObject stored =
             QJsonDocument::fromJson(QByteArray::fromStdString(resumePoint->run.description.settingsJson)).object();
@@ -264,13 +428,13 @@ int run(const QStringList& arguments) {
         choice.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
         choice.controller = core::controllerKindFromName(
             parser
-                .choice(QStringLiteral("controller"),
-                        {QStringLiteral("lqg"), QStringLiteral("ewma"), QStringLiteral("open")})
+                .choice(QStringLiteral("controller"), {QStringLiteral("lqg"), QStringLiteral("ewma"),
+                                                       QStringLiteral("open"), QStringLiteral("dewma")})
                 .toStdString());
         choice.preset = parser.value(QStringLiteral("preset"));
         if (parser.isSet(QStringLiteral("ewma-weight"))) {
-            if (choice.controller != core::ControllerKind::Ewma)
-                throw UsageError("--ewma-weight: only with --controller ewma");
+            if (choice.controller != core::ControllerKind::Ewma && choice.controller != core::ControllerKind::Dewma)
+                throw UsageError("--ewma-weight: only with --controller ewma or dewma");
             if (parser.value(QStringLiteral("ewma-weight")) == QLatin1String("auto")) {
                 choice.ewmaAuto = true;
             } else {
@@ -283,6 +447,7 @@ int run(const QStringList& arguments) {
 
     config::LoopScenario scenario = config::loadLoopScenario(choice.preset, choice.delay);
     if (choice.ewmaAuto) scenario.control.ewmaWeightAuto = true;
+    if (!resume) applyRobustOptions(parser, scenario);
     core::LatheStudyOptions options;
     options.controller = choice.controller;
     options.ewmaWeight = choice.ewmaWeight;
@@ -315,10 +480,14 @@ int run(const QStringList& arguments) {
         scenario, choice.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
     if (!study) return kExitInterrupted;
     const core::LatheStudyResult& result = *study;
-    if (parser.json())
-        printJson(toJson(result, parser.isSet(QStringLiteral("profile")), database));
-    else
+    if (parser.json()) {
+        QJsonObject out = toJson(result, parser.isSet(QStringLiteral("profile")), database);
+        addRobustJson(out, result, scenario);
+        printJson(out);
+    } else {
         printText(choice.preset, result, choice.seed, parser.isSet(QStringLiteral("profile")));
+        printRobustText(result);
+    }
     return kExitOk;
 }
 

@@ -16,6 +16,7 @@ Command makeScheduleFeedCommand();
 Command makeCornerCommand();
 Command makeReportCommand();
 Command makeGenerateHistoryCommand();
+Command makeIdentifyCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -32,6 +33,7 @@ const std::vector<Command>& commands() {
         makeFeedStabiliseCommand(),
         makeReportCommand(),
         makeGenerateHistoryCommand(),
+        makeIdentifyCommand(),
     };
     return all;
 }

@@ -91,6 +91,13 @@ std::string alarmText(const Notice& n) {
             return partText(n.part) + ", " + pointText(n) + ": " + formatFixed(n.value, 3) + " mm is " +
                    formatFixed(n.limit - n.value, 3) + " mm below the lower limit " + formatFixed(n.limit, 3) +
                    " mm (deviation " + formatFixed(n.value - n.reference, 3) + " mm from the nominal): scrap";
+        case NoticeKind::ModelMismatch:
+            return "the plant no longer matches the controller's model (" + partText(n.part) + ", point " +
+                   std::to_string(n.point) + "): the " + (n.reference == 1.0 ? "correlation" : "variance") +
+                   " test of the innovations over " + std::to_string(n.otherPart) + " parts is " +
+                   formatSignificant(n.value, 3) + ", above its limit " + formatSignificant(n.limit, 3) +
+                   (n.cause == "hold" ? "; the CNC keeps the last correction until the run is restarted"
+                                      : "; the controller goes on");
         default:
             return {};
     }
@@ -179,9 +186,10 @@ constexpr const char* kKindNames[] = {"none",
                                       "controller-rejected",
                                       "out-of-tolerance-rework",
                                       "out-of-tolerance-scrap",
-                                      "paused-on-scrap"};
+                                      "paused-on-scrap",
+                                      "model-mismatch"};
 constexpr std::size_t kKinds = sizeof kKindNames / sizeof kKindNames[0];
-static_assert(kKinds == static_cast<std::size_t>(NoticeKind::PausedOnScrap) + 1, "one name per kind");
+static_assert(kKinds == static_cast<std::size_t>(NoticeKind::ModelMismatch) + 1, "one name per kind");
 
 }  // namespace
 

@@ -58,6 +58,11 @@ enum class NoticeKind {
     OutOfToleranceRework,  ///< part, point, z, value: measured, reference: nominal, limit: upper limit (mm)
     OutOfToleranceScrap,   ///< part, point, z, value: measured, reference: nominal, limit: lower limit (mm)
     PausedOnScrap,         ///< part: the scrap part (state: the loop paused itself, the operator continues)
+    // ---- the controller's model ----
+    /// part, point (the one contributing most), value: test statistic, limit: its limit, otherPart: parts
+    /// in the window, reference: 1 = the correlation test, 0 = the variance test; cause: "hold" when the
+    /// CNC now keeps the last correction
+    ModelMismatch,
 };
 
 /// One notice with its data (which fields are set depends on the kind, see NoticeKind).

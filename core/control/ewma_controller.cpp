@@ -24,6 +24,10 @@ void EwmaOptions::validate() const {
     if (warningMm > alarmMm)
         throw std::invalid_argument("EWMA controller: the warning band must not exceed the alarm band");
     requireHistoryParts(historyParts, "EWMA controller");
+    if (!std::isfinite(driftWeight) || driftWeight < 0.0 || driftWeight >= 1.0)
+        throw std::invalid_argument("double EWMA controller: the drift weight must be in [0, 1)");
+    if (driftHorizonParts < 1 || driftHorizonParts > 8)
+        throw std::invalid_argument("double EWMA controller: the drift horizon must be 1 .. 8 parts");
 }
 
 EwmaController::EwmaController(const Eigen::VectorXd& gain, const CorrectionLimits& limits, const EwmaOptions& options)
@@ -35,6 +39,7 @@ EwmaController::EwmaController(const Eigen::VectorXd& gain, const CorrectionLimi
     const std::size_t m = static_cast<std::size_t>(gain.size());
     const std::size_t h = static_cast<std::size_t>(options.historyParts);
     m_offset = Eigen::VectorXd::Zero(gain.size());
+    m_drift = Eigen::VectorXd::Zero(gain.size());
     m_lastApplied = Eigen::VectorXd::Zero(gain.size());
     m_bands.assign(m, ToleranceBand::Ok);
     m_historyPart.assign(h, -1);
@@ -71,7 +76,9 @@ MeasurementVerdict EwmaController::addMeasurement(const PartMeasurement& measure
         }
         m_bands[i] = std::abs(v) >= m_options.warningMm ? ToleranceBand::Warning : ToleranceBand::Ok;
         const double uncorrected = v - m_gain(ii) * m_historyApplied[s * m + i];
-        m_offset(ii) = m_options.weight * uncorrected + (1.0 - m_options.weight) * m_offset(ii);
+        const double previous = m_offset(ii);
+        m_offset(ii) = m_options.weight * uncorrected + (1.0 - m_options.weight) * previous;
+        m_drift(ii) = m_options.driftWeight * (uncorrected - previous) + (1.0 - m_options.driftWeight) * m_drift(ii);
         m_historyMeasured[s * m + i] = 1;
         verdict.accepted[i] = true;
     }
@@ -86,8 +93,11 @@ Eigen::VectorXd EwmaController::nextCorrection(std::int64_t partNumber) {
     }
     Eigen::VectorXd candidate(m_gain.size());
     for (Eigen::Index i = 0; i < m_gain.size(); ++i) {
-        const double predicted = m_offset(i) + m_gain(i) * m_lastApplied(i);
-        candidate(i) = std::abs(predicted) < m_options.deadBandMm ? m_lastApplied(i) : -m_offset(i) / m_gain(i);
+        // a + p predicts the next part (p -> D / lambda1 on a ramp of D per part, the offset's lag included);
+        // each further part of the horizon adds the drift D = lambda1 p.
+        const double expected = m_offset(i) + (1.0 + (m_options.driftHorizonParts - 1) * m_options.weight) * m_drift(i);
+        const double predicted = expected + m_gain(i) * m_lastApplied(i);
+        candidate(i) = std::abs(predicted) < m_options.deadBandMm ? m_lastApplied(i) : -expected / m_gain(i);
     }
     m_lastApplied = applyCorrectionLimits(candidate, m_lastApplied, m_limits).correctionMm;
     const std::size_t m = static_cast<std::size_t>(m_gain.size());
@@ -108,6 +118,10 @@ std::uint16_t EwmaController::fingerprint() const {
                                m_limits.maxStepMm,
                                static_cast<double>(m_options.historyParts)};
     config.insert(config.end(), m_gain.data(), m_gain.data() + m_gain.size());
+    if (m_options.driftWeight > 0.0) {  // an EWMA's fingerprint stays what it was
+        config.push_back(m_options.driftWeight);
+        config.push_back(m_options.driftHorizonParts);
+    }
     return configurationFingerprint(config);
 }
 
@@ -126,15 +140,17 @@ ControllerState EwmaController::saveState() const {
     v.insert(v.end(), m_historyApplied.begin(), m_historyApplied.end());
     for (std::uint8_t f : m_historyMeasured)
         v.push_back(f);
+    if (m_options.driftWeight > 0.0) v.insert(v.end(), m_drift.data(), m_drift.data() + m_drift.size());
     return s;
 }
 
 void EwmaController::restoreState(const ControllerState& state) {
     if (state.kind != name())
-        throw std::invalid_argument("cannot restore a '" + state.kind + "' controller state into the EWMA controller");
+        throw std::invalid_argument("cannot restore a '" + state.kind + "' controller state into the " + name() +
+                                    " controller");
     const std::size_t m = static_cast<std::size_t>(m_gain.size());
     const std::size_t h = static_cast<std::size_t>(m_options.historyParts);
-    const std::size_t expected = 5 + 3 * m + h + 2 * h * m;
+    const std::size_t expected = 5 + 3 * m + h + 2 * h * m + (m_options.driftWeight > 0.0 ? m : 0);
     const auto& v = state.values;
     if (v.size() != expected || v[0] != kEwmaStateFormat)
         throw std::invalid_argument("saved EWMA controller state has an unexpected size or format");
@@ -158,6 +174,8 @@ void EwmaController::restoreState(const ControllerState& state) {
         m_historyApplied[j] = v[i++];
     for (std::size_t j = 0; j < h * m; ++j)
         m_historyMeasured[j] = v[i++] != 0.0 ? 1 : 0;
+    for (std::size_t j = 0; j < m && i < v.size(); ++j)
+        m_drift(static_cast<Eigen::Index>(j)) = v[i++];
 }
 
 OpenLoopController::OpenLoopController(int pointCount) : m_points(pointCount) {

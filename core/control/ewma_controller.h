@@ -20,6 +20,12 @@ struct EwmaOptions {
     double warningMm = std::numeric_limits<double>::infinity();  ///< |measured deviation| >= this: warning
     double alarmMm = std::numeric_limits<double>::infinity();    ///< >= this: alarm, value not used
     int historyParts = 64;  ///< applied corrections kept to pair late measurements with their part
+    /// lambda2 in [0, 1): 0 = EWMA; > 0 = double EWMA (Butler & Stefani 1994), which also tracks
+    /// p(k) = lambda2 (m - k_i u - offset(k-1)) + (1 - lambda2) p(k-1) (D / lambda1 on a ramp of D per part)
+    /// and corrects for offset + (1 + (driftHorizonParts - 1) lambda1) p: the next part, then the drift
+    /// lambda1 p per further part of the transport delay.
+    double driftWeight = 0.0;
+    int driftHorizonParts = 1;  ///< parts the drift is extrapolated over (the delay z), 1 .. 8
 
     /// Throws std::invalid_argument for a weight outside (0, 1], negative bands, warning > alarm.
     void validate() const;
@@ -37,7 +43,7 @@ public:
     /// `gain`: k_i per point. Throws std::invalid_argument for invalid options or limits.
     EwmaController(const Eigen::VectorXd& gain, const CorrectionLimits& limits, const EwmaOptions& options);
 
-    std::string name() const override { return "ewma"; }
+    std::string name() const override { return m_options.driftWeight > 0.0 ? "dewma" : "ewma"; }
     int pointCount() const override { return static_cast<int>(m_gain.size()); }
     MeasurementVerdict addMeasurement(const PartMeasurement& measurement) override;
     Eigen::VectorXd nextCorrection(std::int64_t partNumber) override;
@@ -48,6 +54,8 @@ public:
     const std::vector<ToleranceBand>& bands() const { return m_bands; }
     /// Estimated uncorrected deviation per point, mm of diameter.
     const Eigen::VectorXd& offsetMm() const { return m_offset; }
+    /// Estimated drift per part and point (double EWMA; zero for EWMA), mm of diameter.
+    const Eigen::VectorXd& driftMm() const { return m_drift; }
     /// The options the controller was made with.
     const EwmaOptions& options() const { return m_options; }
 
@@ -62,6 +70,7 @@ private:
     std::int64_t m_firstPart = 0;
     std::int64_t m_lastPart = 0;
     Eigen::VectorXd m_offset;
+    Eigen::VectorXd m_drift;
     Eigen::VectorXd m_lastApplied;
     std::vector<ToleranceBand> m_bands;
     std::vector<std::int64_t> m_historyPart;      // ring: part number per slot (-1: empty)

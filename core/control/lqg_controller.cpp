@@ -265,6 +265,12 @@ MeasurementVerdict LqgController::addMeasurement(const PartMeasurement& measurem
         has = m_historyHas.data() + slot * m;
     }
 
+    if (lead == 0) {
+        Innovation innovation{part, measurement.deviationMm - predicted, variance};
+        for (Eigen::Index i = 0; i < innovation.valueMm.size(); ++i)
+            if (!std::isfinite(innovation.valueMm(i))) innovation.valueMm(i) = std::numeric_limits<double>::quiet_NaN();
+        m_lastInnovation = std::move(innovation);
+    }
     bool anyAccepted = false;
     for (std::size_t i = 0; i < m; ++i) {
         const Eigen::Index ii = static_cast<Eigen::Index>(i);

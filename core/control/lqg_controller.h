@@ -48,6 +48,7 @@ public:
     Eigen::VectorXd nextCorrection(std::int64_t partNumber) override;
     ControllerState saveState() const override;
     void restoreState(const ControllerState& state) override;
+    std::optional<Innovation> lastInnovation() const override { return m_lastInnovation; }
 
     /// Which points the limits clipped in the last nextCorrection().
     const Eigen::Array<bool, Eigen::Dynamic, 1>& lastLimited() const { return m_lastLimited; }
@@ -103,6 +104,7 @@ private:
     Eigen::VectorXd m_scratch;
     Eigen::VectorXd m_lastApplied;
     Eigen::Array<bool, Eigen::Dynamic, 1> m_lastLimited;
+    std::optional<Innovation> m_lastInnovation;  // of the last measurement offered at lead 0
 
     // Pending (not yet filtered) measurements of steps nextStep .. nextStep + z - 1: z slots of m values
     // with a presence mask. History of filtered steps: estimates, measurements and applied corrections.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,15 @@ struct MeasurementVerdict {
     }
 };
 
+/// The innovation of one measurement under the controller's model: measured minus predicted deviation
+/// and the variance the model predicts for it (paper 000's Kalman filter; white with that variance while
+/// the plant matches the model). NaN at a point without a finite value.
+struct Innovation {
+    std::int64_t partNumber = 0;
+    Eigen::VectorXd valueMm;      ///< per point, mm
+    Eigen::VectorXd varianceMm2;  ///< per point, mm^2 (> 0)
+};
+
 /// A run-to-run (part-to-part) controller of the diameter profile at N control points
 /// (paper 000, outer loop, one step per part). Parts are machined in increasing part number;
 /// measurements of finished parts arrive later (transport delay z parts) and possibly out of order.
@@ -57,6 +67,10 @@ public:
     /// Restores a state saved by the same kind of controller with the same configuration;
     /// throws std::invalid_argument otherwise.
     virtual void restoreState(const ControllerState& state) = 0;
+
+    /// The innovation of the last measurement offered at its own filter step (before it was gated), for
+    /// the loop's mismatch monitor; none for a controller without a model of the plant (EWMA, open loop).
+    virtual std::optional<Innovation> lastInnovation() const { return std::nullopt; }
 };
 
 }  // namespace tt::core

@@ -12,6 +12,8 @@ std::string controllerKindName(ControllerKind kind) {
             return "ewma";
         case ControllerKind::Open:
             return "open";
+        case ControllerKind::Dewma:
+            return "dewma";
     }
     return "open";
 }
@@ -20,7 +22,8 @@ ControllerKind controllerKindFromName(const std::string& name) {
     if (name == "lqg") return ControllerKind::Lqg;
     if (name == "ewma") return ControllerKind::Ewma;
     if (name == "open") return ControllerKind::Open;
-    throw std::invalid_argument("unknown controller '" + name + "' (lqg, ewma, open)");
+    if (name == "dewma") return ControllerKind::Dewma;
+    throw std::invalid_argument("unknown controller '" + name + "' (lqg, ewma, open, dewma)");
 }
 
 std::unique_ptr<RunToRunController> makeRunToRunController(const RunToRunSetup& setup, const RunToRunPlant& plant,
@@ -31,6 +34,14 @@ std::unique_ptr<RunToRunController> makeRunToRunController(const RunToRunSetup& 
         case ControllerKind::Ewma: {
             EwmaOptions options = setup.ewma;
             options.weight = ewmaWeight;
+            options.driftWeight = 0.0;
+            return std::make_unique<EwmaController>(plant.gain, setup.limits, options);
+        }
+        case ControllerKind::Dewma: {
+            EwmaOptions options = setup.ewma;
+            options.weight = ewmaWeight;
+            if (options.driftWeight <= 0.0) options.driftWeight = kDefaultDriftWeight;
+            options.driftHorizonParts = plant.delay;
             return std::make_unique<EwmaController>(plant.gain, setup.limits, options);
         }
         case ControllerKind::Open:

@@ -7,6 +7,7 @@
 namespace tt::core {
 
 void validateLoopConfig(const LoopConfig& c) {
+    c.mismatch.validate();
     auto positive = [](double v, const std::string& what) {
         if (!std::isfinite(v) || v <= 0.0) throw std::invalid_argument(what + " must be a positive number");
     };

@@ -8,6 +8,7 @@
 #include "core/common/tolerance.h"
 #include "core/control/correction_limits.h"
 #include "core/control/profile_interpolation.h"
+#include "core/loop/mismatch_monitor.h"
 #include "core/model/scaled_polynomial.h"
 
 namespace tt::core {
@@ -35,6 +36,9 @@ struct LoopConfig {
     /// verdict and an out-of-tolerance one raises an "out-of-tolerance" alarm.
     std::vector<ToleranceZone> tolerances;
     bool pauseOnScrap = false;  ///< a scrap part pauses the loop (the operator continues it)
+    /// The innovation test of the controller's model (a controller that reports innovations: LQG) and
+    /// what the loop does when it fails.
+    MismatchMonitorConfig mismatch;
 };
 
 /// Throws std::invalid_argument naming the first bad value.

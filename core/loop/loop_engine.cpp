@@ -64,7 +64,8 @@ LoopEngine::LoopEngine(LoopConfig config, LoopPorts ports, std::unique_ptr<RunTo
     : m_config(std::move(config)),
       m_ports(ports),
       m_controller(std::move(controller)),
-      m_limiter(m_config.limits, m_config.pointZMm) {
+      m_limiter(m_config.limits, m_config.pointZMm),
+      m_monitor(m_config.mismatch) {
     validateLoopConfig(m_config);
     if (!m_controller) throw std::invalid_argument("the loop needs a controller");
     if (m_controller->pointCount() != static_cast<int>(m_config.pointZMm.size()))
@@ -93,6 +94,8 @@ void LoopEngine::resetRun(std::int64_t nextPart) {
     m_measured.clear();
     m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
     m_pauseCause = PauseCause::None;
+    m_monitor.reset();
+    m_holding = false;
 }
 
 void LoopEngine::resumeFrom(const ResumePoint& point) {
@@ -384,6 +387,7 @@ void LoopEngine::offerMeasurement(PartMeasurementRecord& record) {
         verdict.reasons.assign(record.points.size(),
                                because(NoticeKind::ControllerFailed, record.partNumber, e.what()));
     }
+    watchModel(record.partNumber);
     for (std::size_t i = 0; i < record.points.size(); ++i) {
         PointMeasurementRecord& p = record.points[i];
         if (!p.accepted) continue;
@@ -401,6 +405,21 @@ void LoopEngine::offerMeasurement(PartMeasurementRecord& record) {
         p.verdict = toleranceVerdict;
         alarm("measurement-rejected", p.rejection, record.partNumber);
     }
+}
+
+void LoopEngine::watchModel(std::int64_t partNumber) {
+    const std::optional<Innovation> innovation = m_controller->lastInnovation();
+    if (!innovation || innovation->partNumber != partNumber) return;
+    const std::optional<MismatchFinding> found = m_monitor.add(*innovation);
+    if (!found) return;
+    m_holding = m_config.mismatch.action == MismatchAction::Hold;
+    Notice what(NoticeKind::ModelMismatch, found->partNumber, found->windowParts);
+    what.point = found->point;
+    what.value = found->statistic;
+    what.limit = found->threshold;
+    what.reference = found->correlation ? 1.0 : 0.0;
+    if (m_holding) what.cause = "hold";
+    alarm(kModelMismatchAlarm, what, found->partNumber);
 }
 
 void LoopEngine::startNextPart() {
@@ -447,6 +466,8 @@ void LoopEngine::startNextPart() {
     PartCorrection correction;
     try {
         computed = correctionWithTransfer(n, previous);
+        if (m_holding)
+            computed = Eigen::Map<const Eigen::VectorXd>(previous.data(), static_cast<Eigen::Index>(previous.size()));
         limited = m_limiter.apply(computed);
         correction = partCorrectionFor(m_config, n, limited.appliedMm);
     } catch (const std::exception& e) {
@@ -459,6 +480,7 @@ void LoopEngine::startNextPart() {
         alarm("correction-limited", note, n);
     }
 
+    m_monitor.partStarted(n, limited.appliedMm);
     OutputResult sent = m_ports.output.sendPartCorrection(correction);
     if (!sent.ok) {
         m_limiter.setLastApplied(previous);

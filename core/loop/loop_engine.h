@@ -15,6 +15,7 @@
 #include "core/loop/loop_events.h"
 #include "core/loop/loop_state.h"
 #include "core/loop/measurement_session.h"
+#include "core/loop/mismatch_monitor.h"
 #include "core/ports/clock.h"
 #include "core/ports/correction_output.h"
 #include "core/ports/diameter_gauge.h"
@@ -106,6 +107,9 @@ public:
     const LoopConfig& config() const { return m_config; }
     /// The run-to-run controller the loop drives.
     const RunToRunController& controller() const { return *m_controller; }
+    /// The plant no longer matched the model and the CNC keeps the last correction (MismatchAction::Hold)
+    /// until the run is restarted.
+    bool holdingOnMismatch() const { return m_holding; }
 
     /// Replaces the controller from the next part on (the commissioning engineer applied a new tuning),
     /// bumplessly: the first correction after the switch is the one last applied, and the difference
@@ -143,6 +147,7 @@ private:
                                 double timeS) const;
     void offerMeasurement(PartMeasurementRecord& record);
     void judgeTolerances(const PartMeasurementRecord& record);  // out-of-tolerance alarms, pause on scrap
+    void watchModel(std::int64_t partNumber);                   // the mismatch monitor after a measurement
     void setState(LoopState state, const Notice& status);
     void alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part = std::nullopt);
     void fault(const Notice& what);
@@ -161,6 +166,8 @@ private:
     int m_transferLeft = 0;                                ///< parts of the fading offset still to come
     Eigen::VectorXd m_transferOffsetMm;                    ///< last applied - new controller's first, mm
     CorrectionLimiter m_limiter;
+    MismatchMonitor m_monitor;
+    bool m_holding = false;
     LoopListener* m_listener = nullptr;
 
     LoopState m_state = LoopState::Idle;

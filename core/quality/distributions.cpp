@@ -55,6 +55,15 @@ double chiSquareQuantile(double p, double dof) {
     return boost::math::quantile(ChiSquared(dof), p);
 }
 
+double chiSquareUpperTail(double x, double dof) {
+    if (!(dof > 0.0 && dof <= kMaxChiSquareDof))
+        throw std::invalid_argument("a chi-square tail needs 0 < degrees of freedom <= 1e9 (got " +
+                                    std::to_string(dof) + ")");
+    if (!std::isfinite(x) || x < 0.0)
+        throw std::invalid_argument("a chi-square tail needs a finite statistic >= 0 (got " + std::to_string(x) + ")");
+    return boost::math::cdf(boost::math::complement(ChiSquared(dof), x));
+}
+
 double empiricalQuantile(std::span<const double> sortedValues, double p) {
     if (sortedValues.empty()) throw std::invalid_argument("a quantile needs at least one value");
     if (!(p >= 0.0 && p <= 1.0))

@@ -22,6 +22,11 @@ double normalQuantile(double p);
 /// 0 < dof <= 1e9; throws std::invalid_argument otherwise.
 double chiSquareQuantile(double p, double dof);
 
+/// The upper tail P(X > x) of the chi-square distribution with `dof` degrees of freedom (Boost.Math,
+/// complement of the distribution function): the p-value of a chi-square statistic x >= 0. Needs 0 < dof
+/// <= 1e9 and a finite x >= 0; throws std::invalid_argument otherwise.
+double chiSquareUpperTail(double x, double dof);
+
 /// The empirical p quantile of ascending `sortedValues` by definition 7 of Hyndman & Fan (1996), "Sample
 /// quantiles in statistical packages", Am. Stat. 50(4): h = (n - 1) p, Q(p) = x[floor h] + (h - floor h)
 /// (x[floor h + 1] - x[floor h]) with x zero-based (R type 7, numpy's default "linear", Excel

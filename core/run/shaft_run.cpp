@@ -1,5 +1,6 @@
 #include "core/run/shaft_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,7 +29,20 @@ public:
         if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
             if (const auto verdict = event.measurement->verdict()) m_record.verdicts.add(*verdict);
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == "out-of-tolerance") ++m_record.toleranceAlarms;
+        if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == kModelMismatchAlarm)
+            m_record.modelAlarms.push_back({event.partNumber, event.alarmKind, event.notice});
+        if (event.kind == LoopEvent::Kind::PartStarted) watchCorrections(event.corrections);
         if (m_next) m_next->onLoopEvent(event);
+    }
+
+    void watchCorrections(const std::vector<PointCorrectionRecord>& corrections) {
+        m_previous.resize(corrections.size(), 0.0);
+        for (std::size_t i = 0; i < corrections.size(); ++i) {
+            const double u = corrections[i].appliedMm;
+            m_record.maxCorrectionMm = std::max(m_record.maxCorrectionMm, std::abs(u));
+            m_record.maxCorrectionStepMm = std::max(m_record.maxCorrectionStepMm, std::abs(u - m_previous[i]));
+            m_previous[i] = u;
+        }
     }
 
     void take(const TurnedPart& part) {
@@ -57,6 +71,7 @@ private:
     LatheRunRecord& m_record;
     const std::vector<double>& m_profileZ;
     LoopListener* m_next;
+    std::vector<double> m_previous;  // the last corrections sent, per point
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,6 +32,13 @@ struct LatheRunSpec {
     const std::atomic<bool>* stop = nullptr;  ///< when set: finish the part on the machine and stop (resumable)
 };
 
+/// An alarm of the run as the loop raised it (its stable kind, the part, the notice with its data).
+struct RecordedAlarm {
+    std::int64_t part = 0;
+    std::string kind;
+    Notice notice;
+};
+
 /// What the run produced: the true (simulated) diameter deviation of every part at the control points
 /// and at the profile positions, indexed by part number - 1.
 struct LatheRunRecord {
@@ -42,6 +50,9 @@ struct LatheRunRecord {
     std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
     VerdictCounts verdicts;                           ///< measured parts by tolerance verdict (this session)
     std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
+    std::vector<RecordedAlarm> modelAlarms;           ///< the mismatch monitor's alarms ("model-mismatch")
+    double maxCorrectionMm = 0.0;                     ///< largest |correction| sent to the CNC, radial mm
+    double maxCorrectionStepMm = 0.0;                 ///< largest change of a point's correction between parts
 };
 
 /// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until

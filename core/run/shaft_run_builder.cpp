@@ -24,9 +24,12 @@ ShaftRunPlan planShaftRun(const ShaftScenario& scenario, const ShaftRunChoice& c
     if (choice.lastPartNumber && *choice.lastPartNumber < 1)
         throw std::invalid_argument("a run needs at least one part");
     ShaftRunPlan plan;
-    plan.plant = buildRunToRunPlant(scenario.control.plant);
+    // Integral action lives in the LQG's design model only (the EWMA and the open loop have no model).
+    plan.plant = buildRunToRunPlant(choice.controller == ControllerKind::Lqg
+                                        ? withIntegralAction(scenario.control.plant, scenario.control.integral)
+                                        : scenario.control.plant);
     plan.controller = choice.controller;
-    plan.ewmaWeight = choice.controller == ControllerKind::Ewma
+    plan.ewmaWeight = choice.controller == ControllerKind::Ewma || choice.controller == ControllerKind::Dewma
                           ? chooseEwmaWeight(scenario.control, plan.plant, choice.ewmaWeight)
                           : scenario.control.ewma.weight;
     plan.loop = scenario.loopConfig(choice.controller != ControllerKind::Open, choice.lastPartNumber);

@@ -10,6 +10,7 @@ LatheShopSpec ShaftScenario::shopSpec(std::uint64_t seed) const {
     spec.partLengthMm = partLengthMm;
     spec.timing = timing;
     spec.seed = seed;
+    spec.mismatch = plantMismatch;
     return spec;
 }
 
@@ -29,6 +30,7 @@ LoopConfig ShaftScenario::loopConfig(bool feedForward, std::optional<std::int64_
     c.lastPartNumber = lastPartNumber;
     c.tolerances = pointTolerances();
     c.pauseOnScrap = pauseOnScrap;
+    c.mismatch = mismatchMonitor;
     validateLoopConfig(c);
     return c;
 }

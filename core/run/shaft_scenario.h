@@ -33,6 +33,10 @@ struct ShaftScenario {
     std::vector<ToleranceZone> tolerances;
     bool pauseOnScrap = false;  ///< the loop pauses on a scrap part
     InterpolationMethod interpolation = InterpolationMethod::Pchip;
+    /// How the simulated plant differs from the controller's model (the simulated shop only).
+    PlantMismatch plantMismatch;
+    /// The loop's test of the controller's model and what it does on a mismatch.
+    MismatchMonitorConfig mismatchMonitor;
 
     /// The transport delay z of the plant (after any override).
     int delay() const { return control.plant.delay; }

@@ -73,6 +73,33 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
     return record;
 }
 
+/// The step's residual: the closed run with the step against the same closed run without it.
+StepResidual stepResidual(const ShaftScenario& scenario, std::uint64_t seed, const ShaftRunPlan& plan,
+                          const LatheStudyOptions& options, const LatheRunRecord& withStep) {
+    const PlantStep& step = *scenario.plantMismatch.step;
+    StepResidual r{step.atPart, step.sizeMm, step.point, 0, 0, 0.0};
+    r.fromPart = step.atPart + kStepSettleFactor * scenario.delay() + kStepSettleParts;
+    r.toPart = r.fromPart + kStepAveragedParts - 1;
+    const auto total = static_cast<std::int64_t>(withStep.pointDeviationMm.size());
+    if (r.toPart > total)
+        throw std::invalid_argument("the step at part " + std::to_string(step.atPart) +
+                                    " needs the run to last until part " + std::to_string(r.toPart) +
+                                    " (3z + 5 parts to settle, 20 averaged), it has " + std::to_string(total));
+    ShaftScenario plain = scenario;
+    plain.plantMismatch.step.reset();
+    LatheStudyOptions quiet = options;
+    quiet.profileZMm.clear();
+    const LatheRunRecord without = runOnce(plain, seed, plan, quiet, false);
+    double sum = 0.0;
+    for (std::int64_t k = r.fromPart; k <= r.toPart; ++k) {
+        const auto i = static_cast<std::size_t>(k - 1);
+        const Eigen::VectorXd effect = withStep.pointDeviationMm[i] - without.pointDeviationMm[i];
+        sum += step.point ? effect(*step.point) : effect.mean();
+    }
+    r.residualPct = 100.0 * sum / kStepAveragedParts / step.sizeMm;
+    return r;
+}
+
 }  // namespace
 
 LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
@@ -84,10 +111,16 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.controller = options.controller;
     result.delay = closedPlan.plant.delay;
     result.parts = options.parts;
-    if (options.controller == ControllerKind::Ewma) result.ewmaWeight = closedPlan.ewmaWeight;
-    const SteadyStateVariances analytic = analyseSteadyState(
-        closedPlan.plant,
-        controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
+    if (options.controller == ControllerKind::Ewma || options.controller == ControllerKind::Dewma)
+        result.ewmaWeight = closedPlan.ewmaWeight;
+    // The disturbance as modelled, without the controller's integrating state (integral action).
+    // No analytic figure for the double EWMA (no linear model of it here).
+    const SteadyStateVariances analytic =
+        options.controller == ControllerKind::Dewma
+            ? SteadyStateVariances{}
+            : analyseSteadyState(
+                  buildRunToRunPlant(scenario.control.plant),
+                  controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
 
     const LatheRunRecord closed = runOnce(scenario, seed, closedPlan, options, true);
     result.runId = closed.runId;
@@ -95,6 +128,10 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.rejectedValues = closed.rejectedValues;
     result.verdicts = closed.verdicts;
     result.toleranceAlarms = closed.toleranceAlarms;
+    result.modelAlarms = closed.modelAlarms;
+    result.maxCorrectionMm = closed.maxCorrectionMm;
+    result.maxCorrectionStepMm = closed.maxCorrectionStepMm;
+    if (scenario.plantMismatch.step) result.step = stepResidual(scenario, seed, closedPlan, options, closed);
 
     const std::int64_t from = options.warmupParts + 1;
     const Eigen::VectorXd varClosed = deviationVariance(closed.pointDeviationMm, from, total);

@@ -11,6 +11,7 @@
 #include "core/control/run_to_run_setup.h"
 #include "core/loop/loop_runner.h"
 #include "core/ports/history_store.h"
+#include "core/run/shaft_run.h"
 #include "core/run/shaft_scenario.h"
 
 namespace tt::core {
@@ -56,6 +57,22 @@ struct LatheStudyPoint {
     double kEffAnalytic = 0.0;  ///< the controller's design model, closed-loop Lyapunov (NaN when unavailable)
 };
 
+/// How much of a step in the plant (PlantMismatch::step) the closed loop leaves in place.
+struct StepResidual {
+    std::int64_t atPart = 0;
+    double sizeMm = 0.0;
+    std::optional<int> point;               ///< 0-based; none: the whole part (the mean over the control points)
+    std::int64_t fromPart = 0, toPart = 0;  ///< the parts averaged: 3z + 5 after the step, then 20
+    /// Mean over those parts of the step's effect on the true error (the run with the step minus the
+    /// same run without it, same seed), as % of the step.
+    double residualPct = 0.0;
+};
+
+/// Parts after a step before its residual is taken: 3z + 5 (z the model's delay); parts averaged: 20.
+inline constexpr int kStepSettleFactor = 3;
+inline constexpr int kStepSettleParts = 5;
+inline constexpr int kStepAveragedParts = 20;
+
 /// Result of a study: variances and k_eff at the control points, and the profile of the finished parts.
 struct LatheStudyResult {
     ControllerKind controller = ControllerKind::Lqg;
@@ -74,6 +91,10 @@ struct LatheStudyResult {
     std::int64_t profileFromPart = 0, profileToPart = 0;
     std::optional<std::int64_t> runId;
     SimulationOutcome outcome;
+    std::optional<StepResidual> step;        ///< when the scenario's plant has a step
+    std::vector<RecordedAlarm> modelAlarms;  ///< the mismatch monitor's alarms in the closed run
+    double maxCorrectionMm = 0.0;            ///< the closed run's largest |correction| sent, radial mm
+    double maxCorrectionStepMm = 0.0;        ///< and its largest change between parts, radial mm
 };
 
 /// Runs the closed loop of `scenario` (planned by planShaftRun: with the feed-forward unless open) with the

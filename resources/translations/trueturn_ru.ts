@@ -1101,6 +1101,26 @@
         <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
         <translation>Деталь %1, точка %2 (x = %3 мм): %4 мм на %5 мм меньше нижнего предела %6 мм: неисправимый брак</translation>
     </message>
+    <message>
+        <source>correlation</source>
+        <translation>корреляционный</translation>
+    </message>
+    <message>
+        <source>variance</source>
+        <translation>дисперсионный</translation>
+    </message>
+    <message>
+        <source>The CNC keeps the last correction until the run is restarted</source>
+        <translation>ЧПУ сохраняет последнюю коррекцию до перезапуска серии</translation>
+    </message>
+    <message>
+        <source>The controller goes on</source>
+        <translation>Регулятор продолжает работу</translation>
+    </message>
+    <message>
+        <source>The plant no longer matches the controller&apos;s model (part %1, point %2): the %3 test of the innovations over %4 parts is %5, above its limit %6. %7</source>
+        <translation>Объект больше не соответствует модели регулятора (деталь %1, точка %2): %3 критерий невязок за %4 деталей равен %5, выше предела %6. %7</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>

@@ -133,6 +133,25 @@ QString faultText(const core::Notice& n) {
                 .arg(n.part)
                 .arg(n.point)
                 .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
+        case K::ModelMismatch: {
+            const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
+                                                    : QCoreApplication::translate("Notice", "variance");
+            const QString then = n.cause == "hold"
+                                     ? QCoreApplication::translate(
+                                           "Notice", "The CNC keeps the last correction until the run is restarted")
+                                     : QCoreApplication::translate("Notice", "The controller goes on");
+            return QCoreApplication::translate("Notice",
+                                               "The plant no longer matches the controller's model (part %1, point "
+                                               "%2): the %3 test of the innovations over %4 parts is %5, above its "
+                                               "limit %6. %7")
+                .arg(n.part)
+                .arg(n.point)
+                .arg(test)
+                .arg(n.otherPart)
+                .arg(n.value, 0, 'g', 3)
+                .arg(n.limit, 0, 'g', 3)
+                .arg(then);
+        }
         default:
             return {};
     }

@@ -10,6 +10,7 @@
 #include "core/sim/shaft/lathe_setup.h"
 #include "core/sim/shaft/lathe_simulator.h"
 #include "core/sim/shaft/lathe_station.h"
+#include "core/sim/shaft/plant_mismatch.h"
 
 namespace tt::core {
 
@@ -25,6 +26,9 @@ struct LatheShopSpec {
     double partLengthMm = 325.0;      ///< statistical plant only
     LatheStationTiming timing;
     std::uint64_t seed = 1;  ///< every random source of the shop
+    /// How the simulated plant differs from the controller's model (plant.delay is the model's z). A gain
+    /// factor and a step at one control point need the statistical plant.
+    PlantMismatch mismatch;
 };
 
 /// The built-in simulated shop: a part process (physical lathe or statistical plant) and the measuring
@@ -44,6 +48,8 @@ public:
     LatheSimulator* lathe() { return m_lathe; }
 
 private:
+    void applyMismatch(const LatheShopSpec& spec);
+
     std::vector<double> m_points;
     std::unique_ptr<LathePartProcess> m_process;
     LatheSimulator* m_lathe = nullptr;

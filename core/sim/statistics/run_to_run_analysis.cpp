@@ -146,6 +146,8 @@ LinearControllerModel controllerModel(const RunToRunSetup& setup, const RunToRun
             return ewmaControllerModel(plant, ewmaWeight);
         case ControllerKind::Open:
             break;
+        case ControllerKind::Dewma:
+            throw std::invalid_argument("analysis: the double EWMA has no linear model here");
     }
     return openLoopControllerModel(plant);
 }
