@@ -19,15 +19,17 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Devices: gauge, probe mandrel, Modbus, CNC correction output"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Run history (SQLite, PostgreSQL), SPC figures (report command)"),
     QT_TRANSLATE_NOOP("tt::ui::About", "The Reports page and PDF reports"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The Controller page: tuning with live predictions and margins"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Integral action, double EWMA and model-mismatch detection"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "ARMA identification of the disturbance from the history"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles, log-in and the audit trail"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode and an on-screen keypad"),
 };
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
-    QT_TRANSLATE_NOOP("tt::ui::About", "The Controller page with live predictions"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles and the audit trail"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "Integral action and model-mismatch detection"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "ARMA identification of the process from the history"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode for the operator's terminal"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Falling back to a safe controller on a model mismatch (it holds)"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Resuming with plant-mismatch or integral-action settings"),
 };
 
 template <std::size_t N>

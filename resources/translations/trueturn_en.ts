@@ -1099,6 +1099,26 @@
         <source>Part %1, point %2 (x = %3 mm): %4 mm is %5 mm below the lower limit %6 mm: scrap</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>correlation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>variance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC keeps the last correction until the run is restarted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The controller goes on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plant no longer matches the controller&apos;s model (part %1, point %2): the %3 test of the innovations over %4 parts is %5, above its limit %6. %7</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -1927,18 +1947,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The Controller page with live predictions</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Users, roles and the audit trail</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Kiosk mode for the operator&apos;s terminal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Implemented:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Not yet implemented:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Log file: %5&lt;/p&gt;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1959,11 +1967,31 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Integral action and model-mismatch detection</source>
+        <source>The Controller page: tuning with live predictions and margins</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>ARMA identification of the process from the history</source>
+        <source>Integral action, double EWMA and model-mismatch detection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ARMA identification of the disturbance from the history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Users, roles, log-in and the audit trail</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kiosk mode and an on-screen keypad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Falling back to a safe controller on a model mismatch (it holds)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Resuming with plant-mismatch or integral-action settings</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1962,32 +1962,40 @@
         <translation>Страница «Отчёты» и отчёты в PDF</translation>
     </message>
     <message>
-        <source>The Controller page with live predictions</source>
-        <translation>Страница «Регулятор» с прогнозами в реальном времени</translation>
-    </message>
-    <message>
-        <source>Users, roles and the audit trail</source>
-        <translation>Пользователи, роли и журнал аудита</translation>
-    </message>
-    <message>
-        <source>Integral action and model-mismatch detection</source>
-        <translation>Интегральное действие и обнаружение рассогласования модели</translation>
-    </message>
-    <message>
-        <source>ARMA identification of the process from the history</source>
-        <translation>Идентификация ARMA-модели процесса по истории</translation>
-    </message>
-    <message>
-        <source>Kiosk mode for the operator&apos;s terminal</source>
-        <translation>Режим киоска для терминала оператора</translation>
-    </message>
-    <message>
         <source>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Adaptive accuracy control for lathes.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Implemented:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Not yet implemented:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Log file: %5&lt;/p&gt;</source>
         <translation>&lt;h2&gt;TrueTurn %1&lt;/h2&gt;&lt;p&gt;Адаптивное управление точностью токарной обработки.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Реализовано:&lt;/b&gt;&lt;/p&gt;%2&lt;p&gt;&lt;b&gt;Пока не реализовано:&lt;/b&gt;&lt;/p&gt;%3&lt;p&gt;Qt %4&lt;/p&gt;&lt;p&gt;Файл журнала: %5&lt;/p&gt;</translation>
     </message>
     <message>
         <source>not written</source>
         <translation>не ведётся</translation>
+    </message>
+    <message>
+        <source>The Controller page: tuning with live predictions and margins</source>
+        <translation>Страница регулятора: настройка с прогнозом и запасами устойчивости</translation>
+    </message>
+    <message>
+        <source>Integral action, double EWMA and model-mismatch detection</source>
+        <translation>Интегральное действие, двойной EWMA и обнаружение несоответствия модели</translation>
+    </message>
+    <message>
+        <source>ARMA identification of the disturbance from the history</source>
+        <translation>Идентификация ARMA-модели возмущения по истории</translation>
+    </message>
+    <message>
+        <source>Users, roles, log-in and the audit trail</source>
+        <translation>Пользователи, роли, вход и журнал изменений</translation>
+    </message>
+    <message>
+        <source>Kiosk mode and an on-screen keypad</source>
+        <translation>Режим киоска и экранная клавиатура</translation>
+    </message>
+    <message>
+        <source>Falling back to a safe controller on a model mismatch (it holds)</source>
+        <translation>Переход на безопасный регулятор при несоответствии модели (сейчас удержание)</translation>
+    </message>
+    <message>
+        <source>Resuming with plant-mismatch or integral-action settings</source>
+        <translation>Продолжение запуска с настройками несоответствия объекта или интегрального действия</translation>
     </message>
 </context>
 <context>
