@@ -1971,11 +1971,11 @@
     </message>
     <message>
         <source>The Controller page: tuning with live predictions and margins</source>
-        <translation>Страница регулятора: настройка с прогнозом и запасами устойчивости</translation>
+        <translation>Страница регулятора: настройка с прогнозом и запасами</translation>
     </message>
     <message>
         <source>Integral action, double EWMA and model-mismatch detection</source>
-        <translation>Интегральное действие, двойной EWMA и обнаружение несоответствия модели</translation>
+        <translation>Интегральное действие, двойной EWMA, контроль модели</translation>
     </message>
     <message>
         <source>ARMA identification of the disturbance from the history</source>
@@ -1991,11 +1991,11 @@
     </message>
     <message>
         <source>Falling back to a safe controller on a model mismatch (it holds)</source>
-        <translation>Переход на безопасный регулятор при несоответствии модели (сейчас удержание)</translation>
+        <translation>Безопасный регулятор при несоответствии модели (сейчас удержание)</translation>
     </message>
     <message>
         <source>Resuming with plant-mismatch or integral-action settings</source>
-        <translation>Продолжение запуска с настройками несоответствия объекта или интегрального действия</translation>
+        <translation>Продолжение запуска с рассогласованием объекта или интегралом</translation>
     </message>
 </context>
 <context>
@@ -2659,7 +2659,7 @@ L/d %4</translation>
     </message>
     <message>
         <source>frequency, rad per part</source>
-        <translation>частота, рад на деталь</translation>
+        <translation>частота, рад/дет.</translation>
     </message>
     <message>
         <source>|S|</source>

@@ -19,7 +19,9 @@ public:
         driveId = manager.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent, driveName, {});
         manager.openAll();
     }
-    /// Moves simulated time on by `seconds` in 50 ms steps, letting the devices' timers tick.
+    /// Moves simulated time on by `seconds` in 50 ms steps, letting the devices' timers tick. On a loaded
+    /// machine a device's timer ticks less often than every step, so the tests' waits on a capture or a
+    /// measurement are capped at generous amounts of simulated time (they end as soon as it is done).
     void step(double seconds) {
         for (double t = 0.0; t < seconds - 1e-9; t += 0.05) {
             clock.advanceBy(0.05);

@@ -18,8 +18,8 @@ WeightEditor::WeightEditor(double minValue, double maxValue, int decimals, QObje
       m_slider(new QSlider(Qt::Horizontal)),
       m_field(new QDoubleSpinBox) {
     m_slider->setRange(0, kSteps);
-    m_slider->setFixedWidth(56);
-    m_field->setMaximumWidth(96);
+    m_slider->setFixedWidth(48);
+    m_field->setMinimumWidth(116);  // "0.0100" and the arrows of the house style (tests/ui/terminal)
     m_field->setRange(minValue, maxValue);
     m_field->setDecimals(decimals);
     m_field->setKeyboardTracking(false);

@@ -142,6 +142,7 @@ QWidget* ControllerPage::buildSettings() {
 QWidget* ControllerPage::buildPoints() {
     auto* box = new QGroupBox;
     auto* grid = new QGridLayout(box);
+    grid->setHorizontalSpacing(6);  // ten columns within the 1280 px terminal (tests/ui/terminal)
     const int columns = 8;
     for (int c = 0; c < columns; ++c) {
         auto* h = new QLabel;
@@ -191,7 +192,7 @@ QWidget* ControllerPage::buildCharts() {
     m_sensitivityChart = new Chart;
     for (Chart* c : {m_stepChart, m_sensitivityChart}) {
         c->setMinimumHeight(220);
-        c->setMinimumWidth(240);
+        c->setMinimumWidth(220);
         c->setLegendBelow(2);
         c->setXTickCount(5);
         c->setYTickCount(5);

@@ -55,7 +55,7 @@ protected:
     void capture(ProbeCapturePage* page, double um) {
         page->setJack(um);
         ASSERT_TRUE(page->capturePoint());
-        for (int i = 0; i < 40 && page->capturing(); ++i) {
+        for (int i = 0; i < 200 && page->capturing(); ++i) {
             step(0.05);
             page->pollProbe();
         }
@@ -80,7 +80,7 @@ protected:
     QString check(KpFitPage* fit, double loadN) {
         fit->setCheckLoadN(loadN);
         if (!fit->checkLoad()) return {};
-        for (int i = 0; i < 400 && fit->checking(); ++i) {
+        for (int i = 0; i < 2000 && fit->checking(); ++i) {
             step(0.05);
             fit->step(0.05);
         }
@@ -89,7 +89,7 @@ protected:
     bool measure(KpLoadsPage* loads, double loadN) {
         loads->setLoadN(loadN);
         if (!loads->startMeasurement()) return false;
-        for (int i = 0; i < 400 && loads->measuring(); ++i) {
+        for (int i = 0; i < 2000 && loads->measuring(); ++i) {
             step(0.05);
             loads->step(0.05);
         }
@@ -152,7 +152,7 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     cp->selectPoint(0);
     cp->setJack(-260.0);
     ASSERT_TRUE(cp->repeatPoint());
-    for (int i = 0; i < 40 && cp->capturing(); ++i) {
+    for (int i = 0; i < 200 && cp->capturing(); ++i) {
         step(0.05);
         cp->pollProbe();
     }
@@ -198,7 +198,7 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     ProbeAcceptPage* ap = w->acceptPage();
     ap->setJack(123.0);
     ASSERT_TRUE(ap->checkPoint());
-    for (int i = 0; i < 40 && page.probeSession().procedure.capturing(); ++i) {
+    for (int i = 0; i < 200 && page.probeSession().procedure.capturing(); ++i) {
         step(0.05);
         ap->pollProbe();
     }

@@ -113,7 +113,7 @@ TEST_F(CalibrationWizardsInRussian, ProbeWizardPagesFitAndSpeakRussian) {
     for (int i = 0; i <= 10; ++i) {  // on the stand: the jack bends the bar, the point is captured
         cp->setJack(-250.0 + 50.0 * i);
         ASSERT_TRUE(cp->capturePoint());
-        for (int k = 0; k < 40 && cp->capturing(); ++k) {
+        for (int k = 0; k < 200 && cp->capturing(); ++k) {
             step(0.05);
             cp->pollProbe();
         }
@@ -129,7 +129,7 @@ TEST_F(CalibrationWizardsInRussian, ProbeWizardPagesFitAndSpeakRussian) {
     w->next();
     w->acceptPage()->setJack(123.0);
     ASSERT_TRUE(w->acceptPage()->checkPoint());
-    for (int i = 0; i < 40 && page->probeSession().procedure.capturing(); ++i) {
+    for (int i = 0; i < 200 && page->probeSession().procedure.capturing(); ++i) {
         step(0.05);
         w->acceptPage()->pollProbe();
     }
@@ -164,7 +164,7 @@ TEST_F(CalibrationWizardsInRussian, KpWizardPagesFitAndSpeakRussian) {
     for (double load : {0.0, 300.0}) {
         loads->setLoadN(load);
         ASSERT_TRUE(loads->startMeasurement());
-        for (int i = 0; i < 400 && loads->measuring(); ++i) {
+        for (int i = 0; i < 2000 && loads->measuring(); ++i) {
             step(0.05);
             loads->step(0.05);
         }
@@ -177,7 +177,7 @@ TEST_F(CalibrationWizardsInRussian, KpWizardPagesFitAndSpeakRussian) {
     KpFitPage* fp = w->fitPage();
     fp->setCheckLoadN(150.0);
     ASSERT_TRUE(fp->checkLoad());
-    for (int i = 0; i < 400 && fp->checking(); ++i) {
+    for (int i = 0; i < 2000 && fp->checking(); ++i) {
         step(0.05);
         fp->step(0.05);
     }

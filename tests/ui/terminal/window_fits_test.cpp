@@ -85,7 +85,7 @@ TEST_P(WindowFits, EveryPageOfBothCalibrationWizards) {
     for (int i = 0; i <= 10; ++i) {
         cp->setJack(-250.0 + 50.0 * i);
         ASSERT_TRUE(cp->capturePoint());
-        for (int k = 0; k < 40 && cp->capturing(); ++k) {
+        for (int k = 0; k < 200 && cp->capturing(); ++k) {
             stand.step(0.05);
             cp->pollProbe();
         }
@@ -112,7 +112,7 @@ TEST_P(WindowFits, EveryPageOfBothCalibrationWizards) {
     for (double load : {0.0, 300.0}) {
         loads->setLoadN(load);
         ASSERT_TRUE(loads->startMeasurement());
-        for (int i = 0; i < 400 && loads->measuring(); ++i) {
+        for (int i = 0; i < 2000 && loads->measuring(); ++i) {
             stand.step(0.05);
             loads->step(0.05);
         }
