@@ -14,6 +14,7 @@
 #include "ui/app_state.h"
 #include "ui/auth/log_in_gate.h"
 #include "ui/auth/user_session.h"
+#include "ui/controller/controller_tuning.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/history_check.h"
 #include "ui/kiosk.h"
@@ -79,6 +80,9 @@ int runGui(int argc, char** argv) {
     ui::AppContext context{&prompt, &state, &language,
                            options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath,
                            &devices.manager()};
+    // The tuning applied on the Controller page reaches the Run page's loop.
+    ui::ControllerTuning tuning;
+    context.tuning = &tuning;
     // The application's log in the user's data folder (its path is in the About box).
     std::unique_ptr<ui::LogFile> log;
     try {

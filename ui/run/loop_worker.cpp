@@ -21,6 +21,16 @@ constexpr int kTickMs = 20;
 constexpr int kMaxStepsPerTick = 200;
 /// Points of the systematic model d(x) the profile plot draws.
 constexpr int kModelSamples = 130;
+/// Parts over which the difference between the old and the new controller's correction fades out when a new
+/// tuning is applied during a run (docs/DECISIONS.md).
+constexpr int kTuningTransferParts = 10;
+}  // namespace
+
+namespace {
+/// The scenario's controller part tuned as the Controller page applied it (core::withControllerTuning).
+void tuneScenario(config::LoopScenario& scenario, const core::RunToRunSetup& tuning) {
+    static_cast<core::ShaftScenario&>(scenario) = core::withControllerTuning(scenario, tuning);
+}
 }  // namespace
 
 /// Passes the engine's events (on this thread) to the worker.
@@ -70,6 +80,7 @@ void LoopWorker::openHistory(const QString& path) {
 std::unique_ptr<LoopWorker::Run> LoopWorker::build(const RunSettings& settings, const MachineMaker& makeMachine) {
     auto run = std::make_unique<Run>();
     run->scenario = config::loadLoopScenario(settings.preset, settings.delay);
+    if (settings.tuning) tuneScenario(run->scenario, *settings.tuning);
     run->scenario.pauseOnScrap = run->scenario.pauseOnScrap || settings.pauseOnScrap;
     run->plan = core::planShaftRun(
         run->scenario, {core::controllerKindFromName(settings.controller.toStdString()), std::nullopt, std::nullopt});
@@ -136,6 +147,7 @@ core::RunDescription describe(const RunSettings& settings, const core::ShaftRunP
 }  // namespace
 
 void LoopWorker::start(const RunSettings& settings, MachineMaker makeMachine) {
+    m_tuningPending = false;
     if (m_run && m_run->engine->state() != core::LoopState::Idle) {
         emit startFailed(tr("A run is already going; stop it first."));
         return;
@@ -227,6 +239,18 @@ void LoopWorker::silenceGauge(double seconds) {
     if (m_run && m_run->machine->silenceGauge(seconds)) tick();
 }
 
+void LoopWorker::applyTuning(const core::RunToRunSetup& tuning) {
+    if (!m_run || m_run->engine->state() == core::LoopState::Idle) return;
+    try {
+        m_run->engine->replaceController(core::retunedShaftController(m_run->scenario, m_run->plan, tuning),
+                                         kTuningTransferParts);
+        tuneScenario(m_run->scenario, tuning);
+        m_tuningPending = true;
+    } catch (const std::exception& e) {
+        emit notice(tr("The new controller tuning was not taken: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
 void LoopWorker::shutdown() {
     m_timer->stop();
     if (m_run && m_run->engine->state() != core::LoopState::Idle) m_run->engine->stop();
@@ -282,6 +306,10 @@ void LoopWorker::onEvent(const core::LoopEvent& event) {
         qCInfo(lcLoop).noquote() << core::toString(event.state).data() << "-" << QString::fromStdString(event.message);
     emit loopEvent(event);
     if (!m_run) return;
+    if (event.kind == core::LoopEvent::Kind::PartStarted && m_tuningPending) {
+        m_tuningPending = false;
+        emit tuningTaken(event.partNumber);
+    }
     if (event.kind == core::LoopEvent::Kind::PartFinished)
         if (const auto profile = m_run->machine->trueProfile(event.partNumber))
             emit partProfile(event.partNumber, QVector<double>(profile->zMm.begin(), profile->zMm.end()),

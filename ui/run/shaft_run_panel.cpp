@@ -16,6 +16,8 @@
 
 #include "devices/api/device_manager.h"
 #include "ui/app_state.h"
+#include "ui/auth/audit_trail.h"
+#include "ui/controller/controller_tuning.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
 #include "ui/run/lathe_link.h"
@@ -171,6 +173,10 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     connect(m_session, &RunSession::loopEvent, this, &ShaftRunPanel::onLoopEvent);
     connect(m_session, &RunSession::partProfile, m_profile, &ProfilePanel::onPartProfile);
     connect(m_session, &RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
+    connect(m_session, &RunSession::tuningTaken, this,
+            [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
+    if (ControllerTuning* tuning = m_context.tuning)
+        connect(tuning, &ControllerTuning::applied, m_session, &RunSession::applyTuning);
     if (devices::DeviceManager* manager = m_context.devices) {
         connect(manager, &devices::DeviceManager::devicesChanged, this, [this] {
             fillDeviceChoices();
@@ -433,6 +439,7 @@ RunSettings ShaftRunPanel::settings() const {
     s.pauseOnScrap = m_pauseOnScrap->isChecked();
     s.databasePath = m_context.databasePath;
     s.seed = QRandomGenerator::global()->generate64() >> 12;
+    if (m_context.tuning) s.tuning = m_context.tuning->current();
     if (s.operatorCycle) {
         s.outputDeviceId = m_output->currentData().toString();
         s.gaugeDeviceId = m_gauge->currentData().toString();
@@ -442,6 +449,12 @@ RunSettings ShaftRunPanel::settings() const {
 }
 
 void ShaftRunPanel::onStart() {
+    try {
+        AuditTrail(m_context).require(core::auth::Permission::RunMachine);
+    } catch (const core::auth::PermissionDenied& refused) {
+        refuseStart(QString::fromStdString(refused.what()));
+        return;
+    }
     RunSettings s = settings();
     MachineMaker makeMachine;
     if (s.operatorCycle) {
@@ -516,6 +529,9 @@ void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
     if (ended && m_layout.operatorCycle) m_link->disconnectDevices(tr("the run is over"));
     m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
     if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), noticeText(snapshot.status));
+    if (m_context.tuning)
+        m_context.tuning->setLoopTakesTuning(snapshot.state == core::LoopState::Running ||
+                                             snapshot.state == core::LoopState::Paused);
     updateControls();
     updateTexts();
 }
