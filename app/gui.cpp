@@ -22,6 +22,7 @@
 #include "ui/log_file.h"
 #include "ui/main_window.h"
 #include "ui/prompt.h"
+#include "ui/run/interrupted_run.h"
 #include "ui/style.h"
 
 namespace tt::app {
@@ -120,7 +121,10 @@ int runGui(int argc, char** argv) {
         window.show();
 
     if (options.screenshotDir.isEmpty())
-        QTimer::singleShot(0, &window, [&] { ui::checkHistoryAtStart(context, &window, &prompt); });
+        QTimer::singleShot(0, &window, [&] {
+            // An interrupted run is offered for resume once the history is known to be usable.
+            if (ui::checkHistoryAtStart(context, &window, &prompt)) ui::offerInterruptedRun(context, window);
+        });
     else
         ui::checkHistoryAtStart(context, &window, nullptr);  // screenshots: the status bar says it, no dialog
 

@@ -34,6 +34,10 @@ public slots:
     /// history that cannot be opened, a CNC output set up for another diameter) are reported through
     /// startFailed and nothing starts.
     void start(const tt::ui::RunSettings& settings, tt::ui::MachineMaker makeMachine);
+    /// Continues the stored run `runId` of the history `settings.databasePath` on the machine `makeMachine`
+    /// makes, set up with the run's stored settings (core::resumeShaftRun: its controller state, its parts
+    /// still waiting for the gauge); failures through startFailed.
+    void resume(const tt::ui::RunSettings& settings, qint64 runId, tt::ui::MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();
@@ -70,6 +74,7 @@ private:
     struct Run;
     class Relay;
 
+    void begin(const RunSettings& settings, const MachineMaker& makeMachine, std::optional<qint64> resumeRunId);
     void tick();
     void publish();
     void onEvent(const core::LoopEvent& event);

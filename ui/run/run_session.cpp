@@ -37,6 +37,12 @@ void RunSession::start(const RunSettings& settings, MachineMaker makeMachine) {
         m_worker, [w = m_worker, settings, makeMachine] { w->start(settings, makeMachine); }, Qt::QueuedConnection);
 }
 
+void RunSession::resume(const RunSettings& settings, qint64 runId, MachineMaker makeMachine) {
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, settings, runId, makeMachine] { w->resume(settings, runId, makeMachine); },
+        Qt::QueuedConnection);
+}
+
 void RunSession::pause() {
     QMetaObject::invokeMethod(m_worker, &LoopWorker::pause, Qt::QueuedConnection);
 }

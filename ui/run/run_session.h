@@ -23,6 +23,8 @@ public:
 
     /// Starts a run on the machine `makeMachine` makes (in the loop's thread).
     void start(const RunSettings& settings, MachineMaker makeMachine);
+    /// Continues the stored run `runId` (LoopWorker::resume).
+    void resume(const RunSettings& settings, qint64 runId, MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();

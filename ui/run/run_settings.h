@@ -50,6 +50,10 @@ struct RunSettings {
     /// The controller tuning applied on the Controller page (ui/controller/controller_tuning.h); none: the
     /// preset's.
     std::optional<core::RunToRunSetup> tuning;
+    /// The run ends after this part (a resumed run planned with an end); none: until stopped.
+    std::optional<qint64> lastPartNumber;
+    /// The EWMA lambda (a resumed run keeps its own); none: the preset's.
+    std::optional<double> ewmaWeight;
 };
 
 /// The loop as the page shows it, sent by the loop thread after every change.

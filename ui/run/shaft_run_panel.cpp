@@ -20,6 +20,7 @@
 #include "ui/controller/controller_tuning.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
+#include "ui/run/interrupted_run.h"
 #include "ui/run/lathe_link.h"
 #include "ui/run/lathe_panel.h"
 #include "ui/run/manual_entry_panel.h"
@@ -448,13 +449,48 @@ RunSettings ShaftRunPanel::settings() const {
     return s;
 }
 
-void ShaftRunPanel::onStart() {
+bool ShaftRunPanel::mayRunMachine() {
     try {
         AuditTrail(m_context).require(core::auth::Permission::RunMachine);
+        return true;
     } catch (const core::auth::PermissionDenied& refused) {
         refuseStart(QString::fromStdString(refused.what()));
-        return;
+        return false;
     }
+}
+
+bool ShaftRunPanel::resumeRun(const InterruptedRun& run) {
+    if (!mayRunMachine()) return false;
+    if (m_snapshot.state != core::LoopState::Idle) {
+        refuseStart(tr("A run is already going; stop it first."));
+        return false;
+    }
+    RunSettings s = run.settings;
+    std::optional<devices::ShaftMachineOffer> offer;
+    for (const devices::ShaftMachineOffer& o : m_offers)
+        if (o.key == s.machineKey) offer = o;
+    if (!offer) {
+        refuseStart(tr("The machine of run %1 is not offered; it cannot be continued.").arg(run.point.run.runId));
+        return false;
+    }
+    setChoice(m_machine, s.machineKey);
+    setChoice(m_preset, s.preset);
+    setChoice(m_controller, s.controller);
+    m_delay->setValue(s.delay);
+    s.machineName = offer->name;
+    s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
+    MachineMaker makeMachine = [make = offer->make, seed = s.seed,
+                                speed = s.speed](const core::ShaftScenario& scenario) {
+        return std::shared_ptr<core::ShaftMachine>(make(scenario, seed, speed));
+    };
+    addAlarm(tr("Continuing run %1 from part %2.").arg(run.point.run.runId).arg(run.nextPart()), false);
+    m_session->resume(s, run.point.run.runId, std::move(makeMachine));
+    m_start->setEnabled(false);
+    return true;
+}
+
+void ShaftRunPanel::onStart() {
+    if (!mayRunMachine()) return;
     RunSettings s = settings();
     MachineMaker makeMachine;
     if (s.operatorCycle) {
