@@ -20,10 +20,6 @@ namespace {
 /// The built-in simulator's lathe (devices/builtin), the machine an interrupted run continues on.
 const QString kSimulatedLathe = QStringLiteral("simulated-lathe");
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("tt::ui::InterruptedRun", text);
-}
-
 }  // namespace
 
 core::RunDescription storedRunDescription(const RunSettings& settings, const core::ShaftRunPlan& plan) {
@@ -101,18 +97,23 @@ bool offerInterruptedRun(AppContext& context, MainWindow& window) {
     const std::optional<InterruptedRun> run = findInterruptedRun(context);
     if (!run) return false;
     const core::RunSummary& summary = run->point.run;
-    const QString planned =
-        run->settings.lastPartNumber ? QString::number(*run->settings.lastPartNumber) : tr("no end");
+    const QString planned = run->settings.lastPartNumber
+                                ? QString::number(*run->settings.lastPartNumber)
+                                : QCoreApplication::translate("tt::ui::InterruptedRun", "no end");
     const QString question =
-        tr("Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?")
+        QCoreApplication::translate("tt::ui::InterruptedRun",
+                                    "Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?")
             .arg(summary.runId)
-            .arg(summary.description.machine.empty() ? tr("simulated lathe")
-                                                     : QString::fromStdString(summary.description.machine),
+            .arg(summary.description.machine.empty()
+                     ? QCoreApplication::translate("tt::ui::InterruptedRun", "simulated lathe")
+                     : QString::fromStdString(summary.description.machine),
                  run->settings.preset)
             .arg(summary.partCount)
             .arg(planned)
             .arg(run->nextPart());
-    if (context.prompt->ask(&window, tr("Interrupted run"), question) != Prompt::Answer::Yes) return false;
+    if (context.prompt->ask(&window, QCoreApplication::translate("tt::ui::InterruptedRun", "Interrupted run"),
+                            question) != Prompt::Answer::Yes)
+        return false;
     window.showPage(PageId::Run);
     auto* page = qobject_cast<RunPage*>(window.page(PageId::Run));
     if (!page) return false;
