@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <QElapsedTimer>
+#include <QProcess>
 #include <QTest>
 #include <functional>
 #include <set>
@@ -135,6 +136,59 @@ TEST_F(InterruptedRunTest, AFinishedRunIsNotOffered) {
     MainWindow window(context);
     EXPECT_FALSE(offerInterruptedRun(context, window));
     EXPECT_TRUE(prompt.log.isEmpty()) << "nothing asked";
+}
+
+TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinues) {
+    // `trueturn simulate --db` on the physical-lathe preset, interrupted as Ctrl-C does (SIGTERM: the run
+    // stops after its current part and stays resumable).
+    QProcess simulate;
+    simulate.start(QStringLiteral(TRUETURN_EXE),
+                   {QStringLiteral("simulate"), QStringLiteral("--db"), context.databasePath,
+                    QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"), QStringLiteral("--parts"),
+                    QStringLiteral("400"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--seed"),
+                    QStringLiteral("3"), QStringLiteral("--speed"), QStringLiteral("3600")});
+    ASSERT_TRUE(simulate.waitForStarted(10000));
+    ASSERT_TRUE(waitFor(
+        [&] {
+            const std::optional<InterruptedRun> run = findInterruptedRun(context);
+            return run && run->point.lastPartNumber >= 5;
+        },
+        60000));
+    simulate.terminate();
+    ASSERT_TRUE(simulate.waitForFinished(30000));
+    EXPECT_EQ(simulate.exitCode(), 130) << simulate.readAllStandardError().toStdString();
+
+    const std::optional<InterruptedRun> found = findInterruptedRun(context);
+    ASSERT_TRUE(found.has_value());
+    EXPECT_EQ(found->settings.lastPartNumber, std::optional<qint64>(400)) << "warm-up 0 + 400 parts";
+    EXPECT_EQ(found->settings.seed, 3u);
+    const qint64 runId = found->point.run.runId;
+    const qint64 next = found->nextPart();
+    MainWindow window(context);
+    RunPage* page = showRunPage(window);
+    ASSERT_NE(page, nullptr);
+    std::set<qint64> startedParts;
+    QObject::connect(&page->session(), &RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
+        if (e.kind == core::LoopEvent::Kind::PartStarted) startedParts.insert(e.partNumber);
+    });
+    prompt.answers.push_back(Prompt::Answer::Yes);
+    ASSERT_TRUE(offerInterruptedRun(context, window));
+    EXPECT_TRUE(prompt.lastText.endsWith(
+        QStringLiteral("of 400 parts done) was interrupted. Continue it from part %1?").arg(next)))
+        << prompt.lastText.toStdString();
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 5; }, 60000))
+        << core::describe(page->session().snapshot().status);
+    page->session().stop();
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 30000));
+    ASSERT_FALSE(startedParts.empty());
+    EXPECT_EQ(*startedParts.begin(), next);
+    EXPECT_EQ(context.data().history()->runs().size(), 1u) << "the same run, no new one";
+    std::set<qint64> numbers;
+    for (const core::StoredPart& p : context.data().history()->parts(runId))
+        EXPECT_TRUE(numbers.insert(p.partNumber).second) << "part " << p.partNumber << " stored twice";
+    ASSERT_FALSE(numbers.empty());
+    EXPECT_EQ(*numbers.begin(), 1);
+    EXPECT_EQ(static_cast<qint64>(numbers.size()), *numbers.rbegin()) << "no part missing";
 }
 
 }  // namespace
