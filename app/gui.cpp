@@ -14,6 +14,7 @@
 #include "ui/app_state.h"
 #include "ui/auth/log_in_gate.h"
 #include "ui/auth/user_session.h"
+#include "ui/controller/controller_tuning.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/history_check.h"
 #include "ui/kiosk.h"
@@ -21,6 +22,7 @@
 #include "ui/log_file.h"
 #include "ui/main_window.h"
 #include "ui/prompt.h"
+#include "ui/run/interrupted_run.h"
 #include "ui/style.h"
 
 namespace tt::app {
@@ -79,6 +81,9 @@ int runGui(int argc, char** argv) {
     ui::AppContext context{&prompt, &state, &language,
                            options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath,
                            &devices.manager()};
+    // The tuning applied on the Controller page reaches the Run page's loop.
+    ui::ControllerTuning tuning;
+    context.tuning = &tuning;
     // The application's log in the user's data folder (its path is in the About box).
     std::unique_ptr<ui::LogFile> log;
     try {
@@ -116,7 +121,10 @@ int runGui(int argc, char** argv) {
         window.show();
 
     if (options.screenshotDir.isEmpty())
-        QTimer::singleShot(0, &window, [&] { ui::checkHistoryAtStart(context, &window, &prompt); });
+        QTimer::singleShot(0, &window, [&] {
+            // An interrupted run is offered for resume once the history is known to be usable.
+            if (ui::checkHistoryAtStart(context, &window, &prompt)) ui::offerInterruptedRun(context, window);
+        });
     else
         ui::checkHistoryAtStart(context, &window, nullptr);  // screenshots: the status bar says it, no dialog
 

@@ -13,6 +13,7 @@ class DeviceManager;
 namespace tt::ui {
 
 class AppState;
+class ControllerTuning;
 class Prompt;
 class LanguageSwitcher;
 class UserSession;
@@ -35,6 +36,9 @@ struct AppContext {
     /// The session's access guard, given to every store: a change the logged-in role may not make is
     /// refused by the store. Null = not access-controlled (tests of pages that log nobody in).
     const core::auth::AccessGuard* access = nullptr;
+    /// The controller tuning applied on the Controller page, taken by the Run page's loop (ui/controller/
+    /// controller_tuning.h); null = the pages do not share it (tests of one page).
+    ControllerTuning* tuning = nullptr;
 
     /// The database's stores for the GUI thread; made again when `databasePath` changes.
     storage::DataStores& data() {

@@ -51,6 +51,32 @@ std::unique_ptr<LoopEngine> buildShaftRun(const ShaftScenario& scenario, const S
         makeShaftController(scenario, plan));
 }
 
+ShaftScenario withControllerTuning(ShaftScenario scenario, const RunToRunSetup& tuning) {
+    RunToRunSetup& control = scenario.control;
+    const std::size_t points = control.plant.points.size();
+    const auto n = static_cast<Eigen::Index>(points);
+    if (tuning.plant.points.size() != points || tuning.weights.R1.rows() != n || tuning.weights.R2.rows() != n)
+        throw std::invalid_argument("the controller tuning has " + std::to_string(tuning.plant.points.size()) +
+                                    " control points, the run " + std::to_string(points));
+    const double ewmaWeight = control.ewma.weight;
+    control.weights = tuning.weights;
+    control.limits = tuning.limits;
+    control.lqg = tuning.lqg;
+    control.ewma = tuning.ewma;
+    control.ewma.weight = ewmaWeight;
+    control.integral = tuning.integral;
+    for (std::size_t i = 0; i < points; ++i)
+        control.plant.points[i].disturbance = tuning.plant.points[i].disturbance;
+    return scenario;
+}
+
+std::unique_ptr<RunToRunController> retunedShaftController(const ShaftScenario& scenario, const ShaftRunPlan& plan,
+                                                           const RunToRunSetup& tuning) {
+    const ShaftScenario tuned = withControllerTuning(scenario, tuning);
+    const ShaftRunPlan retuned = planShaftRun(tuned, {plan.controller, plan.ewmaWeight, std::nullopt});
+    return makeShaftController(tuned, retuned);
+}
+
 void resumeShaftRun(LoopEngine& engine, ShaftMachine& machine, const LoopConfig& loop, const ResumePoint& point) {
     for (const StoredPart& pending : point.pendingParts)
         if (!pending.measurement) machine.restorePart(partCorrectionFor(loop, pending));

@@ -56,6 +56,18 @@ std::unique_ptr<RunToRunController> makeShaftController(const ShaftScenario& sce
 std::unique_ptr<LoopEngine> buildShaftRun(const ShaftScenario& scenario, const ShaftRunPlan& plan,
                                           ShaftMachine& machine, HistoryStore* history, DiameterGauge* gauge = nullptr);
 
+/// The scenario with the controller tuning the commissioning engineer applied (the Controller page): its LQG
+/// weights R1 / R2, the controller's correction limits, the LQG and EWMA options (the run's EWMA weight
+/// stays), the integral action and each control point's disturbance model; the plant itself (points, gains,
+/// delay z) and the loop's own limits stay the scenario's. Throws std::invalid_argument when the tuning has
+/// another number of control points than the scenario.
+ShaftScenario withControllerTuning(ShaftScenario scenario, const RunToRunSetup& tuning);
+
+/// A controller of the running plan's kind designed with `tuning` (withControllerTuning), for
+/// LoopEngine::replaceController. Throws std::invalid_argument as withControllerTuning and planShaftRun.
+std::unique_ptr<RunToRunController> retunedShaftController(const ShaftScenario& scenario, const ShaftRunPlan& plan,
+                                                           const RunToRunSetup& tuning);
+
 /// Continues a stored run on the machine: its parts machined but not measured go back on the
 /// measuring station (ShaftMachine::restorePart), then the engine resumes from the stored state.
 void resumeShaftRun(LoopEngine& engine, ShaftMachine& machine, const LoopConfig& loop, const ResumePoint& point);

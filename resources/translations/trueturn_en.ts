@@ -2711,6 +2711,14 @@ L/d %4</source>
         <source>Delay margin in parts (phase margin / crossover) / whole extra parts of delay the loop stays stable with</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Applied to the running loop: the new tuning takes over at the next part, without a jump in the correction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Applied: no run is going; the next Start on the Run page uses this tuning.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>
@@ -4023,6 +4031,25 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
 </context>
 <context>
+    <name>tt::ui::InterruptedRun</name>
+    <message>
+        <source>no end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>simulated lathe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Interrupted run</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::Kiosk</name>
     <message>
         <source>Quit the terminal</source>
@@ -4489,6 +4516,10 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     </message>
     <message>
         <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The new controller tuning was not taken: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -6145,6 +6176,22 @@ Quit anyway?</source>
     </message>
     <message>
         <source>%1 · CNC: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The new controller tuning took over at part %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A run is already going; stop it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The machine of run %1 is not offered; it cannot be continued.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Continuing run %1 from part %2.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

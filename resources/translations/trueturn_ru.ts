@@ -2717,6 +2717,14 @@ L/d %4</translation>
         <source>Delay margin in parts (phase margin / crossover) / whole extra parts of delay the loop stays stable with</source>
         <translation>Запас по задержке в деталях (запас по фазе / частота среза) / сколько лишних деталей задержки контур выдерживает</translation>
     </message>
+    <message>
+        <source>Applied to the running loop: the new tuning takes over at the next part, without a jump in the correction.</source>
+        <translation>Применено к работающему контуру: новая настройка действует со следующей детали, без скачка коррекции.</translation>
+    </message>
+    <message>
+        <source>Applied: no run is going; the next Start on the Run page uses this tuning.</source>
+        <translation>Применено: серия не идёт; следующий пуск на странице «Работа» использует эту настройку.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>
@@ -4047,6 +4055,25 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
     </message>
 </context>
 <context>
+    <name>tt::ui::InterruptedRun</name>
+    <message>
+        <source>no end</source>
+        <translation>без конца</translation>
+    </message>
+    <message>
+        <source>Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?</source>
+        <translation>Серия %1 (%2, %3, сделано %4 из %5 деталей) была прервана. Продолжить её с детали %6?</translation>
+    </message>
+    <message>
+        <source>simulated lathe</source>
+        <translation>модель станка</translation>
+    </message>
+    <message>
+        <source>Interrupted run</source>
+        <translation>Прерванная серия</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::Kiosk</name>
     <message>
         <source>Quit the terminal</source>
@@ -4518,6 +4545,10 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     <message>
         <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
         <translation>Запуск невозможен: выход ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 обтачивает %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
+    </message>
+    <message>
+        <source>The new controller tuning was not taken: %1</source>
+        <translation>Новая настройка регулятора не принята: %1</translation>
     </message>
 </context>
 <context>
@@ -6187,6 +6218,22 @@ Quit anyway?</source>
     <message>
         <source>%1 · CNC: %2</source>
         <translation>%1 · ЧПУ: %2</translation>
+    </message>
+    <message>
+        <source>The new controller tuning took over at part %1.</source>
+        <translation>Новая настройка регулятора действует с детали %1.</translation>
+    </message>
+    <message>
+        <source>A run is already going; stop it first.</source>
+        <translation>Серия уже выполняется; сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>The machine of run %1 is not offered; it cannot be continued.</source>
+        <translation>Станок серии %1 недоступен; её нельзя продолжить.</translation>
+    </message>
+    <message>
+        <source>Continuing run %1 from part %2.</source>
+        <translation>Серия %1 продолжается с детали %2.</translation>
     </message>
 </context>
 <context>

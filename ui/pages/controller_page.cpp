@@ -15,6 +15,7 @@
 #include "core/model/disturbance_model.h"
 #include "ui/auth/audit_trail.h"
 #include "ui/controller/controller_apply.h"
+#include "ui/controller/controller_tuning.h"
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
 #include "ui/plot/chart.h"
@@ -362,6 +363,22 @@ void ControllerPage::apply() {
     if (context().prompt->ask(this, tr("Apply tuning"), question) != Prompt::Answer::Yes) return;
     m_lastRecord = recordTuningChange(context(), m_applied, next);
     m_applied = next;
+    showWhereApplied();
+}
+
+void ControllerPage::showWhereApplied() {
+    ControllerTuning* tuning = context().tuning;
+    if (!tuning) return;
+    const bool running = tuning->loopTakesTuning();
+    tuning->apply(m_applied);
+    m_status->setText(running ? tr("Applied to the running loop: the new tuning takes over at the next part, "
+                                   "without a jump in the correction.")
+                              : tr("Applied: no run is going; the next Start on the Run page uses this tuning."));
+    m_status->setStyleSheet(QStringLiteral("color: #1b5e20; font-weight: bold;"));
+}
+
+QString ControllerPage::statusText() const {
+    return m_status->text();
 }
 
 void ControllerPage::revert() {

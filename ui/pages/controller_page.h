@@ -42,6 +42,8 @@ public:
     const TuningWorker& worker() const { return *m_worker; }
     /// The record of the last Apply (empty before).
     const QString& lastRecord() const { return m_lastRecord; }
+    /// The status line under the points (where the last Apply went, the design's warnings).
+    QString statusText() const;
     /// The weight editors of point `point` (tests drive them).
     WeightEditor& r1(int point) { return *m_r1[static_cast<std::size_t>(point)]; }
     WeightEditor& r2(int point) { return *m_r2[static_cast<std::size_t>(point)]; }
@@ -58,6 +60,8 @@ private:
     void showPredictions(const TuningResult& result);
     void showCharts(const TuningResult& result);
     void apply();
+    /// Hands the applied setup to the Run page's loop (AppContext::tuning) and says where it went.
+    void showWhereApplied();
     void revert();
 
     core::RunToRunSetup m_applied;

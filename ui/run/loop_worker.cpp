@@ -13,6 +13,7 @@
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "ui/log_categories.h"
+#include "ui/run/interrupted_run.h"
 
 namespace tt::ui {
 
@@ -21,6 +22,16 @@ constexpr int kTickMs = 20;
 constexpr int kMaxStepsPerTick = 200;
 /// Points of the systematic model d(x) the profile plot draws.
 constexpr int kModelSamples = 130;
+/// Parts over which the difference between the old and the new controller's correction fades out when a new
+/// tuning is applied during a run (docs/DECISIONS.md).
+constexpr int kTuningTransferParts = 10;
+}  // namespace
+
+namespace {
+/// The scenario's controller part tuned as the Controller page applied it (core::withControllerTuning).
+void tuneScenario(config::LoopScenario& scenario, const core::RunToRunSetup& tuning) {
+    static_cast<core::ShaftScenario&>(scenario) = core::withControllerTuning(scenario, tuning);
+}
 }  // namespace
 
 /// Passes the engine's events (on this thread) to the worker.
@@ -70,9 +81,10 @@ void LoopWorker::openHistory(const QString& path) {
 std::unique_ptr<LoopWorker::Run> LoopWorker::build(const RunSettings& settings, const MachineMaker& makeMachine) {
     auto run = std::make_unique<Run>();
     run->scenario = config::loadLoopScenario(settings.preset, settings.delay);
+    if (settings.tuning) tuneScenario(run->scenario, *settings.tuning);
     run->scenario.pauseOnScrap = run->scenario.pauseOnScrap || settings.pauseOnScrap;
-    run->plan = core::planShaftRun(
-        run->scenario, {core::controllerKindFromName(settings.controller.toStdString()), std::nullopt, std::nullopt});
+    run->plan = core::planShaftRun(run->scenario, {core::controllerKindFromName(settings.controller.toStdString()),
+                                                   settings.ewmaWeight, settings.lastPartNumber});
     run->machine = makeMachine(run->scenario);
     run->machine->setManualEntry(settings.manualEntry);
     run->gauge = std::make_unique<core::SelectableGauge>(run->machine->gauge(), run->manual);
@@ -107,35 +119,17 @@ RunLayout LoopWorker::layoutOf(const Run& run, const RunSettings& settings) cons
     return layout;
 }
 
-namespace {
-
-/// What is stored with the run so it can be identified (and set up again).
-core::RunDescription describe(const RunSettings& settings, const core::ShaftRunPlan& plan) {
-    QJsonObject json{
-        {QStringLiteral("source"), QStringLiteral("gui")},
-        {QStringLiteral("preset"), settings.preset},
-        {QStringLiteral("controller"), settings.controller},
-        {QStringLiteral("delay"), plan.loop.delayParts},
-        {QStringLiteral("seed"), QString::number(settings.seed)},
-        {QStringLiteral("ewma_weight"), plan.ewmaWeight},
-        {QStringLiteral("machine"), settings.operatorCycle ? QStringLiteral("real-lathe") : settings.machineKey}};
-    if (settings.operatorCycle) {
-        json.insert(QStringLiteral("cnc_output"), settings.outputName);
-        json.insert(QStringLiteral("gauge"),
-                    settings.gaugeName.isEmpty() ? QStringLiteral("by hand") : settings.gaugeName);
-    }
-    return {settings.preset.toStdString(),
-            settings.controller.toStdString(),
-            plan.loop.delayParts,
-            plan.loop.nominalDiameterMm,
-            plan.loop.partLengthMm,
-            plan.loop.pointZMm,
-            QJsonDocument(json).toJson(QJsonDocument::Compact).toStdString()};
+void LoopWorker::start(const RunSettings& settings, MachineMaker makeMachine) {
+    begin(settings, makeMachine, std::nullopt);
 }
 
-}  // namespace
+void LoopWorker::resume(const RunSettings& settings, qint64 runId, MachineMaker makeMachine) {
+    begin(settings, makeMachine, runId);
+}
 
-void LoopWorker::start(const RunSettings& settings, MachineMaker makeMachine) {
+void LoopWorker::begin(const RunSettings& settings, const MachineMaker& makeMachine,
+                       std::optional<qint64> resumeRunId) {
+    m_tuningPending = false;
     if (m_run && m_run->engine->state() != core::LoopState::Idle) {
         emit startFailed(tr("A run is already going; stop it first."));
         return;
@@ -152,8 +146,18 @@ void LoopWorker::start(const RunSettings& settings, MachineMaker makeMachine) {
         m_run = std::move(run);
         qCInfo(lcLoop).noquote() << "run started:" << settings.preset << settings.controller << "z =" << layout.delay
                                  << "on" << settings.machineName;
-        emit started(layout);
-        m_run->engine->start(describe(settings, m_run->plan));
+        if (resumeRunId) {
+            const std::optional<core::ResumePoint> point =
+                m_history ? m_history->resumePoint(*resumeRunId) : std::nullopt;
+            if (!point)
+                throw std::runtime_error("run " + std::to_string(*resumeRunId) + " has no part to continue from");
+            emit started(layout);
+            core::resumeShaftRun(*m_run->engine, *m_run->machine, m_run->plan.loop, *point);
+            qCInfo(lcLoop).noquote() << "run" << *resumeRunId << "resumed from part" << point->lastPartNumber + 1;
+        } else {
+            emit started(layout);
+            m_run->engine->start(storedRunDescription(settings, m_run->plan));
+        }
     } catch (const core::OutputDiameterMismatch& e) {
         m_run.reset();
         emit startFailed(tr("The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the "
@@ -227,6 +231,18 @@ void LoopWorker::silenceGauge(double seconds) {
     if (m_run && m_run->machine->silenceGauge(seconds)) tick();
 }
 
+void LoopWorker::applyTuning(const core::RunToRunSetup& tuning) {
+    if (!m_run || m_run->engine->state() == core::LoopState::Idle) return;
+    try {
+        m_run->engine->replaceController(core::retunedShaftController(m_run->scenario, m_run->plan, tuning),
+                                         kTuningTransferParts);
+        tuneScenario(m_run->scenario, tuning);
+        m_tuningPending = true;
+    } catch (const std::exception& e) {
+        emit notice(tr("The new controller tuning was not taken: %1").arg(QString::fromStdString(e.what())));
+    }
+}
+
 void LoopWorker::shutdown() {
     m_timer->stop();
     if (m_run && m_run->engine->state() != core::LoopState::Idle) m_run->engine->stop();
@@ -282,6 +298,10 @@ void LoopWorker::onEvent(const core::LoopEvent& event) {
         qCInfo(lcLoop).noquote() << core::toString(event.state).data() << "-" << QString::fromStdString(event.message);
     emit loopEvent(event);
     if (!m_run) return;
+    if (event.kind == core::LoopEvent::Kind::PartStarted && m_tuningPending) {
+        m_tuningPending = false;
+        emit tuningTaken(event.partNumber);
+    }
     if (event.kind == core::LoopEvent::Kind::PartFinished)
         if (const auto profile = m_run->machine->trueProfile(event.partNumber))
             emit partProfile(event.partNumber, QVector<double>(profile->zMm.begin(), profile->zMm.end()),

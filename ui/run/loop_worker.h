@@ -34,6 +34,10 @@ public slots:
     /// history that cannot be opened, a CNC output set up for another diameter) are reported through
     /// startFailed and nothing starts.
     void start(const tt::ui::RunSettings& settings, tt::ui::MachineMaker makeMachine);
+    /// Continues the stored run `runId` of the history `settings.databasePath` on the machine `makeMachine`
+    /// makes, set up with the run's stored settings (core::resumeShaftRun: its controller state, its parts
+    /// still waiting for the gauge); failures through startFailed.
+    void resume(const tt::ui::RunSettings& settings, qint64 runId, tt::ui::MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();
@@ -46,6 +50,11 @@ public slots:
     void skipMeasurement();
     /// The gauge stops answering for `seconds` of the machine's time (a machine with that fault switch).
     void silenceGauge(double seconds);
+    /// A new controller tuning (the Controller page's Apply): the running loop takes it over at its next part,
+    /// bumplessly (LoopEngine::replaceController over kTuningTransferParts parts); with no run going nothing
+    /// happens (the page passes the tuning with the next start). A tuning that does not fit the run is
+    /// refused through notice.
+    void applyTuning(const tt::core::RunToRunSetup& tuning);
     /// Stops the timer and drops the run (before the thread ends).
     void shutdown();
 
@@ -56,6 +65,8 @@ signals:
     void loopEvent(const tt::core::LoopEvent& event);
     /// The true profile of a part as it came off the machine (diameter error, mm; machines that know it).
     void partProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
+    /// The controller of the running loop was replaced by the applied tuning from part `partNumber` on.
+    void tuningTaken(qint64 partNumber);
     /// A manual entry was not taken (wrong part, no run), in plain words.
     void notice(const QString& text);
 
@@ -63,6 +74,7 @@ private:
     struct Run;
     class Relay;
 
+    void begin(const RunSettings& settings, const MachineMaker& makeMachine, std::optional<qint64> resumeRunId);
     void tick();
     void publish();
     void onEvent(const core::LoopEvent& event);
@@ -75,6 +87,7 @@ private:
     LoopSnapshot m_last;
     std::string m_lastDetail;  ///< the engine's status as last published
     QString m_openDatabasePath;
+    bool m_tuningPending = false;  ///< a replaced controller waits for the next part
     std::unique_ptr<storage::Database> m_database;
     std::unique_ptr<storage::SqlHistoryStore> m_history;
 };

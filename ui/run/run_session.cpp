@@ -22,6 +22,7 @@ RunSession::RunSession(QObject* parent) : QObject(parent) {
     connect(m_worker, &LoopWorker::loopEvent, this, &RunSession::loopEvent);
     connect(m_worker, &LoopWorker::partProfile, this, &RunSession::partProfile);
     connect(m_worker, &LoopWorker::notice, this, &RunSession::notice);
+    connect(m_worker, &LoopWorker::tuningTaken, this, &RunSession::tuningTaken);
     m_thread.start();
 }
 
@@ -34,6 +35,12 @@ RunSession::~RunSession() {
 void RunSession::start(const RunSettings& settings, MachineMaker makeMachine) {
     QMetaObject::invokeMethod(
         m_worker, [w = m_worker, settings, makeMachine] { w->start(settings, makeMachine); }, Qt::QueuedConnection);
+}
+
+void RunSession::resume(const RunSettings& settings, qint64 runId, MachineMaker makeMachine) {
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, settings, runId, makeMachine] { w->resume(settings, runId, makeMachine); },
+        Qt::QueuedConnection);
 }
 
 void RunSession::pause() {
@@ -71,6 +78,11 @@ void RunSession::skipMeasurement() {
 void RunSession::silenceGauge(double seconds) {
     QMetaObject::invokeMethod(
         m_worker, [w = m_worker, seconds] { w->silenceGauge(seconds); }, Qt::QueuedConnection);
+}
+
+void RunSession::applyTuning(const core::RunToRunSetup& tuning) {
+    QMetaObject::invokeMethod(
+        m_worker, [w = m_worker, tuning] { w->applyTuning(tuning); }, Qt::QueuedConnection);
 }
 
 }  // namespace tt::ui

@@ -23,6 +23,8 @@ public:
 
     /// Starts a run on the machine `makeMachine` makes (in the loop's thread).
     void start(const RunSettings& settings, MachineMaker makeMachine);
+    /// Continues the stored run `runId` (LoopWorker::resume).
+    void resume(const RunSettings& settings, qint64 runId, MachineMaker makeMachine);
     void pause();
     void continueRun();
     void stop();
@@ -31,6 +33,8 @@ public:
     void submitDiameters(qint64 partNumber, const QVector<double>& diametersMm);
     void skipMeasurement();
     void silenceGauge(double seconds);
+    /// Hands a newly applied controller tuning to the running loop (LoopWorker::applyTuning).
+    void applyTuning(const core::RunToRunSetup& tuning);
 
     /// The thread the loop runs in (never the GUI thread).
     QThread* loopThread() { return &m_thread; }
@@ -44,6 +48,8 @@ signals:
     void loopEvent(const tt::core::LoopEvent& event);
     void partProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
     void notice(const QString& text);
+    /// The running loop's controller was replaced by the applied tuning from part `partNumber` on.
+    void tuningTaken(qint64 partNumber);
 
 private:
     QThread m_thread;

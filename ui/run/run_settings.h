@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/common/notice.h"
+#include "core/control/run_to_run_setup.h"
 #include "core/loop/loop_state.h"
 #include "core/ports/device_health.h"
 #include "core/ports/shaft_machine.h"
@@ -46,6 +47,13 @@ struct RunSettings {
     QString gaugeName;
     /// The loop pauses on a scrap part (besides the preset's loop.pause_on_scrap).
     bool pauseOnScrap = false;
+    /// The controller tuning applied on the Controller page (ui/controller/controller_tuning.h); none: the
+    /// preset's.
+    std::optional<core::RunToRunSetup> tuning;
+    /// The run ends after this part (a resumed run planned with an end); none: until stopped.
+    std::optional<qint64> lastPartNumber;
+    /// The EWMA lambda (a resumed run keeps its own); none: the preset's.
+    std::optional<double> ewmaWeight;
 };
 
 /// The loop as the page shows it, sent by the loop thread after every change.

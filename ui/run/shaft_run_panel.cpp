@@ -16,8 +16,11 @@
 
 #include "devices/api/device_manager.h"
 #include "ui/app_state.h"
+#include "ui/auth/audit_trail.h"
+#include "ui/controller/controller_tuning.h"
 #include "ui/plot/chart.h"
 #include "ui/prompt.h"
+#include "ui/run/interrupted_run.h"
 #include "ui/run/lathe_link.h"
 #include "ui/run/lathe_panel.h"
 #include "ui/run/manual_entry_panel.h"
@@ -171,6 +174,10 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     connect(m_session, &RunSession::loopEvent, this, &ShaftRunPanel::onLoopEvent);
     connect(m_session, &RunSession::partProfile, m_profile, &ProfilePanel::onPartProfile);
     connect(m_session, &RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
+    connect(m_session, &RunSession::tuningTaken, this,
+            [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
+    if (ControllerTuning* tuning = m_context.tuning)
+        connect(tuning, &ControllerTuning::applied, m_session, &RunSession::applyTuning);
     if (devices::DeviceManager* manager = m_context.devices) {
         connect(manager, &devices::DeviceManager::devicesChanged, this, [this] {
             fillDeviceChoices();
@@ -433,6 +440,7 @@ RunSettings ShaftRunPanel::settings() const {
     s.pauseOnScrap = m_pauseOnScrap->isChecked();
     s.databasePath = m_context.databasePath;
     s.seed = QRandomGenerator::global()->generate64() >> 12;
+    if (m_context.tuning) s.tuning = m_context.tuning->current();
     if (s.operatorCycle) {
         s.outputDeviceId = m_output->currentData().toString();
         s.gaugeDeviceId = m_gauge->currentData().toString();
@@ -441,7 +449,48 @@ RunSettings ShaftRunPanel::settings() const {
     return s;
 }
 
+bool ShaftRunPanel::mayRunMachine() {
+    try {
+        AuditTrail(m_context).require(core::auth::Permission::RunMachine);
+        return true;
+    } catch (const core::auth::PermissionDenied& refused) {
+        refuseStart(QString::fromStdString(refused.what()));
+        return false;
+    }
+}
+
+bool ShaftRunPanel::resumeRun(const InterruptedRun& run) {
+    if (!mayRunMachine()) return false;
+    if (m_snapshot.state != core::LoopState::Idle) {
+        refuseStart(tr("A run is already going; stop it first."));
+        return false;
+    }
+    RunSettings s = run.settings;
+    std::optional<devices::ShaftMachineOffer> offer;
+    for (const devices::ShaftMachineOffer& o : m_offers)
+        if (o.key == s.machineKey) offer = o;
+    if (!offer) {
+        refuseStart(tr("The machine of run %1 is not offered; it cannot be continued.").arg(run.point.run.runId));
+        return false;
+    }
+    setChoice(m_machine, s.machineKey);
+    setChoice(m_preset, s.preset);
+    setChoice(m_controller, s.controller);
+    m_delay->setValue(s.delay);
+    s.machineName = offer->name;
+    s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
+    MachineMaker makeMachine = [make = offer->make, seed = s.seed,
+                                speed = s.speed](const core::ShaftScenario& scenario) {
+        return std::shared_ptr<core::ShaftMachine>(make(scenario, seed, speed));
+    };
+    addAlarm(tr("Continuing run %1 from part %2.").arg(run.point.run.runId).arg(run.nextPart()), false);
+    m_session->resume(s, run.point.run.runId, std::move(makeMachine));
+    m_start->setEnabled(false);
+    return true;
+}
+
 void ShaftRunPanel::onStart() {
+    if (!mayRunMachine()) return;
     RunSettings s = settings();
     MachineMaker makeMachine;
     if (s.operatorCycle) {
@@ -516,6 +565,9 @@ void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
     if (ended && m_layout.operatorCycle) m_link->disconnectDevices(tr("the run is over"));
     m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
     if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), noticeText(snapshot.status));
+    if (m_context.tuning)
+        m_context.tuning->setLoopTakesTuning(snapshot.state == core::LoopState::Running ||
+                                             snapshot.state == core::LoopState::Paused);
     updateControls();
     updateTexts();
 }

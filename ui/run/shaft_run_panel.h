@@ -23,6 +23,7 @@ class LatheLink;
 class LathePanel;
 class ManualEntryPanel;
 class ProfilePanel;
+struct InterruptedRun;
 class RunSession;
 class VerdictCounter;
 
@@ -54,6 +55,10 @@ public:
     QListWidget* alarms() const { return m_alarms; }
     /// The settings the controls hold now.
     RunSettings settings() const;
+    /// Continues an interrupted run (ui/run/interrupted_run.h) on its machine with its stored settings; false
+    /// (with the reason in the alarm list and a warning) when the user may not run the machine, a run is
+    /// going or the machine is not offered.
+    bool resumeRun(const InterruptedRun& run);
 
 signals:
     /// The out-of-tolerance alert sounded: a rework or scrap part with the setting kSoundOnOutOfTolerance on
@@ -67,6 +72,8 @@ private:
     QWidget* buildSide();
     void onStart();
     void refuseStart(const QString& reason);
+    /// The logged-in user may run the machine (Permission::RunMachine); refuses the start otherwise.
+    bool mayRunMachine();
     void onPauseContinue();
     void onStop();
     void onPartFinished();
