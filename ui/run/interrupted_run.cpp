@@ -18,7 +18,7 @@ namespace tt::ui {
 namespace {
 
 /// The built-in simulator's lathe (devices/builtin), the machine an interrupted run continues on.
-const QString kSimulatedLathe = QStringLiteral("simulated-lathe");
+const QString kBuiltInLatheKey = QStringLiteral("simulated-lathe");
 
 }  // namespace
 
@@ -51,13 +51,13 @@ RunSettings settingsOfStoredRun(const core::RunSummary& run) {
     const QJsonObject o = QJsonDocument::fromJson(QByteArray::fromStdString(run.description.settingsJson)).object();
     const QString source = o.value(QStringLiteral("source")).toString();
     RunSettings s;
-    s.machineKey = kSimulatedLathe;
+    s.machineKey = kBuiltInLatheKey;
     s.preset = o.value(QStringLiteral("preset")).toString();
     s.controller = o.value(QStringLiteral("controller")).toString();
     s.delay = o.value(QStringLiteral("delay")).toInt();
     if (const QJsonValue w = o.value(QStringLiteral("ewma_weight")); w.isDouble()) s.ewmaWeight = w.toDouble();
     if (source == QLatin1String("gui")) {
-        if (o.value(QStringLiteral("machine")).toString() != kSimulatedLathe)
+        if (o.value(QStringLiteral("machine")).toString() != kBuiltInLatheKey)
             throw std::invalid_argument("run " + std::to_string(run.runId) +
                                         " was not made on the simulated lathe; it continues only there");
         s.seed = o.value(QStringLiteral("seed")).toString().toULongLong();
