@@ -5,17 +5,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/common/text_format.h"
+
 namespace tt::core {
 
 namespace {
-
-std::string fmt(double v, int precision) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(precision);
-    s << v;
-    return s.str();
-}
 
 void requirePositive(double v, const char* what) {
     if (!std::isfinite(v) || v <= 0.0) throw std::invalid_argument(std::string(what) + " must be above 0");
@@ -129,7 +123,7 @@ DitherUpdate DitherForceEstimator::update(const DriveSample& sample, double offs
             m_stroke.tooLong = true;
             refuse(DitherRefusal::NotCylindrical,
                    "the slide moved " + std::string(direction > 0 ? "outwards" : "inwards") + " for " +
-                       fmt(duration, 1) + " s without reversing: a feed motion (taper or contour), not dither");
+                       formatFixed(duration, 1) + " s without reversing: a feed motion (taper or contour), not dither");
             m_forward.clear();
             m_reverse.clear();
             m_stroke.samples.erase(m_stroke.samples.begin());  // keep the buffer bounded
@@ -152,14 +146,14 @@ DitherUpdate DitherForceEstimator::update(const DriveSample& sample, double offs
         const double quiet = sample.timeS - (m_lastMotionS ? *m_lastMotionS : *m_firstSampleS);
         if (quiet > m_config.maxQuietS)
             refuse(DitherRefusal::SlideNotMoving,
-                   "the slide has not moved for " + fmt(quiet, 1) + " s (speed below " +
-                       fmt(m_config.movingVelocityMmPerS, 3) +
+                   "the slide has not moved for " + formatFixed(quiet, 1) + " s (speed below " +
+                       formatFixed(m_config.movingVelocityMmPerS, 3) +
                        " mm/s): the dither does not move it; raise the dither amplitude or check the drive");
         else if (m_lastProblem != DitherRefusal::None)
             refuse(m_lastProblem, m_lastProblemReason);
         else
             refuse(DitherRefusal::SlideNotMoving,
-                   "no complete dither stroke for " + fmt(sample.timeS - since, 1) + " s");
+                   "no complete dither stroke for " + formatFixed(sample.timeS - since, 1) + " s");
     }
     return m_state;
 }
@@ -171,8 +165,8 @@ void DitherForceEstimator::finishStroke() {
     const double length = std::abs(s.back().positionMm - s.front().positionMm);
     if (length < m_config.minStrokeMm) {
         m_lastProblem = DitherRefusal::SlideNotMoving;
-        m_lastProblemReason = "the slide moved only " + fmt(length * 1000.0, 1) + " µm in a stroke (at least " +
-                              fmt(m_config.minStrokeMm * 1000.0, 1) + " µm needed): raise the dither amplitude";
+        m_lastProblemReason = "the slide moved only " + formatFixed(length * 1000.0, 1) + " µm in a stroke (at least " +
+                              formatFixed(m_config.minStrokeMm * 1000.0, 1) + " µm needed): raise the dither amplitude";
         return;
     }
     std::vector<double> speeds = m_stroke.ditherSpeeds;
@@ -232,7 +226,8 @@ void DitherForceEstimator::combine(const StrokeMean& newer, int direction) {
         m_forward.clear();
         m_reverse.clear();
         refuse(DitherRefusal::NotCylindrical,
-               "forward and reverse speeds differ (" + fmt(fwd.speedMmPerS, 4) + " vs " + fmt(rev.speedMmPerS, 4) +
+               "forward and reverse speeds differ (" + formatFixed(fwd.speedMmPerS, 4) + " vs " +
+                   formatFixed(rev.speedMmPerS, 4) +
                    " mm/s), so viscous friction differs by direction: a taper or contour, not a cylinder");
         return;
     }

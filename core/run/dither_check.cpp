@@ -5,17 +5,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/common/text_format.h"
+
 namespace tt::core {
 
 namespace {
-
-std::string fmt(double v, int precision) {
-    std::ostringstream s;
-    s.setf(std::ios::fixed);
-    s.precision(precision);
-    s << v;
-    return s.str();
-}
 
 /// V = c A / T for the trapezoid with constant-velocity fraction f: c = 8 / (1 + f) (DitherProfile).
 double speedFactor(const DitherConfig& d) {
@@ -58,14 +52,15 @@ DitherVerdict checkDither(const BoringScenario& scenario) {
         const double forStroke = (scenario.estimator.minStrokeMm + windUpMm) / 2.0;
         if (denominator > 0.0) v.validAmplitudeMm = ceilUm(std::max(windUpMm / denominator, forStroke));
         if (!tooShort) v.validPeriodS = ceilPeriod(cyclesNeeded * dt * c * d.amplitudeMm / v.slideTravelMm);
-        v.reason = "dither " + fmt(d.amplitudeMm, 3) + " mm / " + fmt(d.periodS, 2) +
-                   " s cannot be resolved: the slide moves " + fmt(std::max(0.0, v.slideTravelMm) * 1000.0, 1) +
-                   " µm per stroke (2 A less " + fmt(windUpMm * 1000.0, 1) +
-                   " µm of screw wind-up at static friction), " + fmt(v.cyclesAtSpeed, 1) + " PLC cycles at " +
-                   fmt(v.plateauSpeedMmPerS, 3) + " mm/s; at least " + fmt(cyclesNeeded, 0) +
-                   " cycles are needed: use an amplitude of at least " +
-                   (v.validAmplitudeMm ? fmt(*v.validAmplitudeMm, 3) + " mm" : std::string("(none at this period)")) +
-                   (v.validPeriodS ? " or a period of at least " + fmt(*v.validPeriodS, 2) + " s" : std::string());
+        v.reason =
+            "dither " + formatFixed(d.amplitudeMm, 3) + " mm / " + formatFixed(d.periodS, 2) +
+            " s cannot be resolved: the slide moves " + formatFixed(std::max(0.0, v.slideTravelMm) * 1000.0, 1) +
+            " µm per stroke (2 A less " + formatFixed(windUpMm * 1000.0, 1) +
+            " µm of screw wind-up at static friction), " + formatFixed(v.cyclesAtSpeed, 1) + " PLC cycles at " +
+            formatFixed(v.plateauSpeedMmPerS, 3) + " mm/s; at least " + formatFixed(cyclesNeeded, 0) +
+            " cycles are needed: use an amplitude of at least " +
+            (v.validAmplitudeMm ? formatFixed(*v.validAmplitudeMm, 3) + " mm" : std::string("(none at this period)")) +
+            (v.validPeriodS ? " or a period of at least " + formatFixed(*v.validPeriodS, 2) + " s" : std::string());
         return v;
     }
     // (2) V >= k r  <=>  A >= k r T / c  or  T <= c A / (k r).
@@ -74,11 +69,12 @@ DitherVerdict checkDither(const BoringScenario& scenario) {
         v.problem = DitherProblem::SlowerThanOffset;
         v.validAmplitudeMm = ceilUm(kDitherOverOffsetRate * rate * d.periodS / c);
         v.validPeriodS = floorPeriod(c * d.amplitudeMm / (kDitherOverOffsetRate * rate));
-        v.reason = "dither " + fmt(d.amplitudeMm, 3) + " mm / " + fmt(d.periodS, 2) + " s moves the slide at " +
-                   fmt(v.plateauSpeedMmPerS, 3) + " mm/s, slower than twice the offset's rate limit of " +
-                   fmt(rate, 3) +
+        v.reason = "dither " + formatFixed(d.amplitudeMm, 3) + " mm / " + formatFixed(d.periodS, 2) +
+                   " s moves the slide at " + formatFixed(v.plateauSpeedMmPerS, 3) +
+                   " mm/s, slower than twice the offset's rate limit of " + formatFixed(rate, 3) +
                    " mm/s: the slide would not reverse while the offset moves: use an amplitude of at least " +
-                   fmt(*v.validAmplitudeMm, 3) + " mm or a period of at most " + fmt(*v.validPeriodS, 2) + " s";
+                   formatFixed(*v.validAmplitudeMm, 3) + " mm or a period of at most " +
+                   formatFixed(*v.validPeriodS, 2) + " s";
         return v;
     }
     // (3) The dither is cut into the bore: 2 A on the diameter.
@@ -86,9 +82,10 @@ DitherVerdict checkDither(const BoringScenario& scenario) {
     if (tolerance > 0.0 && 2.0 * d.amplitudeMm > tolerance + 1e-12) {
         v.problem = DitherProblem::RippleBeyondTolerance;
         v.validAmplitudeMm = floorUm(tolerance / 2.0);
-        v.reason = "dither " + fmt(d.amplitudeMm, 3) + " mm cuts a ripple of " + fmt(2.0 * d.amplitudeMm, 3) +
-                   " mm into the diameter, more than the bore tolerance of " + fmt(tolerance, 3) +
-                   " mm: use an amplitude of at most " + fmt(*v.validAmplitudeMm, 3) + " mm";
+        v.reason = "dither " + formatFixed(d.amplitudeMm, 3) + " mm cuts a ripple of " +
+                   formatFixed(2.0 * d.amplitudeMm, 3) + " mm into the diameter, more than the bore tolerance of " +
+                   formatFixed(tolerance, 3) + " mm: use an amplitude of at most " +
+                   formatFixed(*v.validAmplitudeMm, 3) + " mm";
     }
     return v;
 }
