@@ -70,6 +70,7 @@ ControllerPage::ControllerPage(AppContext& context, QWidget* parent)
     m_applied = config::loadRunToRunSetup(kPreset);
     auto* layout = new QHBoxLayout(this);
     auto* left = new QVBoxLayout;
+    left->setSpacing(3);
     left->addWidget(buildSettings());
     left->addWidget(buildPoints(), 1);
     m_status = new QLabel;
@@ -186,6 +187,8 @@ QWidget* ControllerPage::buildPoints() {
     auto* box = new QGroupBox;
     auto* grid = new QGridLayout(box);
     grid->setHorizontalSpacing(6);  // ten columns within the 1280 px terminal (tests/ui/terminal)
+    grid->setVerticalSpacing(2);    // and six rows under the settings within 800 px (Russian status wraps)
+    grid->setContentsMargins(6, 2, 6, 2);
     const int columns = 8;
     for (int c = 0; c < columns; ++c) {
         auto* h = new QLabel;
