@@ -84,20 +84,24 @@ bool samePlantSpec(const RunToRunPlantSpec& a, const RunToRunPlantSpec& b) {
 TuningPreview computeTuningPreview(const RunToRunSetup& setup, const TuningPreview* samePlant) {
     const RunToRunPlant plant = buildRunToRunPlant(setup.plant);
     validateWeights(plant, setup.weights);
-    const LqgDesign design = designLqg(plant, setup.weights);
+    // Integral action lives in the LQG's design model only: the design is made on the plant with the
+    // integrating state and its loop analysed on the true plant (as planShaftRun runs it).
+    const RunToRunPlant designPlant =
+        setup.integral.enabled ? buildRunToRunPlant(withIntegralAction(setup.plant, setup.integral)) : plant;
+    const LqgDesign design = designLqg(designPlant, setup.weights);
     TuningPreview p;
-    const LinearControllerModel lqg = lqgControllerModel(plant, design);
+    const LinearControllerModel lqg = lqgControllerModel(designPlant, design);
     const SteadyStateVariances lqgVar = analyseSteadyState(plant, lqg);
     p.varianceAvailable = lqgVar.available;
     p.openMm2 = lqgVar.openMm2;
     p.lqgMm2 = lqgVar.closedMm2;
     p.lqgKEff = lqgVar.kEff;
-    p.lqgMargins = lqgMargins(plant, design);
+    p.lqgMargins = lqgMargins(designPlant, design);
     p.stepLqg = stepResponse(plant, lqg.Ac, lqg.Bc, lqg.Cc, lqg.Dc, 0, kPreviewSteps);
     p.stepOpen.assign(static_cast<std::size_t>(kPreviewSteps), 1.0);
     for (int k = 1; k <= kPreviewFrequencies; ++k)
         p.frequencyRadPerPart.push_back(std::numbers::pi * k / kPreviewFrequencies);
-    p.sensitivityLqg = lqgSensitivityMagnitude(plant, design, 0, p.frequencyRadPerPart);
+    p.sensitivityLqg = lqgSensitivityMagnitude(designPlant, design, 0, p.frequencyRadPerPart);
     if (samePlant && samePlant->sensitivityEwma.size() == p.frequencyRadPerPart.size()) {
         p.ewmaWeight = samePlant->ewmaWeight;
         p.ewmaKEff = samePlant->ewmaKEff;

@@ -33,9 +33,10 @@ inline constexpr int kPreviewSteps = 40;
 /// Frequencies of the sensitivity plot (uniform on (0, pi]).
 inline constexpr int kPreviewFrequencies = 96;
 
-/// Designs the LQG controller of `setup` and computes the preview. The EWMA and open-loop figures depend on
-/// the plant only: `samePlant`, a preview of a setup with the same plant (samePlantSpec), lends them so a
-/// weight change costs the LQG part alone. Throws std::invalid_argument for an invalid setup (the plant
+/// Designs the LQG controller of `setup` (with integral action when setup.integral is on: designed on
+/// withIntegralAction's plant, its variances analysed on the true plant) and computes the preview. The EWMA and
+/// open-loop figures depend on the plant only: `samePlant`, a preview of a setup with the same plant (samePlantSpec),
+/// lends them so a weight change costs the LQG part alone. Throws std::invalid_argument for an invalid setup (the plant
 /// builder's and the weights' messages).
 TuningPreview computeTuningPreview(const RunToRunSetup& setup, const TuningPreview* samePlant = nullptr);
 

@@ -2719,6 +2719,53 @@ L/d %4</source>
         <source>Applied: no run is going; the next Start on the Run page uses this tuning.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Integral action</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adds an integrating disturbance state to the LQG design: a step (tool change, new blanks) is corrected completely, at some cost in k_eff</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>weight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identify from history</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fits the disturbance of a stored run at every point as (z + b)/(z − a) and types point 1&apos;s fit into the filter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Newest run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, started %1</source>
+        <translation>
+            <numerusform>%n part, started %1</numerusform>
+            <numerusform>%n parts, started %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Identification failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identifying the disturbance of the stored run…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>

@@ -2725,6 +2725,54 @@ L/d %4</translation>
         <source>Applied: no run is going; the next Start on the Run page uses this tuning.</source>
         <translation>Применено: серия не идёт; следующий пуск на странице «Работа» использует эту настройку.</translation>
     </message>
+    <message>
+        <source>Integral action</source>
+        <translation>Интегральное действие</translation>
+    </message>
+    <message>
+        <source>Adds an integrating disturbance state to the LQG design: a step (tool change, new blanks) is corrected completely, at some cost in k_eff</source>
+        <translation>Добавляет в расчёт LQG интегрирующее состояние возмущения: скачок (смена инструмента, новые заготовки) устраняется полностью ценой некоторой потери k_eff</translation>
+    </message>
+    <message>
+        <source>weight</source>
+        <translation>вес</translation>
+    </message>
+    <message>
+        <source>Identify from history</source>
+        <translation>Оценить по истории</translation>
+    </message>
+    <message>
+        <source>Fits the disturbance of a stored run at every point as (z + b)/(z − a) and types point 1&apos;s fit into the filter</source>
+        <translation>Оценивает возмущение сохранённого прогона в каждой точке как (z + b)/(z − a) и вписывает оценку точки 1 в фильтр</translation>
+    </message>
+    <message>
+        <source>Newest run</source>
+        <translation>Последний прогон</translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation>Прогон %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, started %1</source>
+        <translation>
+            <numerusform>%n деталь, начат %1</numerusform>
+            <numerusform>%n детали, начат %1</numerusform>
+            <numerusform>%n деталей, начат %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Identification failed: %1</source>
+        <translation>Оценка не удалась: %1</translation>
+    </message>
+    <message>
+        <source>Identifying the disturbance of the stored run…</source>
+        <translation>Оценка возмущения сохранённого прогона…</translation>
+    </message>
+    <message>
+        <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
+        <translation>Точка %1 (прогон %2, %3 дет.): a %4 ± %5, b %6 ± %7, σ² %8 мм², Льюнг–Бокс p %9</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>

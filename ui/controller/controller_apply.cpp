@@ -29,6 +29,9 @@ QList<QPair<QString, QString>> tuningValues(const core::RunToRunSetup& setup, Ei
     values.append({QStringLiteral("max correction mm"), number(setup.limits.maxAbsMm)});
     values.append({QStringLiteral("max step mm"), number(setup.limits.maxStepMm)});
     values.append({QStringLiteral("dead band mm"), number(setup.ewma.deadBandMm)});
+    values.append(
+        {QStringLiteral("integral action"), setup.integral.enabled ? QStringLiteral("on") : QStringLiteral("off")});
+    values.append({QStringLiteral("integral weight"), number(setup.integral.weight)});
     const std::string filter =
         setup.plant.points.empty() ? std::string() : setup.plant.points[0].disturbance.describe();
     values.append({QStringLiteral("shaping filter"), QString::fromStdString(filter)});

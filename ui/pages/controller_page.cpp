@@ -1,5 +1,7 @@
 #include "ui/pages/controller_page.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -9,10 +11,12 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <cmath>
 
 #include "config/plant_config.h"
 #include "core/model/disturbance_model.h"
+#include "core/storage/data_stores.h"
 #include "ui/auth/audit_trail.h"
 #include "ui/controller/controller_apply.h"
 #include "ui/controller/controller_tuning.h"
@@ -66,6 +70,7 @@ ControllerPage::ControllerPage(AppContext& context, QWidget* parent)
     m_applied = config::loadRunToRunSetup(kPreset);
     auto* layout = new QHBoxLayout(this);
     auto* left = new QVBoxLayout;
+    left->setSpacing(3);
     left->addWidget(buildSettings());
     left->addWidget(buildPoints(), 1);
     m_status = new QLabel;
@@ -97,6 +102,8 @@ ControllerPage::~ControllerPage() = default;
 QWidget* ControllerPage::buildSettings() {
     auto* box = new QGroupBox;
     auto* grid = new QGridLayout(box);
+    grid->setVerticalSpacing(2);  // five rows within the 800 px terminal with the points below
+    grid->setContentsMargins(9, 4, 9, 4);
     m_settingsTitle = new QLabel;
     m_settingsTitle->setStyleSheet(QStringLiteral("font-weight: bold;"));
     m_delayLabel = new QLabel;
@@ -131,8 +138,12 @@ QWidget* ControllerPage::buildSettings() {
         filter->addWidget(w);
     filter->addStretch(1);
     grid->addLayout(filter, 2, 1, 1, 3);
-    // Row 3 is kept for integral action (on/off, its weight) and "identify from history": another part of
-    // the issue adds them.
+    grid->addWidget(buildExtraRow(), 3, 0, 1, 4);
+    auto* identifyRow = new QHBoxLayout;
+    identifyRow->addWidget(m_identifyRun);
+    identifyRow->addWidget(m_identify);
+    identifyRow->addWidget(m_identified, 1);
+    grid->addLayout(identifyRow, 4, 0, 1, 4);
     for (QSpinBox* s : {m_delay})
         connect(s, &QSpinBox::valueChanged, this, &ControllerPage::requestPreview);
     for (QDoubleSpinBox* f : {m_maxAbs, m_maxStep, m_deadBand, m_pole, m_zero, m_variance})
@@ -140,10 +151,44 @@ QWidget* ControllerPage::buildSettings() {
     return box;
 }
 
+QWidget* ControllerPage::buildExtraRow() {
+    auto* row = new QWidget;
+    auto* h = new QHBoxLayout(row);
+    h->setContentsMargins(0, 0, 0, 0);
+    m_integral = new QCheckBox;
+    m_integral->setObjectName(QStringLiteral("integralAction"));
+    m_integralWeightLabel = new QLabel;
+    // The core's range and default (core/control/integral_action.h).
+    m_integralWeight = numberField(core::kMinIntegralWeight, core::kMaxIntegralWeight, 6, 0.05, QString());
+    m_integralWeight->setValue(core::IntegralAction{}.weight);
+    m_identifyRun = new QComboBox;
+    m_identifyRun->setMinimumContentsLength(12);
+    m_identifyRun->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_identify = new QPushButton;
+    m_identify->setObjectName(QStringLiteral("identifyFromHistory"));
+    m_identified = new QLabel;
+    m_identified->setWordWrap(true);
+    m_identified->setObjectName(QStringLiteral("identifiedFit"));
+    for (QWidget* w : std::initializer_list<QWidget*>{m_integral, m_integralWeightLabel, m_integralWeight})
+        h->addWidget(w);
+    h->addStretch(1);
+    connect(m_integral, &QCheckBox::toggled, this, [this](bool on) {
+        m_integralWeight->setEnabled(on);
+        requestPreview();
+    });
+    connect(m_integralWeight, &QDoubleSpinBox::valueChanged, this, &ControllerPage::requestPreview);
+    connect(m_identify, &QPushButton::clicked, this, &ControllerPage::identify);
+    connect(&m_identification, &QFutureWatcher<HistoryIdentification>::finished, this,
+            &ControllerPage::showIdentification);
+    return row;
+}
+
 QWidget* ControllerPage::buildPoints() {
     auto* box = new QGroupBox;
     auto* grid = new QGridLayout(box);
     grid->setHorizontalSpacing(6);  // ten columns within the 1280 px terminal (tests/ui/terminal)
+    grid->setVerticalSpacing(2);    // and six rows under the settings within 800 px (Russian status wraps)
+    grid->setContentsMargins(6, 2, 6, 2);
     const int columns = 8;
     for (int c = 0; c < columns; ++c) {
         auto* h = new QLabel;
@@ -224,6 +269,16 @@ void ControllerPage::retranslate() {
            "the loop stays stable with"));
     for (std::size_t i = 0; i < m_pointNames.size(); ++i)
         m_pointNames[i]->setText(tr("%1: %2 mm").arg(i + 1).arg(m_applied.plant.points[i].xMm, 0, 'f', 1));
+    m_integral->setText(tr("Integral action"));
+    m_integral->setToolTip(
+        tr("Adds an integrating disturbance state to the LQG design: a step (tool change, "
+           "new blanks) is corrected completely, at some cost in k_eff"));
+    m_integralWeightLabel->setText(tr("weight"));
+    m_identify->setText(tr("Identify from history"));
+    m_identify->setToolTip(
+        tr("Fits the disturbance of a stored run at every point as (z + b)/(z − a) and "
+           "types point 1's fit into the filter"));
+    refreshRuns();
     m_apply->setText(tr("Apply…"));
     m_revert->setText(tr("Revert"));
     m_stepChart->setTitle(tr("Step at point 1"));
@@ -244,6 +299,8 @@ core::RunToRunSetup ControllerPage::editedSetup() const {
     s.limits.maxAbsMm = m_maxAbs->value();
     s.limits.maxStepMm = m_maxStep->value();
     s.ewma.deadBandMm = m_deadBand->value();
+    s.integral.enabled = m_integral->isChecked();
+    s.integral.weight = m_integralWeight->value();
     const core::DisturbanceModel filter = typedFilter(m_pole->value(), m_zero->value(), m_variance->value());
     for (core::ControlPointSpec& p : s.plant.points)
         p.disturbance = filter;
@@ -261,6 +318,9 @@ void ControllerPage::loadSetup(const core::RunToRunSetup& setup) {
     m_maxAbs->setValue(std::isfinite(setup.limits.maxAbsMm) ? setup.limits.maxAbsMm : m_maxAbs->maximum());
     m_maxStep->setValue(std::isfinite(setup.limits.maxStepMm) ? setup.limits.maxStepMm : m_maxStep->maximum());
     m_deadBand->setValue(setup.ewma.deadBandMm);
+    m_integral->setChecked(setup.integral.enabled);
+    m_integralWeight->setValue(setup.integral.weight);
+    m_integralWeight->setEnabled(setup.integral.enabled);
     // The typed filter starts from the first point's model when it is one first-order shaping filter
     // (paper-2012: (z + 0.246)/(z - 0.9215), 0.0013 mm^2).
     const core::DisturbanceModel& d = setup.plant.points.front().disturbance;
@@ -384,6 +444,103 @@ QString ControllerPage::statusText() const {
 void ControllerPage::revert() {
     loadSetup(m_applied);
     requestPreview();
+}
+
+void ControllerPage::showEvent(QShowEvent* event) {
+    Page::showEvent(event);
+    refreshRuns();
+}
+
+void ControllerPage::refreshRuns() {
+    const QVariant chosen = m_identifyRun->currentData();
+    m_identifyRun->clear();
+    m_identifyRun->addItem(tr("Newest run"), QVariant());
+    try {
+        if (core::HistoryStore* history = context().data().history())
+            for (const core::RunSummary& run : history->runs()) {
+                m_identifyRun->addItem(tr("Run %1").arg(run.runId), QVariant::fromValue<qint64>(run.runId));
+                m_identifyRun->setItemData(m_identifyRun->count() - 1,
+                                           tr("%n parts, started %1", nullptr, static_cast<int>(run.partCount))
+                                               .arg(QString::fromStdString(run.startedAt)),
+                                           Qt::ToolTipRole);
+            }
+    } catch (const std::exception&) {
+        // No database yet: only "newest run" (identify then says why nothing is there).
+    }
+    const int index = chosen.isValid() ? m_identifyRun->findData(chosen) : 0;
+    m_identifyRun->setCurrentIndex(index < 0 ? 0 : index);
+}
+
+void ControllerPage::identify() {
+    if (m_identifying) return;
+    std::optional<std::int64_t> runId;
+    if (const QVariant chosen = m_identifyRun->currentData(); chosen.isValid()) runId = chosen.toLongLong();
+    storage::DatabaseConfig config;
+    try {
+        config = storage::DataStores(context().databasePath).config();
+    } catch (const std::exception& e) {
+        m_identified->setText(tr("Identification failed: %1").arg(QString::fromStdString(e.what())));
+        return;
+    }
+    std::vector<double> gains;
+    for (const core::ControlPointSpec& p : m_applied.plant.points)
+        gains.push_back(p.gain);
+    m_identify->setEnabled(false);
+    m_identifying = true;
+    m_identified->setStyleSheet(QStringLiteral("color: #56616d;"));
+    m_identified->setText(tr("Identifying the disturbance of the stored run…"));
+    m_identification.setFuture(QtConcurrent::run(identifyFromHistory, config, runId, gains));
+}
+
+void ControllerPage::showIdentification() {
+    m_identify->setEnabled(true);
+    m_identifying = false;
+    const HistoryIdentification result = m_identification.result();
+    if (!result.problem.isEmpty() || result.points.empty()) {
+        m_identified->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
+        m_identified->setText(tr("Identification failed: %1").arg(result.problem));
+        return;
+    }
+    QStringList lines;
+    for (const core::DisturbanceIdentification& id : result.points) {
+        const core::ArmaFit& f = id.fit;
+        lines << tr("Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9")
+                     .arg(id.series.point + 1)
+                     .arg(id.series.runId)
+                     .arg(f.values)
+                     .arg(fixed(f.ar.front(), 3), fixed(f.arStdErr.front(), 3), fixed(f.ma.front(), 3),
+                          fixed(f.maStdErr.front(), 3))
+                     .arg(QString::number(f.disturbanceModel().stationaryVarianceMm2(), 'g', 3))
+                     .arg(fixed(f.ljungBoxP, 2));
+    }
+    m_identified->setStyleSheet(QStringLiteral("color: #1f2a36;"));
+    m_identified->setText(lines.front());
+    m_identified->setToolTip(lines.join(QLatin1Char('\n')));
+    // The page's filter applies to all points: it takes point 1's fit (a, b and the stationary variance).
+    const core::ArmaFit& first = result.points.front().fit;
+    m_pole->setValue(first.ar.front());
+    m_zero->setValue(first.ma.front());
+    m_variance->setValue(first.disturbanceModel().stationaryVarianceMm2());
+}
+
+QString ControllerPage::identifiedText() const {
+    return m_identified->text();
+}
+
+bool ControllerPage::identifying() const {
+    return m_identifying;
+}
+
+double ControllerPage::typedPole() const {
+    return m_pole->value();
+}
+
+double ControllerPage::typedZero() const {
+    return m_zero->value();
+}
+
+double ControllerPage::typedVarianceMm2() const {
+    return m_variance->value();
 }
 
 }  // namespace tt::ui

@@ -1,12 +1,16 @@
 #pragma once
 
+#include <QFutureWatcher>
 #include <QString>
 #include <memory>
 #include <vector>
 
 #include "core/control/run_to_run_setup.h"
+#include "ui/controller/history_identification.h"
 #include "ui/page.h"
 
+class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -23,6 +27,8 @@ struct TuningResult;
 /// point (slider and field), correction limits, dead band and the shaping filter W(z) = (z + b)/(z - a);
 /// while anything moves, the LQG design is re-synthesised off the GUI thread (coalesced) and the page
 /// shows the predicted k_eff per point beside the best EWMA's, the margins, the step response and |S|.
+/// Integral action (on/off, its weight) is part of the previewed and applied setup; "Identify from history"
+/// fits the disturbance of a stored run per point off the GUI thread and types point 1's fit into the filter.
 /// Apply asks first, records who changed what and keeps the applied setup.
 class ControllerPage : public Page {
     Q_OBJECT
@@ -49,6 +55,22 @@ public:
     WeightEditor& r2(int point) { return *m_r2[static_cast<std::size_t>(point)]; }
     /// The k_eff label of `point` (LQG) as shown.
     QString shownLqgKEff(int point) const;
+    /// The integral action check box and its weight field (tests drive them).
+    QCheckBox* integralBox() const { return m_integral; }
+    QDoubleSpinBox* integralWeightField() const { return m_integralWeight; }
+    /// The "Identify from history" button, the run chooser (item 0: the newest run) and what it found.
+    QPushButton* identifyButton() const { return m_identify; }
+    QComboBox* identifyRunBox() const { return m_identifyRun; }
+    QString identifiedText() const;
+    /// An identification is running in the background.
+    bool identifying() const;
+    /// The shaping filter fields: a, b, sigma^2 (mm^2).
+    double typedPole() const;
+    double typedZero() const;
+    double typedVarianceMm2() const;
+
+protected:
+    void showEvent(QShowEvent* event) override;
 
 private:
     QWidget* buildSettings();
@@ -63,6 +85,11 @@ private:
     /// Hands the applied setup to the Run page's loop (AppContext::tuning) and says where it went.
     void showWhereApplied();
     void revert();
+    QWidget* buildExtraRow();
+    /// Lists the stored runs in the run chooser (keeps the choice when it is still there).
+    void refreshRuns();
+    void identify();
+    void showIdentification();
 
     core::RunToRunSetup m_applied;
     std::unique_ptr<TuningWorker> m_worker;
@@ -86,6 +113,14 @@ private:
     QLabel* m_poleLabel = nullptr;
     QLabel* m_zeroLabel = nullptr;
     QLabel* m_varianceLabel = nullptr;
+    QCheckBox* m_integral = nullptr;
+    QLabel* m_integralWeightLabel = nullptr;
+    QDoubleSpinBox* m_integralWeight = nullptr;
+    QComboBox* m_identifyRun = nullptr;
+    QPushButton* m_identify = nullptr;
+    QLabel* m_identified = nullptr;
+    QFutureWatcher<HistoryIdentification> m_identification;
+    bool m_identifying = false;  ///< from the click until its result is shown
 
     std::vector<QLabel*> m_headers;
     std::vector<QLabel*> m_pointNames;

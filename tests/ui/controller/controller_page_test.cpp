@@ -2,17 +2,24 @@
 // the GUI thread and the page shows the engine's predictions for the new setup (compared with
 // core::computeTuningPreview on the same setup); Apply asks first, records who changed what and keeps the
 // applied setup; a No leaves everything as it was. Screenshots in English and Russian in the 1280 x 800
-// main window: screenshots/controller_page_en.png, controller_page_ru.png.
+// main window: screenshots/controller_page_en.png, controller_page_ru.png. Integral action changes the
+// predicted LQG k_eff to the core's value with the integrating state; "Identify from history" fits a run of
+// the real `trueturn simulate --db` and types its filter (controller_identify_en.png / _ru.png).
 #include <gtest/gtest.h>
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QProcess>
 #include <QPushButton>
 #include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <chrono>
 
+#include "core/control/run_to_run_plant.h"
 #include "core/run/tuning_preview.h"
+#include "core/sim/statistics/run_to_run_analysis.h"
 #include "devices/api/device_manager.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -124,6 +131,107 @@ TEST_F(ControllerPageTest, RussianScreenshot) {
     EXPECT_LE(window.width(), 1280);
     EXPECT_LE(window.height(), 800);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_page_ru")));
+}
+
+TEST_F(ControllerPageTest, IntegralActionChangesThePredictionToTheCoresValueAndIsApplied) {
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    window.showPage(PageId::Controller);
+    auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+    ASSERT_NE(page, nullptr);
+    state.setOperatorName(QStringLiteral("Anna Test"));
+    ASSERT_TRUE(waitForNewest(*page));
+    const QString without = page->shownLqgKEff(0);
+    EXPECT_FALSE(page->integralWeightField()->isEnabled()) << "the weight waits for the check box";
+    // The field's default and range are the core's (core/control/integral_action.h).
+    EXPECT_DOUBLE_EQ(page->integralWeightField()->value(), core::IntegralAction{}.weight);
+    EXPECT_DOUBLE_EQ(page->integralWeightField()->maximum(), core::kMaxIntegralWeight);
+
+    QTest::mouseClick(page->integralBox(), Qt::LeftButton);
+    ASSERT_TRUE(page->integralBox()->isChecked());
+    ASSERT_TRUE(waitForNewest(*page));
+    const core::RunToRunSetup setup = page->editedSetup();
+    ASSERT_TRUE(setup.integral.enabled);
+    // Expected value straight from the core, as the robust-control notes define it: designed on the plant
+    // with the integrating state, analysed on the true plant.
+    const core::RunToRunPlant truePlant = core::buildRunToRunPlant(setup.plant);
+    const core::RunToRunPlant designPlant =
+        core::buildRunToRunPlant(core::withIntegralAction(setup.plant, setup.integral));
+    const core::SteadyStateVariances expected = core::analyseSteadyState(
+        truePlant, core::lqgControllerModel(designPlant, core::designLqg(designPlant, setup.weights)));
+    ASSERT_TRUE(expected.available);
+    for (int i = 0; i < 5; ++i)
+        EXPECT_EQ(page->shownLqgKEff(i), QString::number(expected.kEff(i), 'f', 2)) << i;
+    // Integral action costs k_eff on the random disturbance (issue 13 item 2): the shown value changed.
+    EXPECT_NE(page->shownLqgKEff(0), without);
+
+    prompt.answers.push_back(Prompt::Answer::Yes);
+    QTest::mouseClick(window.findChild<QPushButton*>(QStringLiteral("applyTuning")), Qt::LeftButton);
+    EXPECT_TRUE(page->appliedSetup().integral.enabled);
+    EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("integral action off -> on")))
+        << qPrintable(page->lastRecord());
+}
+
+/// Waits until the page's identification finished.
+bool waitForIdentification(const ControllerPage& page) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < deadline) {
+        QTest::qWait(20);
+        if (!page.identifying()) return true;
+    }
+    return false;
+}
+
+TEST_F(ControllerPageTest, IdentifyFromHistoryTypesTheFitOfAStoredRun) {
+    for (const QString& lang : {QStringLiteral("en"), QStringLiteral("ru")}) {
+        ASSERT_TRUE(language.apply(lang));
+        QTemporaryDir runDir;
+        context.databasePath = runDir.filePath(QStringLiteral("history.sqlite"));
+        MainWindow window(context);
+        window.resize(1280, 800);
+        window.show();
+        window.showPage(PageId::Controller);
+        auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+        ASSERT_NE(page, nullptr);
+        // Nothing stored yet: the reason in words, the filter untouched.
+        QTest::mouseClick(page->identifyButton(), Qt::LeftButton);
+        ASSERT_TRUE(waitForIdentification(*page));
+        EXPECT_FALSE(page->identifiedText().isEmpty());
+        if (lang == QStringLiteral("en")) {
+            EXPECT_TRUE(page->identifiedText().startsWith(QStringLiteral("Identification failed: ")))
+                << qPrintable(page->identifiedText());
+        }
+        EXPECT_DOUBLE_EQ(page->typedPole(), 0.9215);
+
+        // 600 parts of paper-2012 at z = 1 by the real command line.
+        QProcess simulate;
+        simulate.start(
+            QStringLiteral(TRUETURN_EXE),
+            {QStringLiteral("simulate"), QStringLiteral("--db"), context.databasePath, QStringLiteral("--parts"),
+             QStringLiteral("600"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--delay"),
+             QStringLiteral("1"), QStringLiteral("--seed"), QStringLiteral("1")});
+        ASSERT_TRUE(simulate.waitForFinished(120000));
+        ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
+        window.showPage(PageId::Run);
+        window.showPage(PageId::Controller);
+        EXPECT_EQ(page->identifyRunBox()->count(), 2) << "newest + the stored run";
+        page->identifyRunBox()->setCurrentIndex(1);
+        QTest::mouseClick(page->identifyButton(), Qt::LeftButton);
+        ASSERT_TRUE(waitForIdentification(*page));
+        // The preset's shaping filter is (z + 0.246)/(z - 0.9215) (resources/presets/paper-2012.json); 600
+        // parts give a standard error of a of about 0.02, so 0.05 is a safe bound.
+        EXPECT_NEAR(page->typedPole(), 0.9215, 0.05) << qPrintable(page->identifiedText());
+        EXPECT_TRUE(page->identifiedText().contains(QStringLiteral("±")))
+            << qPrintable(page->identifiedText());  // with standard errors
+        ASSERT_TRUE(waitForNewest(*page));
+        EXPECT_NEAR(page->shownResult()->setup.plant.points[0].disturbance.stationaryVarianceMm2(),
+                    page->typedVarianceMm2(), 1e-6)
+            << "the predictions follow the identified filter";
+        EXPECT_LE(window.width(), 1280);
+        EXPECT_LE(window.height(), 800);
+        EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_identify_") + lang));
+    }
 }
 
 }  // namespace
