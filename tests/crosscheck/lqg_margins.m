@@ -7,7 +7,7 @@
 %  - every gain crossover with its phase margin, the |S| peak and the balanced disk margin
 %    alpha = 1 / max|S - 1/2| (MATLAB `diskmargin`, sigma = 0): `freqresp` on 200001 frequencies in
 %    [0.001, pi] (Octave's `norm(S, inf)` stops at 2.086 where the response reaches 2.0879 at z = 2).
-% Usage: octave --no-gui --eval "lqg_margins('lqg_z1.json')"
+% Install: scripts/install-deps.sh --with-crosscheck-tools. Usage: octave --no-gui --eval "lqg_margins('lqg_z1.json')"
 function lqg_margins(file)
   pkg load control
   d = jsondecode(fileread(file));
