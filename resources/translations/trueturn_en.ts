@@ -2766,6 +2766,10 @@ L/d %4</source>
         <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Phase margin %1, sensitivity peak |S| %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>

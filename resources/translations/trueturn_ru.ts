@@ -2773,6 +2773,10 @@ L/d %4</translation>
         <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
         <translation>Точка %1 (прогон %2, %3 дет.): a %4 ± %5, b %6 ± %7, σ² %8 мм², Льюнг–Бокс p %9</translation>
     </message>
+    <message>
+        <source>Phase margin %1, sensitivity peak |S| %2.</source>
+        <translation>Запас по фазе %1, пик чувствительности |S| %2.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::CornerMoveEditor</name>

@@ -355,6 +355,18 @@ void ControllerPage::showResult(std::shared_ptr<const TuningResult> result) {
     m_apply->setEnabled(newest);
 }
 
+QString ControllerPage::phaseAndPeakText(const core::LoopMargins& margins) const {
+    std::optional<double> phase;
+    double peak = 0.0;
+    for (const core::ChannelMargins& m : margins.channels) {
+        if (m.phaseDeg) phase = phase ? std::min(*phase, *m.phaseDeg) : *m.phaseDeg;
+        peak = std::max(peak, m.sensitivityPeak);
+    }
+    return tr("Phase margin %1, sensitivity peak |S| %2.")
+        .arg(phase ? QStringLiteral("%1°").arg(*phase, 0, 'f', 0) : QStringLiteral("∞"))
+        .arg(peak, 0, 'f', 2);
+}
+
 void ControllerPage::showPredictions(const TuningResult& r) {
     const core::TuningPreview& p = *r.preview;
     for (std::size_t i = 0; i < m_kEffLqg.size(); ++i) {
@@ -374,11 +386,13 @@ void ControllerPage::showPredictions(const TuningResult& r) {
     if (p.lqgMargins.delayMarginBelowOnePart) {
         m_status->setText(tr("Warning: a plant one part slower than the model destabilises this design "
                              "(delay margin under one part). Best EWMA weight %1.")
-                              .arg(p.ewmaWeight, 0, 'f', 2));
+                              .arg(p.ewmaWeight, 0, 'f', 2) +
+                          QLatin1Char(' ') + phaseAndPeakText(p.lqgMargins));
         m_status->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
     } else {
         m_status->setText(
-            tr("The design tolerates one more part of delay. Best EWMA weight %1.").arg(p.ewmaWeight, 0, 'f', 2));
+            tr("The design tolerates one more part of delay. Best EWMA weight %1.").arg(p.ewmaWeight, 0, 'f', 2) +
+            QLatin1Char(' ') + phaseAndPeakText(p.lqgMargins));
         m_status->setStyleSheet(QStringLiteral("color: #1b5e20; font-weight: bold;"));
     }
 }

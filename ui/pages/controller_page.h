@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/control/margins.h"
 #include "core/control/run_to_run_setup.h"
 #include "ui/controller/history_identification.h"
 #include "ui/page.h"
@@ -80,6 +81,8 @@ private:
     void requestPreview();
     void showResult(std::shared_ptr<const TuningResult> result);
     void showPredictions(const TuningResult& result);
+    /// The smallest phase margin and the largest sensitivity peak over the points, for the status line.
+    QString phaseAndPeakText(const core::LoopMargins& margins) const;
     void showCharts(const TuningResult& result);
     void apply();
     /// Hands the applied setup to the Run page's loop (AppContext::tuning) and says where it went.
