@@ -54,6 +54,7 @@ protected:
     /// Bends the bar to `um` on the stand and captures: hold still, then 50 samples averaged.
     void capture(ProbeCapturePage* page, double um) {
         page->setJack(um);
+        step(0.3);  // the mandrel's samples under the old load are through before the press
         ASSERT_TRUE(page->capturePoint());
         for (int i = 0; i < 200 && page->capturing(); ++i) {
             step(0.05);
@@ -151,6 +152,7 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     // Point 1 read again at its load: it is replaced, not added.
     cp->selectPoint(0);
     cp->setJack(-260.0);
+    step(0.3);  // the mandrel's samples under the old load are through before the press
     ASSERT_TRUE(cp->repeatPoint());
     for (int i = 0; i < 200 && cp->capturing(); ++i) {
         step(0.05);
@@ -161,6 +163,7 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     // Beyond the bridge's full scale (±294 µm at the tip) the mandrel flags its ADC over range and
     // withholds those samples: the capture says why it got none.
     cp->setJack(320.0);
+    step(0.3);  // the mandrel's samples under the old load are through before the press
     ASSERT_TRUE(cp->capturePoint());
     for (int i = 0; i < 50 && cp->capturing(); ++i) {
         step(0.05);
@@ -197,6 +200,7 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     // Verification at 123 µm, a deflection not captured: the table reads it within its tolerance.
     ProbeAcceptPage* ap = w->acceptPage();
     ap->setJack(123.0);
+    step(0.3);  // the mandrel's samples under the old load are through before the press
     ASSERT_TRUE(ap->checkPoint());
     for (int i = 0; i < 200 && page.probeSession().procedure.capturing(); ++i) {
         step(0.05);

@@ -112,6 +112,7 @@ TEST_F(CalibrationWizardsInRussian, ProbeWizardPagesFitAndSpeakRussian) {
     ProbeCapturePage* cp = w->capturePage();
     for (int i = 0; i <= 10; ++i) {  // on the stand: the jack bends the bar, the point is captured
         cp->setJack(-250.0 + 50.0 * i);
+        step(0.3);  // the mandrel's samples under the old load are through before the press
         ASSERT_TRUE(cp->capturePoint());
         for (int k = 0; k < 200 && cp->capturing(); ++k) {
             step(0.05);
@@ -128,6 +129,7 @@ TEST_F(CalibrationWizardsInRussian, ProbeWizardPagesFitAndSpeakRussian) {
     check(window, w, QStringLiteral("probe_4_fit"));
     w->next();
     w->acceptPage()->setJack(123.0);
+    step(0.3);  // the mandrel's samples under the old load are through before the press
     ASSERT_TRUE(w->acceptPage()->checkPoint());
     for (int i = 0; i < 200 && page->probeSession().procedure.capturing(); ++i) {
         step(0.05);
