@@ -16,6 +16,12 @@ class CalibrationWizardPage : public QWizardPage {
 public:
     using QWizardPage::QWizardPage;
     virtual void retranslate() = 0;
+
+protected:
+    /// Whether this page is the one its wizard shows. A page's poll timer keeps running after Next
+    /// (QWizard calls cleanupPage only on Back); it must not take the procedure's events meant for the
+    /// page shown (a verification's result on the next page).
+    bool isShown() const { return wizard() && wizard()->currentPage() == this; }
 };
 
 /// What both calibration wizards (probe linearisation, k_p from known loads) share: the

@@ -164,7 +164,9 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     left->addWidget(m_progress);
     layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
     m_timer->setInterval(100);
-    connect(m_timer, &QTimer::timeout, this, [this] { step(); });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) step();
+    });
     connect(m_measure, &QPushButton::clicked, this, [this] {
         if (measuring())
             abortMeasurement();
@@ -397,7 +399,9 @@ KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
     layout->addLayout(check);
     layout->addLayout(charts, 1);
     m_timer->setInterval(100);
-    connect(m_timer, &QTimer::timeout, this, [this] { step(); });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) step();
+    });
     connect(m_check, &QPushButton::clicked, this, &KpFitPage::checkLoad);
 }
 

@@ -94,7 +94,9 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
 
     m_timer->setInterval(kPollMs);
-    connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(); });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) pollProbe();
+    });
     connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
     connect(m_capture, &QPushButton::clicked, this, [this] {
         if (capturing())

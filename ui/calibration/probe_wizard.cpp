@@ -232,7 +232,9 @@ ProbeAcceptPage::ProbeAcceptPage(ProbeWizardContext& context, QWidget* parent)
     layout->addStretch(1);
     layout->addWidget(m_accept);
     m_timer->setInterval(ProbeCapturePage::kPollMs);
-    connect(m_timer, &QTimer::timeout, this, [this] { pollProbe(); });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) pollProbe();
+    });
     connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
     connect(m_check, &QPushButton::clicked, this, &ProbeAcceptPage::checkPoint);
     connect(m_accept, &QCheckBox::toggled, this, &ProbeAcceptPage::setAccepted);
@@ -440,7 +442,9 @@ ProbeSavePage::ProbeSavePage(ProbeWizardContext& context, QWidget* parent)
     layout->addWidget(m_result);
     layout->addStretch(1);
     m_timer->setInterval(100);
-    connect(m_timer, &QTimer::timeout, this, [this] { pollUpload(); });
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) pollUpload();
+    });
     connect(m_save, &QPushButton::clicked, this, &ProbeSavePage::save);
     connect(m_upload, &QPushButton::clicked, this, &ProbeSavePage::upload);
     connect(m_export, &QPushButton::clicked, this, [this] {
