@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "audit_filter_of.h"
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
@@ -12,16 +13,7 @@
 namespace tt::storage {
 namespace {
 
-AuditFilter filterOf(const QString& category, const QString& text = {}, const QString& fromUtc = {},
-                     const QString& toUtc = {}, int limit = 10000) {
-    AuditFilter f;
-    f.category = category;
-    f.text = text;
-    f.fromUtc = fromUtc;
-    f.toUtc = toUtc;
-    f.limit = limit;
-    return f;
-}
+using test::filterOf;
 
 class AuditStoreTest : public ::testing::TestWithParam<std::string> {};
 

@@ -7,6 +7,7 @@
 
 #include <QSqlQuery>
 
+#include "audit_filter_of.h"
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/data_stores.h"
@@ -23,16 +24,7 @@ using core::auth::SecretKind;
 
 constexpr std::int64_t kT0 = 1'800'000'000;  // an arbitrary Unix time, s
 
-AuditFilter filterOf(const QString& category, const QString& text = {}, const QString& fromUtc = {},
-                     const QString& toUtc = {}, int limit = 10000) {
-    AuditFilter f;
-    f.category = category;
-    f.text = text;
-    f.fromUtc = fromUtc;
-    f.toUtc = toUtc;
-    f.limit = limit;
-    return f;
-}
+using test::filterOf;
 
 class UserStoreTest : public ::testing::TestWithParam<std::string> {};
 
