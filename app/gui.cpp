@@ -15,7 +15,7 @@
 #include "ui/auth/log_in_gate.h"
 #include "ui/auth/user_session.h"
 #include "ui/controller/controller_tuning.h"
-#include "ui/devices/terminal_devices.h"
+#include "runtime/devices/terminal_devices.h"
 #include "ui/history_check.h"
 #include "ui/kiosk.h"
 #include "ui/language.h"
@@ -72,7 +72,7 @@ int runGui(int argc, char** argv) {
         language.apply(options.language);
 
     // The devices before the window, so every page sees the same instances.
-    ui::TerminalDevices devices(devices::defaultPluginFolder());
+    runtime::TerminalDevices devices(devices::defaultPluginFolder());
     for (const QString& problem : devices.problems())
         std::fprintf(stderr, "trueturn: devices: %s\n", qPrintable(problem));
 
@@ -80,7 +80,7 @@ int runGui(int argc, char** argv) {
     ui::DialogPrompt prompt;
     ui::AppContext context{&prompt, &state, &language,
                            options.databasePath.isEmpty() ? storage::defaultDatabasePath() : options.databasePath,
-                           &devices.manager()};
+                           &devices.hub()};
     // The tuning applied on the Controller page reaches the Run page's loop.
     ui::ControllerTuning tuning;
     context.tuning = &tuning;

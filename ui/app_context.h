@@ -6,8 +6,8 @@
 #include "core/auth/access_guard.h"
 #include "core/storage/data_stores.h"
 
-namespace tt::devices {
-class DeviceManager;
+namespace tt::runtime {
+class DeviceHub;
 }
 
 namespace tt::ui {
@@ -26,9 +26,9 @@ struct AppContext {
     AppState* state = nullptr;
     LanguageSwitcher* language = nullptr;
     QString databasePath;  ///< SQLite file (or PostgreSQL connection name) of the run history
-    /// The device instances (gauge, probe, drive readout, CNC output), made before the main window
-    /// (app/gui.cpp: TerminalDevices); required by the Devices page, used by the Run page's real lathe.
-    devices::DeviceManager* devices = nullptr;
+    /// The devices (gauge, probe, drive readout, CNC output) in their own thread, made before the main window
+    /// (app/gui.cpp: runtime::TerminalDevices); required by the Devices page, used by the Run page's machines.
+    runtime::DeviceHub* devices = nullptr;
     /// The data access object of `databasePath` (made on first use, or given by the application).
     std::shared_ptr<storage::DataStores> stores = nullptr;
     /// Who is logged in and the idle log-out (ui/auth/user_session.h); null = no log-in (tests of pages).

@@ -27,7 +27,7 @@
 #include "ui/language.h"
 #include "ui/pages/page_factory.h"
 #include "ui/prompt.h"
-#include "ui/run/run_settings.h"
+#include "ui/run/verdict_counter.h"
 
 namespace tt::ui {
 

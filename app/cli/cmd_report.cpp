@@ -1,6 +1,6 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
 // values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
-// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' analyseReport
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' runtime::analyseReport
 // (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
 // stored with each reading; the files from ui/reports too (the Reports page writes the same).
 #include <QDateTime>
@@ -20,9 +20,9 @@
 #include "core/quality/point_analysis.h"
 #include "core/storage/history_store.h"
 #include "core/storage/measurement_query.h"
-#include "ui/reports/point_report.h"
-#include "ui/reports/report_files.h"
-#include "ui/reports/report_pdf.h"
+#include "runtime/reports/point_report.h"
+#include "runtime/reports/report_files.h"
+#include "reports/report_pdf.h"
 
 namespace tt::cli {
 
@@ -38,7 +38,7 @@ QJsonObject verdictsJson(const core::VerdictCounts& counts) {
             {QStringLiteral("scrap"), static_cast<qint64>(counts.scrap)}};
 }
 
-QJsonObject pointJson(const ui::PointReport& point) {
+QJsonObject pointJson(const runtime::PointReport& point) {
     const core::PointAnalysis& a = point.analysis;
     const core::ChartLimits& l = a.chart.limits;
     QJsonArray violations;
@@ -202,13 +202,13 @@ int run(const QStringList& arguments) {
     if (filter.fromUtc && filter.toUtc && *filter.toUtc <= *filter.fromUtc)
         throw UsageError("--to: must come after --from");
     const int subgroup = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
-    ui::ReportChart chart = ui::ReportChart::Automatic;
+    runtime::ReportChart chart = runtime::ReportChart::Automatic;
     if (parser.isSet(QStringLiteral("chart"))) {
         const QString kind = parser.choice(QStringLiteral("chart"),
                                            {QStringLiteral("xbar-r"), QStringLiteral("xbar-s"), QStringLiteral("imr")});
-        chart = kind == QStringLiteral("imr")      ? ui::ReportChart::IndividualsMR
-                : kind == QStringLiteral("xbar-s") ? ui::ReportChart::XbarStdDev
-                                                   : ui::ReportChart::XbarRange;
+        chart = kind == QStringLiteral("imr")      ? runtime::ReportChart::IndividualsMR
+                : kind == QStringLiteral("xbar-s") ? runtime::ReportChart::XbarStdDev
+                                                   : runtime::ReportChart::XbarRange;
     }
     const std::size_t baseline =
         parser.isSet(QStringLiteral("baseline"))
@@ -216,7 +216,7 @@ int run(const QStringList& arguments) {
             : 0;
     core::PointAnalysisSettings settings;
     try {
-        settings = ui::reportSettings(subgroup, chart, baseline);
+        settings = runtime::reportSettings(subgroup, chart, baseline);
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--chart: ") + e.what());
     }
@@ -238,18 +238,18 @@ int run(const QStringList& arguments) {
     if (readings.empty() || (files && rows.empty()))
         throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
-    const std::vector<ui::PointReport> reports = ui::analyseReport(readings, settings);
+    const std::vector<runtime::PointReport> reports = runtime::analyseReport(readings, settings);
     QJsonArray points;
-    for (const ui::PointReport& point : reports)
+    for (const runtime::PointReport& point : reports)
         points.append(pointJson(point));
-    if (parser.isSet(QStringLiteral("csv"))) ui::writeMeasurementsCsv(parser.value(QStringLiteral("csv")), rows);
-    if (parser.isSet(QStringLiteral("dfq"))) ui::writeMeasurementsDfq(parser.value(QStringLiteral("dfq")), rows);
+    if (parser.isSet(QStringLiteral("csv"))) runtime::writeMeasurementsCsv(parser.value(QStringLiteral("csv")), rows);
+    if (parser.isSet(QStringLiteral("dfq"))) runtime::writeMeasurementsDfq(parser.value(QStringLiteral("dfq")), rows);
     if (parser.isSet(QStringLiteral("pdf")))
-        ui::ReportPdf::write(parser.value(QStringLiteral("pdf")), ui::reportHeaderOf(rows, runs), reports);
+        reports::ReportPdf::write(parser.value(QStringLiteral("pdf")), reports::reportHeaderOf(rows, runs), reports);
     if (parser.json()) {
         QJsonObject out{{QStringLiteral("subgroup"), settings.subgroupSize},
                         {QStringLiteral("chart"),
-                         QString::fromStdString(ui::chartKindName(reports.front().analysis.chart.limits.kind))},
+                         QString::fromStdString(runtime::chartKindName(reports.front().analysis.chart.limits.kind))},
                         {QStringLiteral("points"), points}};
         if (filter.runId) out.insert(QStringLiteral("run"), static_cast<qint64>(*filter.runId));
         printJson(out);

@@ -12,7 +12,7 @@
 namespace tt::core {
 
 /// The real lathe as a ShaftMachine, seen from the loop's thread: the devices live in another thread (the
-/// GUI's), joined through relays that the device side pumps (ui/run/lathe_link.h): the CNC output's writes
+/// device thread's), joined through relays that the device side pumps (runtime/devices/lathe_link.h): the CNC output's writes
 /// go through a CorrectionRelay, the gauge's readings through a GaugeRelay, and the part cycle is the
 /// operator's (OperatorCycle: the Part finished button). Its time is the wall clock. Every member is
 /// thread-safe.
@@ -27,6 +27,8 @@ public:
     const Clock& clock() const override { return m_clock; }
     std::size_t setManualEntry(bool manual) override;
     std::optional<double> outputNominalDiameterMm() const override { return m_outputNominalMm; }
+    std::optional<std::int64_t> partOnMachine() const override { return m_cycle.partOnMachine(); }
+    std::optional<std::int64_t> confirmPartFinished() override { return m_cycle.finishPart(); }
 
     // ---- the device side (another thread) ----
     GaugeRelay& gaugeRelay() { return m_gauge; }

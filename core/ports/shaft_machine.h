@@ -49,10 +49,6 @@ public:
         (void)timeS;
         return false;
     }
-    /// Whether its time runs at an adjustable multiple of the wall clock (a simulated lathe).
-    virtual bool speedAdjustable() const { return false; }
-    /// Simulated seconds per wall second (thread-safe; ignored when not adjustable).
-    virtual void setSpeed(double speed) { (void)speed; }
     /// Diameters typed by hand (true) or from the gauge: a simulated operator stops measuring; a real
     /// gauge's readings taken meanwhile are dropped. Returns how many readings were dropped.
     virtual std::size_t setManualEntry(bool manual) {
@@ -71,6 +67,20 @@ public:
     virtual bool silenceGauge(double seconds) {
         (void)seconds;
         return false;
+    }
+    /// The operator confirms each part (the Part finished button): the part on the machine now, if any
+    /// (thread-safe; none for a machine that reports its own cycle end).
+    virtual std::optional<std::int64_t> partOnMachine() const { return std::nullopt; }
+    /// The operator confirms the part on the machine is finished; returns its number, or none when no part
+    /// is on it or the machine reports its own cycle end (thread-safe).
+    virtual std::optional<std::int64_t> confirmPartFinished() { return std::nullopt; }
+    /// Resume: a part machined and stored before the interruption, with the corrections it really got and
+    /// when it came off the machine. A simulated machine machines it again so that its process continues
+    /// exactly where it stopped (its parts depend on the corrections they received), and its time moves on
+    /// to the part's finish; a real machine has nothing to do.
+    virtual void replayPart(const PartCorrection& applied, double finishedS) {
+        (void)applied;
+        (void)finishedS;
     }
     /// Resume: a part machined before the interruption, with the corrections it really got, is back
     /// on the rack waiting to be measured (a simulated station re-creates it; on a real lathe the

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/loop/loop_engine.h"
+#include "core/loop/shaft_run_stepper.h"
 #include "core/run/run_limits.h"
 #include "core/run/simulated_lathe.h"
 
@@ -93,17 +94,13 @@ LatheRunRecord runLatheLoop(LatheRunSpec spec) {
         if (!spec.history) throw std::invalid_argument("a resume needs the history it continues");
         // Everything stored so far, re-created exactly for the record: the simulator depends only on the
         // part number and the corrections the part received.
-        double lastTime = 0.0;
-        for (const StoredPart& stored : spec.history->parts(spec.resume->run.runId)) {
-            collector.take(lathe.shop().process().machine(partCorrectionFor(spec.plan.loop, stored)));
-            lastTime = std::max(lastTime, stored.finishedS);
-        }
-        lathe.jumpTo(lastTime);
+        for (const StoredPart& stored : spec.history->parts(spec.resume->run.runId))
+            collector.take(lathe.replay(partCorrectionFor(spec.plan.loop, stored), stored.finishedS));
         resumeShaftRun(*engine, lathe, spec.plan.loop, *spec.resume);
     } else {
         engine->start(spec.description);
     }
-    record.outcome = runSimulation(*engine, lathe, 100'000'000, spec.speed, spec.stop);
+    record.outcome = ShaftRunStepper(*engine, lathe).runToEnd(100'000'000, spec.speed, spec.stop);
     record.runId = engine->runId();
     return record;
 }

@@ -77,6 +77,11 @@ std::unique_ptr<RunToRunController> retunedShaftController(const ShaftScenario& 
     return makeShaftController(tuned, retuned);
 }
 
+void replayStoredParts(ShaftMachine& machine, const LoopConfig& loop, const std::vector<StoredPart>& parts) {
+    for (const StoredPart& stored : parts)
+        machine.replayPart(partCorrectionFor(loop, stored), stored.finishedS);
+}
+
 void resumeShaftRun(LoopEngine& engine, ShaftMachine& machine, const LoopConfig& loop, const ResumePoint& point) {
     for (const StoredPart& pending : point.pendingParts)
         if (!pending.measurement) machine.restorePart(partCorrectionFor(loop, pending));

@@ -68,6 +68,10 @@ ShaftScenario withControllerTuning(ShaftScenario scenario, const RunToRunSetup& 
 std::unique_ptr<RunToRunController> retunedShaftController(const ShaftScenario& scenario, const ShaftRunPlan& plan,
                                                            const RunToRunSetup& tuning);
 
+/// Resume on a simulated machine: every stored part of the run is machined again (ShaftMachine::replayPart) so
+/// its process continues where it stopped; nothing happens on a real machine.
+void replayStoredParts(ShaftMachine& machine, const LoopConfig& loop, const std::vector<StoredPart>& parts);
+
 /// Continues a stored run on the machine: its parts machined but not measured go back on the
 /// measuring station (ShaftMachine::restorePart), then the engine resumes from the stored state.
 void resumeShaftRun(LoopEngine& engine, ShaftMachine& machine, const LoopConfig& loop, const ResumePoint& point);

@@ -1,7 +1,6 @@
 #include "core/run/simulated_lathe.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 namespace tt::core {
@@ -11,28 +10,20 @@ namespace {
 constexpr std::size_t kKeptParts = 4;
 }  // namespace
 
-SimulatedLathe::SimulatedLathe(const LatheShopSpec& spec, Time time, double speed) {
-    if (time == Time::Paced)
-        m_paced = std::make_unique<ScaledClock>(speed);
-    else
-        m_jumping = std::make_unique<ManualClock>();
-    m_shop = std::make_unique<LatheShop>(spec, clock());
+SimulatedLathe::SimulatedLathe(const LatheShopSpec& spec)
+    : m_clock(std::make_unique<ManualClock>()), m_shop(std::make_unique<LatheShop>(spec, *m_clock)) {
     m_shop->station().setKeptParts(kKeptParts);
 }
 
-const Clock& SimulatedLathe::clock() const {
-    if (m_paced) return *m_paced;
-    return *m_jumping;
+TurnedPart SimulatedLathe::replay(const PartCorrection& applied, double finishedS) {
+    TurnedPart part = m_shop->process().machine(applied);
+    if (finishedS > m_clock->nowS()) m_clock->advanceTo(finishedS);
+    return part;
 }
 
 bool SimulatedLathe::jumpTo(double timeS) {
-    if (!m_jumping) return false;
-    m_jumping->advanceTo(timeS);
+    m_clock->advanceTo(timeS);
     return true;
-}
-
-void SimulatedLathe::setSpeed(double speed) {
-    if (m_paced && std::isfinite(speed) && speed >= 0.0) m_paced->setSpeed(speed);
 }
 
 std::size_t SimulatedLathe::setManualEntry(bool manual) {

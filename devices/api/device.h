@@ -13,8 +13,6 @@
 #include "core/ports/device_health.h"
 #include "core/ports/diameter_gauge.h"
 #include "core/ports/drive_current.h"
-#include "devices/api/boring_truth.h"
-#include "devices/api/calibration_stand.h"
 #include "devices/api/device_kind.h"
 
 namespace tt::core {
@@ -135,14 +133,6 @@ public:
     virtual core::CorrectionOutput* correctionOutput() { return nullptr; }
     /// Table upload, for probe mandrels that support it.
     virtual TableUploadTarget* tableUploadTarget() { return nullptr; }
-    /// Fault switches, for the simulator's devices only.
-    virtual FaultSwitches* faultSwitches() { return nullptr; }
-    /// Inputs of the simulator's devices only.
-    virtual SimulationInputs* simulationInputs() { return nullptr; }
-    /// A simulated boring pass and its truth: the simulator's drive read-out and probe mandrel only.
-    virtual BoringTruth* boringTruth() { return nullptr; }
-    /// The calibration stand (screw jack, hydraulic jack), for the simulator's devices only.
-    virtual CalibrationStand* calibrationStand() { return nullptr; }
 
     /// Called (in the device's thread) whenever state, live value or last error change.
     void setChangeListener(std::function<void()> listener) { m_listener = std::move(listener); }

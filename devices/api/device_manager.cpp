@@ -5,7 +5,6 @@
 #include <QSettings>
 #include <stdexcept>
 
-#include "devices/simulator/simulator_plugin.h"
 
 namespace tt::devices {
 
@@ -29,7 +28,12 @@ QString stateWord(core::DeviceState state) {
 }  // namespace
 
 DeviceManager::DeviceManager(const core::Clock* clock, QObject* parent)
-    : QObject(parent), m_clock(clock ? clock : &m_ownClock), m_simulator(std::make_unique<SimulatorPlugin>()) {}
+    : QObject(parent), m_clock(clock ? clock : &m_ownClock) {
+    // The plugins linked into the program (the built-in simulator) come first, found like the others.
+    for (QObject* root : QPluginLoader::staticInstances())
+        if (auto* plugin = qobject_cast<DevicePlugin*>(root); plugin && !this->plugin(plugin->pluginId()))
+            m_static << plugin;
+}
 
 DeviceManager::~DeviceManager() {
     // Instances first: their code lives in the plugin libraries (which stay loaded).
@@ -72,7 +76,7 @@ int DeviceManager::loadPlugins(const QString& folder) {
 }
 
 QList<DevicePlugin*> DeviceManager::plugins() const {
-    QList<DevicePlugin*> all{m_simulator.get()};
+    QList<DevicePlugin*> all = m_static;
     all << m_loaded;
     return all;
 }

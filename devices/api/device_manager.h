@@ -34,9 +34,11 @@ struct DeviceSummary {
     QString text;  ///< "3 ready" or "Gauge: no answer from /dev/ttyUSB0 for 1.0 s"
 };
 
-/// The host side of the device plugins: finds the plugins (the built-in simulator first, then
-/// the shared libraries in the plugin folder), holds the configured instances, persists them in
-/// QSettings, and tells observers when an instance changes. Lives in the GUI thread.
+/// The host side of the device plugins: finds the plugins one way (those linked into the program as
+/// static Qt plugins first, such as the built-in simulator, then the shared libraries in the plugin
+/// folder; it names none), holds the configured instances, persists them in QSettings, and tells
+/// observers when an instance changes. Lives in the thread of its instances (the runtime's device
+/// thread).
 class DeviceManager : public QObject {
     Q_OBJECT
 public:
@@ -51,7 +53,7 @@ public:
     QStringList pluginErrors() const { return m_pluginErrors; }
     /// Saved entries that could not be restored (their plugin is missing), as saved.
     QVariantList unavailableEntries() const { return m_unavailable; }
-    /// Available plugins, the simulator first.
+    /// Available plugins, the linked ones (the simulator) first.
     QList<DevicePlugin*> plugins() const;
     DevicePlugin* plugin(const QString& pluginId) const;
     /// The complete machines every plugin offers for shaft runs, the simulator's first.
@@ -103,7 +105,7 @@ private:
 
     SteadyClock m_ownClock;
     const core::Clock* m_clock;
-    std::unique_ptr<DevicePlugin> m_simulator;
+    QList<DevicePlugin*> m_static;  ///< linked into the program (QPluginLoader::staticInstances)
     QList<DevicePlugin*> m_loaded;
     QList<QPluginLoader*> m_loaders;
     QStringList m_loadedFiles;

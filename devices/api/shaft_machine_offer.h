@@ -18,13 +18,12 @@ struct ShaftMachineOffer {
     QString key;           ///< stable id, stored with the page's choices ("simulated-lathe")
     QString name;          ///< in the user's language when the offers were asked for
     QString description;   ///< one sentence for the page (what turns, measures and corrects the parts)
-    bool adjustableSpeed;  ///< its time runs at a settable multiple of the wall clock
-    /// Makes the machine for one run of `scenario`, its random sources seeded by `seed`, its time at
-    /// `speed` x the wall clock (when adjustable). Called in the loop's thread; the machine is used only
-    /// there. Throws std::invalid_argument when the scenario does not suit the machine.
-    std::function<std::unique_ptr<core::ShaftMachine>(const core::ShaftScenario& scenario, std::uint64_t seed,
-                                                      double speed)>
-        make;
+    /// Its time is simulated (ShaftMachine::jumpTo): the run paces it at a settable multiple of the wall clock.
+    bool adjustableSpeed = false;
+    /// Makes the machine for one run of `scenario`, its random sources seeded by `seed`. Called in the loop's
+    /// thread; the machine is used only there. Throws std::invalid_argument when the scenario does not suit
+    /// the machine.
+    std::function<std::unique_ptr<core::ShaftMachine>(const core::ShaftScenario& scenario, std::uint64_t seed)> make;
 };
 
 }  // namespace tt::devices

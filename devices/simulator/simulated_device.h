@@ -4,21 +4,22 @@
 #include <cstdint>
 
 #include "devices/api/device_base.h"
+#include "devices/api/simulated_instrument.h"
 
 namespace tt::devices {
 
 /// Base of the built-in simulator's devices: a timer that drives them while open, the fault
 /// switches (a disconnected device is in error until the switch is released, then reconnects),
 /// noise, and no-op simulation inputs that each device overrides where they apply.
-class SimulatedDevice : public DeviceBase, public SimulationInputs {
+class SimulatedDevice : public DeviceBase, public SimulatedInstrument, public SimulationInputs {
 public:
     SimulatedDevice(DeviceKind kind, const DeviceContext& context, int tickMs);
     ~SimulatedDevice() override;
 
     void open() override;
     void close() override;
-    FaultSwitches* faultSwitches() override { return &m_faults; }
-    SimulationInputs* simulationInputs() override { return this; }
+    FaultSwitches& faultSwitches() override { return m_faults; }
+    SimulationInputs& simulationInputs() override { return *this; }
 
     void setDiameterSource(std::function<double()>) override {}
     void setDeflectionSource(std::function<std::array<double, 2>(double)>) override {}

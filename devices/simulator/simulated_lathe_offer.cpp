@@ -58,12 +58,13 @@ private:
     core::MachineCycle& m_cycle;
 };
 
-/// The simulated lathe as the terminal shows it: the same machine, its states worded in the operator's
-/// language like every device's.
+/// The simulated lathe as the terminal shows it: the same machine in simulated time (the run's stepper paces
+/// it by the wall clock, so it machines the same parts as a headless run of the same request), its states
+/// worded in the operator's language like every device's.
 class TerminalLathe final : public core::ShaftMachine {
 public:
-    TerminalLathe(const core::ShaftScenario& scenario, std::uint64_t seed, double speed)
-        : m_lathe(scenario.shopSpec(seed), core::SimulatedLathe::Time::Paced, speed) {}
+    TerminalLathe(const core::ShaftScenario& scenario, std::uint64_t seed)
+        : m_lathe(scenario.shopSpec(seed)) {}
 
     core::MachineCycle& cycle() override { return m_cycle; }
     core::CorrectionOutput& output() override { return m_output; }
@@ -71,8 +72,6 @@ public:
     const core::Clock& clock() const override { return m_lathe.clock(); }
     double nextEventTimeS() const override { return m_lathe.nextEventTimeS(); }
     bool jumpTo(double timeS) override { return m_lathe.jumpTo(timeS); }
-    bool speedAdjustable() const override { return m_lathe.speedAdjustable(); }
-    void setSpeed(double speed) override { m_lathe.setSpeed(speed); }
     std::size_t setManualEntry(bool manual) override { return m_lathe.setManualEntry(manual); }
     std::optional<core::TrueProfile> trueProfile(std::int64_t partNumber) const override {
         return m_lathe.trueProfile(partNumber);
@@ -80,6 +79,9 @@ public:
     void partMeasured(std::int64_t partNumber) override { m_lathe.partMeasured(partNumber); }
     bool silenceGauge(double seconds) override { return m_lathe.silenceGauge(seconds); }
     void restorePart(const core::PartCorrection& applied) override { m_lathe.restorePart(applied); }
+    void replayPart(const core::PartCorrection& applied, double finishedS) override {
+        m_lathe.replayPart(applied, finishedS);
+    }
 
 private:
     core::SimulatedLathe m_lathe;
@@ -99,8 +101,8 @@ ShaftMachineOffer simulatedLatheOffer() {
         "Parts of the set-up are turned on the simulated lathe, measured at the control points and the next part "
         "is corrected.");
     offer.adjustableSpeed = true;
-    offer.make = [](const core::ShaftScenario& scenario, std::uint64_t seed, double speed) {
-        return std::make_unique<TerminalLathe>(scenario, seed, speed);
+    offer.make = [](const core::ShaftScenario& scenario, std::uint64_t seed) {
+        return std::make_unique<TerminalLathe>(scenario, seed);
     };
     return offer;
 }

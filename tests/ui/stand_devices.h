@@ -7,7 +7,7 @@
 #include <QTest>
 
 #include "core/loop/loop_clock.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 
 namespace tt::ui::test {
 
@@ -35,18 +35,19 @@ public:
             step(0.05);
         return ready();
     }
-    devices::Device& probe() { return *manager.device(probeId); }
-    devices::Device& drive() { return *manager.device(driveId); }
 
     core::ManualClock clock;
-    devices::DeviceManager manager{&clock};
+    runtime::DeviceHub manager{&clock};
     QString probeId;
     QString driveId;
 
 private:
     bool ready() {
-        const auto info = probe().tableUploadTarget()->mandrelInfo();
-        return probe().health().ready() && drive().health().ready() && info && info->adcBits;
+        manager.sync();
+        const runtime::DeviceView* probe = manager.view(probeId);
+        const runtime::DeviceView* drive = manager.view(driveId);
+        return probe && drive && probe->health.ready() && drive->health.ready() && probe->mandrel &&
+               probe->mandrel->adcBits;
     }
 };
 

@@ -17,12 +17,12 @@
 
 #include "config/boring_config.h"
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "ui/app_state.h"
-#include "ui/boring/boring_link.h"
-#include "ui/boring/compensation_session.h"
+#include "runtime/devices/boring_link.h"
+#include "runtime/boring/compensation_session.h"
 #include "ui/boring/hold_reason.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -33,9 +33,8 @@ constexpr qint64 kRefreshMs = 100;         ///< plots are redrawn at most ten ti
 const int kSpeeds[] = {1, 5, 10, 20, 50};  ///< a source's own pass: PLC cycles per PLC period
 constexpr int kDefaultSpeed = 2;
 /// The CNC output entry of a source's own simulated pass (its PLC), offered when the source has one.
-const QString kOwnPass = QStringLiteral("station");
 /// The tool entry of a source's own simulated pass (the scenario's bar).
-const QString kPassTool = QStringLiteral("station");
+const QString kPassTool = QStringLiteral("own-bar");
 
 const QColor kMeasured(21, 101, 192);
 const QColor kOffset(46, 125, 50);
@@ -52,7 +51,7 @@ QString mm(double v, int decimals = 3) {
 BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
     : QWidget(parent),
       m_context(context),
-      m_session(new CompensationSession(this)),
+      m_session(new runtime::CompensationSession(this)),
       m_setup(new QGroupBox(this)),
       m_form(new QFormLayout),
       m_sourceLabel(new QLabel(this)),
@@ -86,8 +85,8 @@ BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
       m_forceValue(new QLabel(this)),
       m_boreValue(new QLabel(this)),
       m_progress(new QProgressBar(this)),
-      m_chart(new Chart(this)),
-      m_boreChart(new Chart(this)) {
+      m_chart(new plot::Chart(this)),
+      m_boreChart(new plot::Chart(this)) {
     setObjectName(QStringLiteral("boringPanel"));
     try {
         m_scenario = config::loadBoringScenario(QStringLiteral("heavy-boring"));
@@ -106,12 +105,23 @@ BoringPanel::BoringPanel(AppContext& context, QWidget* parent)
 BoringPanel::~BoringPanel() {
     // No signal from a panel being destroyed: the session stops its thread, the link its relays.
     m_session->stop();
-    if (m_link) m_link->disconnectDevices();
+    finishLink();
+}
+
+void BoringPanel::finishLink() {
+    if (!m_prepared.finish) return;
+    const std::optional<double> held = m_prepared.finish();
+    m_prepared = {};
+    const std::optional<runtime::BoringTarget> target = currentTarget();
+    if (held && target && target->can.holdsOffset) {
+        m_heldOffsetMm[m_runOutputKey] = *held;
+        m_trace.setOffsetMm(*held);
+    }
 }
 
 void BoringPanel::connectControls() {
-    connect(m_session, &CompensationSession::cycles, this, &BoringPanel::onCycles);
-    connect(m_session, &CompensationSession::passFinished, this, &BoringPanel::finishPass);
+    connect(m_session, &runtime::CompensationSession::cycles, this, &BoringPanel::onCycles);
+    connect(m_session, &runtime::CompensationSession::passFinished, this, &BoringPanel::finishPass);
     connect(m_start, &QPushButton::clicked, this, &BoringPanel::start);
     connect(m_stop, &QPushButton::clicked, this, &BoringPanel::stop);
     connect(m_zero, &QPushButton::clicked, this, &BoringPanel::zeroOffset);
@@ -131,7 +141,11 @@ void BoringPanel::connectControls() {
     });
     connect(m_silent, &QCheckBox::toggled, this, [this](bool on) {
         // The source device's own fault switch, as on the Devices page.
-        if (devices::Device* d = sourceDevice(); d && d->faultSwitches()) d->faultSwitches()->silent = on;
+        const runtime::DeviceView* d = sourceDevice();
+        if (!d || !d->faults) return;
+        devices::FaultSwitches faults = *d->faults;
+        faults.silent = on;
+        m_devices->setFaults(d->id, faults);
     });
 }
 
@@ -270,10 +284,8 @@ void BoringPanel::showEvent(QShowEvent* event) {
 void BoringPanel::watchDevices() {
     if (m_devices) disconnect(m_devices, nullptr, this, nullptr);
     m_devices = m_context.devices;
-    delete m_link;
-    m_link = new BoringLink(m_devices, this);
     if (!m_devices) return;
-    connect(m_devices, &devices::DeviceManager::devicesChanged, this, [this] {
+    connect(m_devices, &runtime::DeviceHub::devicesChanged, this, [this] {
         if (m_running) {
             // The run's devices may be gone or replaced: stop before anything touches them.
             stop();
@@ -284,7 +296,7 @@ void BoringPanel::watchDevices() {
         rebuildChoices();
     });
     // The source's fault switch may be set on the Devices page too: the check box follows it.
-    connect(m_devices, &devices::DeviceManager::deviceChanged, this, [this](const QString& id) {
+    connect(m_devices, &runtime::DeviceHub::deviceChanged, this, [this](const QString& id) {
         if (const std::optional<SourceChoice> source = currentSource(); source && source->deviceId == id)
             syncFaultSwitch();
     });
@@ -328,8 +340,9 @@ void BoringPanel::rebuildTools() {
     const QString previous = m_tool->currentData().toString();
     const QSignalBlocker block(m_tool);
     m_tool->clear();
-    // On a source's own simulated pass the pass's boring bar comes first.
-    if (onSourcesPass()) m_tool->addItem(QString(), kPassTool);
+    // A target that bores with a bar of its own offers that bar first.
+    if (const std::optional<runtime::BoringTarget> target = currentTarget(); target && target->can.ownTool)
+        m_tool->addItem(QString(), kPassTool);
     for (const core::ToolRecord& t : m_tools)
         m_tool->addItem(QString::fromStdString(t.id + " — " + t.name),
                         QStringLiteral("tool:%1").arg(QString::fromStdString(t.id)));
@@ -339,24 +352,20 @@ void BoringPanel::rebuildTools() {
 
 void BoringPanel::rebuildOutputs() {
     const QString previous = m_output->currentData().toString();
-    devices::Device* source = sourceDevice();
+    const std::optional<SourceChoice> source = currentSource();
     const QSignalBlocker block(m_output);
     m_output->clear();
-    // A source with a simulated pass of its own offers the pass's PLC, first.
-    if (source && source->boringTruth() && m_scenarioProblem.isEmpty()) m_output->addItem(QString(), kOwnPass);
-    if (m_devices)
-        for (const QString& id : m_devices->devicesOfKind(devices::DeviceKind::CorrectionOutput))
-            if (const devices::DeviceEntry* e = m_devices->entry(id))
-                m_output->addItem(e->name, QStringLiteral("dev:%1").arg(id));
+    m_targets = runtime::boringTargets(m_devices, source ? source->deviceId : QString(), m_scenarioProblem.isEmpty());
+    for (const runtime::BoringTarget& target : m_targets)
+        m_output->addItem(target.name, target.key);
     const int at = m_output->findData(previous);
     m_output->setCurrentIndex(at >= 0 ? at : 0);
 }
 
 void BoringPanel::syncFaultSwitch() {
-    devices::Device* source = sourceDevice();
-    const devices::FaultSwitches* faults = source ? source->faultSwitches() : nullptr;
+    const runtime::DeviceView* source = sourceDevice();
     const QSignalBlocker block(m_silent);
-    m_silent->setChecked(faults && faults->silent);
+    m_silent->setChecked(source && source->faults && source->faults->silent);
 }
 
 std::optional<BoringPanel::SourceChoice> BoringPanel::currentSource() const {
@@ -370,13 +379,15 @@ std::optional<BoringPanel::SourceChoice> BoringPanel::currentSource() const {
     return c;
 }
 
-devices::Device* BoringPanel::sourceDevice() const {
+const runtime::DeviceView* BoringPanel::sourceDevice() const {
     const std::optional<SourceChoice> source = currentSource();
-    return source && m_devices ? m_devices->device(source->deviceId) : nullptr;
+    return source && m_devices ? m_devices->view(source->deviceId) : nullptr;
 }
 
-bool BoringPanel::onSourcesPass() const {
-    return m_output->currentData().toString() == kOwnPass;
+std::optional<runtime::BoringTarget> BoringPanel::currentTarget() const {
+    for (const runtime::BoringTarget& target : m_targets)
+        if (target.key == m_output->currentData().toString()) return target;
+    return std::nullopt;
 }
 
 bool BoringPanel::selectSource(const QString& key) {
@@ -416,39 +427,6 @@ core::BoringRunChoices BoringPanel::choicesFromForm(const SourceChoice& source, 
     return c;
 }
 
-std::shared_ptr<core::BoringStation> BoringPanel::makeStation(const SourceChoice& source,
-                                                              core::BoringRunChoices& choices) {
-    devices::Device* device = sourceDevice();
-    if (!device) throw std::invalid_argument(tr("The chosen source device is gone.").toStdString());
-    const QString outputKey = m_output->currentData().toString();
-    if (outputKey == kOwnPass) {
-        devices::BoringTruth* truth = device->boringTruth();
-        if (!truth) throw std::invalid_argument(tr("The chosen source has no simulated pass.").toStdString());
-        core::BoringScenario scenario = m_scenario;
-        scenario.plcCycleS = choices.plcCycleS;
-        choices.plane = 0;           // the pass's mandrel is calibrated with plane 1 along X
-        choices.heldOffsetMm = 0.0;  // a new pass starts with the offset at 0
-        try {
-            return truth->beginPass(scenario);
-        } catch (const std::exception&) {
-            throw std::invalid_argument(
-                tr("The simulated pass cannot begin: its scenario or its mandrel's calibration is refused.")
-                    .toStdString());
-        }
-    }
-    if (outputKey.isEmpty())
-        throw std::invalid_argument(
-            tr("No CNC output for the dynamic X offset: add one on the Devices page.").toStdString());
-    devices::Device* output = m_devices ? m_devices->device(outputKey.mid(4)) : nullptr;
-    if (!output || !output->correctionOutput())
-        throw std::invalid_argument(tr("The chosen CNC output is gone.").toStdString());
-    choices.heldOffsetMm = m_heldOffsetMm.value(outputKey, 0.0);
-    std::shared_ptr<core::BoringStation> station =
-        m_link->connectDevices(source.deviceId, source.method, outputKey.mid(4), choices.plcCycleS);
-    if (!station) throw std::invalid_argument(tr("No devices are configured.").toStdString());
-    return station;
-}
-
 bool BoringPanel::start() {
     if (m_running) return false;
     m_problem.clear();
@@ -464,24 +442,34 @@ bool BoringPanel::start() {
                                     : tr("Choose the tool."));
         return false;
     }
+    const std::optional<runtime::BoringTarget> target = currentTarget();
+    if (!target) {
+        showProblem(tr("Cannot start: %1").arg(tr("No CNC output for the dynamic X offset: add one on the Devices page.")));
+        return false;
+    }
+    if (!sourceDevice()) {
+        showProblem(tr("Cannot start: %1").arg(tr("The chosen source device is gone.")));
+        return false;
+    }
     core::BoringRunChoices choices = choicesFromForm(*source, *tool);
-    std::shared_ptr<core::BoringStation> station;
     std::unique_ptr<core::BoringRun> run;
+    m_runOutputKey = target->key;
     try {
-        station = makeStation(*source, choices);
-        run = core::buildBoringRun(choices, *station);
+        m_prepared = target->prepare({source->deviceId, source->method}, choices, m_scenario,
+                                     m_heldOffsetMm.value(target->key, 0.0));
+        run = core::buildBoringRun(choices, *m_prepared.station);
     } catch (const core::BoringRunRefused& e) {
-        m_link->disconnectDevices();
+        finishLink();
         showProblem(tr("Cannot start: %1").arg(describeRefusal(e)));
         return false;
     } catch (const std::invalid_argument& e) {
-        m_link->disconnectDevices();
+        finishLink();
         showProblem(tr("Cannot start: %1").arg(QString::fromStdString(e.what())));
         return false;
     }
+    std::shared_ptr<core::BoringStation> station = m_prepared.station;
     run->setSegment(static_cast<core::SegmentKind>(m_segment->currentData().toInt()));
     m_runMethod = choices.method;
-    m_runOutputKey = m_output->currentData().toString();
     m_trace.reset(run->offsetMm(), m_scenario.cut.boreLengthMm, m_scenario.cut.gaugeMarginMm);
     m_headline = tr("Starting");
     m_reason.clear();
@@ -500,13 +488,7 @@ bool BoringPanel::start() {
 void BoringPanel::stop() {
     if (!m_running) return;
     m_session->stop();
-    if (m_link->isConnected()) {
-        m_link->disconnectDevices();
-        if (const std::optional<double> held = m_link->confirmedOffsetMm()) {
-            m_heldOffsetMm[m_runOutputKey] = *held;
-            m_trace.setOffsetMm(*held);
-        }
-    }
+    finishLink();
     m_running = false;
     m_headline = tr("Stopped");
     m_holding = false;
@@ -518,17 +500,17 @@ void BoringPanel::stop() {
 
 bool BoringPanel::zeroOffset() {
     if (m_running || !m_devices) return false;
-    const QString key = m_output->currentData().toString();
+    const std::optional<runtime::BoringTarget> target = currentTarget();
+    if (!target || !target->can.holdsOffset) return false;
+    const QString key = target->key;
     const double held = m_heldOffsetMm.value(key, 0.0);
-    devices::Device* device = key.startsWith(QStringLiteral("dev:")) ? m_devices->device(key.mid(4)) : nullptr;
-    if (!device || !device->correctionOutput()) return false;
     if (m_context.prompt &&
         m_context.prompt->ask(this, tr("Zero the offset"),
                               tr("The CNC holds a dynamic X offset of %1 mm. Set it to 0 now? The tool moves by %2 mm: "
                                  "do this only with the tool out of the bore.")
                                   .arg(mm(held), mm(-held))) != Prompt::Answer::Yes)
         return false;
-    const core::OutputResult r = device->correctionOutput()->sendDynamicOffset(0.0);
+    const core::OutputResult r = m_devices->writeOffset(key.mid(4), 0.0);
     if (!r.ok) {
         showProblem(tr("The CNC did not take the offset 0: %1").arg(QString::fromStdString(r.message)));
         return false;
@@ -633,7 +615,8 @@ void BoringPanel::showWords() {
     m_reasonLabel->setStyleSheet(QStringLiteral("font-size: 14pt; font-weight: bold; color: %1;").arg(colour));
     m_detailLabel->setText(run && m_holding ? m_detail : QString());
     m_detailLabel->setVisible(!m_detailLabel->text().isEmpty());
-    const bool pass = onSourcesPass();
+    const std::optional<runtime::BoringTarget> target = currentTarget();
+    const bool pass = target && target->can.knowsTruth;
     m_boreValue->setVisible(pass);
     m_boreChart->setVisible(pass);
     m_progress->setVisible(pass);
@@ -661,7 +644,7 @@ void BoringPanel::refreshPlots() {
         std::transform(time.begin(), time.end(), t.begin(), [t0](double v) { return v - t0; });
         m_chart->setSeries(QStringLiteral("measured"), tr("Measured"), t, m_trace.measuredMm(), kMeasured);
         m_chart->setSeries(QStringLiteral("offset"), tr("Offset applied"), t, m_trace.offsetMm(), kOffset,
-                           Chart::Style::Steps);
+                           plot::Chart::Style::Steps);
         if (m_trace.hasTruth())
             m_chart->setSeries(QStringLiteral("true"), tr("Real (simulator)"), t, m_trace.trueMm(), kTrue);
         else
@@ -684,8 +667,9 @@ void BoringPanel::refreshPlots() {
 void BoringPanel::updateEnabled() {
     const bool run = m_running;
     const std::optional<SourceChoice> source = currentSource();
-    devices::Device* device = sourceDevice();
-    const bool pass = onSourcesPass();
+    const runtime::DeviceView* device = sourceDevice();
+    const std::optional<runtime::BoringTarget> target = currentTarget();
+    const runtime::BoringTargetCapabilities can = target ? target->can : runtime::BoringTargetCapabilities{};
     const bool probe = source && source->method == core::BoringMethod::Probe;
     for (QWidget* w : std::initializer_list<QWidget*>{m_source, m_tool, m_output, m_maxOffset, m_maxRate, m_plcCycle,
                                                       m_plane, m_speed})
@@ -693,12 +677,12 @@ void BoringPanel::updateEnabled() {
     m_start->setEnabled(!run && source.has_value());
     m_stop->setEnabled(run);
     const QString outputKey = m_output->currentData().toString();
-    m_zero->setEnabled(!run && !pass && std::abs(m_heldOffsetMm.value(outputKey, 0.0)) > 0.0);
-    m_form->setRowVisible(m_plane, probe && !pass);
+    m_zero->setEnabled(!run && can.holdsOffset && std::abs(m_heldOffsetMm.value(outputKey, 0.0)) > 0.0);
+    m_form->setRowVisible(m_plane, probe && can.choosesPlane);
     m_form->setRowVisible(m_segment, !probe);
-    m_form->setRowVisible(m_speed, pass);
-    m_form->setRowVisible(m_silent, device && device->faultSwitches());
-    m_zero->setVisible(!pass);
+    m_form->setRowVisible(m_speed, can.adjustableSpeed);
+    m_form->setRowVisible(m_silent, device && device->faults);
+    m_zero->setVisible(can.holdsOffset);
 }
 
 void BoringPanel::loadSettings() {
@@ -758,7 +742,7 @@ void BoringPanel::retranslate() {
     m_segment->setItemText(2, tr("Contour"));
     for (int i = 0; i < m_source->count(); ++i) {
         const QStringList parts = m_source->itemData(i).toString().split(QLatin1Char(':'));
-        const devices::DeviceEntry* e = m_devices && parts.size() == 3 ? m_devices->entry(parts[1]) : nullptr;
+        const runtime::DeviceView* e = m_devices && parts.size() == 3 ? m_devices->view(parts[1]) : nullptr;
         const QString name = e ? e->name : parts.value(1);
         m_source->setItemText(i, parts.value(2) == QStringLiteral("probe") ? tr("%1: probe mandrel").arg(name)
                                                                            : tr("%1: current + dither").arg(name));
@@ -766,8 +750,10 @@ void BoringPanel::retranslate() {
     const int passTool = m_tool->findData(kPassTool);
     if (passTool >= 0)
         m_tool->setItemText(passTool, tr("Station: %1").arg(QString::fromStdString(m_scenario.tool.name)));
-    const int passOutput = m_output->findData(kOwnPass);
-    if (passOutput >= 0) m_output->setItemText(passOutput, tr("Station's PLC"));
+    if (const std::optional<SourceChoice> source = currentSource(); source && !m_running)
+        m_targets = runtime::boringTargets(m_devices, source->deviceId, m_scenarioProblem.isEmpty());  // names in the new language
+    for (int i = 0; i < m_output->count() && i < m_targets.size(); ++i)
+        m_output->setItemText(i, m_targets[i].name);
     if (const std::optional<core::ToolRecord> tool = currentTool()) {
         const double k = core::effectiveStiffnessNPerMm(*tool);
         m_toolInfo->setText(tr("k %1 N/mm%2 · k_p %3 N/A\nL/d %4")

@@ -13,6 +13,7 @@
 #include "core/model/tool_stiffness.h"
 #include "core/run/boring_run.h"
 #include "ui/app_context.h"
+#include "runtime/boring/boring_targets.h"
 #include "ui/boring/boring_trace.h"
 
 class QCheckBox;
@@ -25,28 +26,28 @@ class QProgressBar;
 class QPushButton;
 class QSpinBox;
 
-namespace tt::devices {
-class Device;
-class DeviceManager;
-}  // namespace tt::devices
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
+namespace tt::runtime {
+class CompensationSession;
+class DeviceHub;
+struct DeviceView;
+}  // namespace tt::runtime
 
 namespace tt::ui {
-
-class BoringLink;
-class Chart;
-class CompensationSession;
 
 /// The in-process compensation for the operator (issue 6, item 6; paper 001): choose the source
 /// (a device's cross-feed current with dither, or its probe mandrel and plane), the tool (its
 /// stiffness and k_p from the tool table), the CNC output for the dynamic X offset, and the rate
 /// and range limits; Start and Stop. The run is built by the one run builder (core::buildBoringRun)
-/// and runs in its own thread (CompensationSession), one cycle per PLC period, reaching the devices
-/// through relays (BoringLink), so a busy window never delays the offset; the plots show the
+/// and runs in its own thread (runtime::CompensationSession), one cycle per PLC period, reaching the devices
+/// in the device thread through relays, so a busy window never delays the offset; the plots show the
 /// deflection and the offset, and why the offset is held (taper, slide not moving, window too short,
-/// device silent) in plain words. A source that offers a simulated boring pass of its own
-/// (devices::BoringTruth) can run the compensation on the pass's own PLC instead of a CNC output,
-/// faster than real time, and then the bore error with and without compensation is plotted along
-/// the bore. The panel asks the devices for capabilities only, never what they are.
+/// device silent) in plain words. Where the offset goes is a runtime::BoringTarget (a CNC output, or a
+/// source's own simulated pass): the runtime assembles its station, and the panel asks what the target can
+/// do (a known truth to plot, a speed, an offset the CNC holds), never what it is.
 class BoringPanel : public QWidget {
     Q_OBJECT
 public:
@@ -79,8 +80,8 @@ public:
     QPushButton* startButton() const { return m_start; }
     QPushButton* stopButton() const { return m_stop; }
     QPushButton* zeroButton() const { return m_zero; }
-    Chart* offsetChart() const { return m_chart; }
-    Chart* boreChart() const { return m_boreChart; }
+    plot::Chart* offsetChart() const { return m_chart; }
+    plot::Chart* boreChart() const { return m_boreChart; }
     const BoringRunStats& stats() const { return m_trace.stats(); }
     /// The headline ("Compensating", "Holding the offset at …") and the reason shown.
     QString headline() const;
@@ -94,7 +95,7 @@ public:
     /// simulated pass); false when there is none.
     bool selectOutput(const QString& key);
     /// The compensation's session (its thread, its cycle schedule), for tests.
-    CompensationSession& session() const { return *m_session; }
+    runtime::CompensationSession& session() const { return *m_session; }
 
 signals:
     void runningChanged(bool running);
@@ -118,11 +119,11 @@ private:
     void updateEnabled();
     void syncFaultSwitch();
     std::optional<SourceChoice> currentSource() const;
-    devices::Device* sourceDevice() const;
+    const runtime::DeviceView* sourceDevice() const;
+    std::optional<runtime::BoringTarget> currentTarget() const;
     std::optional<core::ToolRecord> currentTool() const;
-    bool onSourcesPass() const;
     core::BoringRunChoices choicesFromForm(const SourceChoice& source, const core::ToolRecord& tool) const;
-    std::shared_ptr<core::BoringStation> makeStation(const SourceChoice& source, core::BoringRunChoices& choices);
+    void finishLink();
     void onCycles(const QVector<core::BoringRunCycle>& batch);
     void refreshPlots();
     void showWords();
@@ -136,14 +137,15 @@ private:
     int speed() const;
 
     AppContext& m_context;
-    QPointer<devices::DeviceManager> m_devices;
+    QPointer<runtime::DeviceHub> m_devices;
+    QList<runtime::BoringTarget> m_targets;  ///< where the offset can go for the chosen source
     core::BoringScenario m_scenario;  ///< the heavy-boring preset: defaults, and what a source's own pass bores
     QString m_scenarioProblem;
     std::vector<core::ToolRecord> m_tools;
     QString m_toolProblem;
 
-    CompensationSession* m_session;
-    BoringLink* m_link = nullptr;
+    runtime::CompensationSession* m_session;
+    runtime::PreparedStation m_prepared;  ///< the station of the run going (or last run)
     bool m_running = false;
     core::BoringMethod m_runMethod = core::BoringMethod::Current;
     QString m_runOutputKey;
@@ -192,8 +194,8 @@ private:
     QLabel* m_forceValue;
     QLabel* m_boreValue;
     QProgressBar* m_progress;
-    Chart* m_chart;
-    Chart* m_boreChart;
+    plot::Chart* m_chart;
+    plot::Chart* m_boreChart;
 };
 
 }  // namespace tt::ui

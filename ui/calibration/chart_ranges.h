@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <vector>
 
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 
 /// Sets both axes of `chart` to the data of `xs`, `ys` with a 6 % margin on every side, so
 /// points at the ends are never cut by the frame; `includeZeroY` keeps y = 0 in view. `topShare`
 /// leaves room above the data for the legend (top right) of a rising curve.
-inline void showAllWithMargin(Chart& chart, const std::vector<double>& xs, const std::vector<double>& ys,
+inline void showAllWithMargin(plot::Chart& chart, const std::vector<double>& xs, const std::vector<double>& ys,
                               bool includeZeroY, double topShare = 0.06) {
     if (xs.empty() || ys.empty()) return;
     auto [xlo, xhi] = std::minmax_element(xs.begin(), xs.end());

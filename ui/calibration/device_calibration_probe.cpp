@@ -3,70 +3,74 @@
 #include <stdexcept>
 
 #include "core/calibration/linearisation_image.h"
-#include "devices/api/device.h"
+#include "runtime/devices/calibration_link.h"
+#include "runtime/devices/device_hub.h"
 
 namespace tt::ui {
 
-DeviceCalibrationProbe::DeviceCalibrationProbe(devices::Device& device, const QString& name, std::optional<int> adcBits)
-    : m_device(device), m_name(name), m_bits(adcBits) {
-    if (!device.deflectionProbe()) throw std::invalid_argument("the device is not a probe mandrel");
+DeviceCalibrationProbe::DeviceCalibrationProbe(runtime::DeviceHub& hub, const QString& deviceId, const QString& name,
+                                               std::optional<int> adcBits)
+    : m_hub(hub), m_deviceId(deviceId), m_name(name), m_bits(adcBits) {
+    const runtime::DeviceView* v = view();
+    if (!v || v->kind != devices::DeviceKind::Probe) throw std::invalid_argument("the device is not a probe mandrel");
+    m_link = hub.calibrationLink(deviceId);
+}
+
+const runtime::DeviceView* DeviceCalibrationProbe::view() const {
+    return m_hub.view(m_deviceId);
 }
 
 std::optional<int> DeviceCalibrationProbe::adcBits() const {
     if (m_bits) return m_bits;
-    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
-    const std::optional<devices::MandrelInfo> info = target ? target->mandrelInfo() : std::nullopt;
+    const runtime::DeviceView* v = view();
+    const std::optional<devices::MandrelInfo> info = v ? v->mandrel : std::nullopt;
     if (info && info->adcBits && *info->adcBits >= core::kMinAdcBits && *info->adcBits <= core::kMaxAdcBits)
         return info->adcBits;
     return std::nullopt;
 }
 
 std::uint8_t DeviceCalibrationProbe::imageFormat() const {
-    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
-    const std::optional<devices::MandrelInfo> info = target ? target->mandrelInfo() : std::nullopt;
+    const runtime::DeviceView* v = view();
+    const std::optional<devices::MandrelInfo> info = v ? v->mandrel : std::nullopt;
     return info && info->protocol < 2 ? core::kTableImageFormatCrc16 : core::kTableImageFormat;
 }
 
 core::DeflectionProbe& DeviceCalibrationProbe::port() {
-    return *m_device.deflectionProbe();
+    return m_link->probe();
 }
 
 bool DeviceCalibrationProbe::canUpload() const {
-    return m_device.tableUploadTarget() != nullptr;
-}
-
-devices::CalibrationStand* DeviceCalibrationProbe::jack() const {
-    devices::CalibrationStand* stand = m_device.calibrationStand();
-    return stand && stand->bendsBar() ? stand : nullptr;
+    const runtime::DeviceView* v = view();
+    return v && v->uploadsTable;
 }
 
 bool DeviceCalibrationProbe::hasJack() const {
-    return jack() != nullptr;
+    const runtime::DeviceView* v = view();
+    return v && v->standBendsBar;
 }
 
 void DeviceCalibrationProbe::bendBar(int plane, double tipDeflectionMm) {
-    devices::CalibrationStand* stand = jack();
-    if (!stand) throw std::invalid_argument("this probe mandrel is not on a stand with a screw jack");
-    stand->bendBar(plane, tipDeflectionMm);
+    if (!hasJack()) throw std::invalid_argument("this probe mandrel is not on a stand with a screw jack");
+    m_hub.bendBar(m_deviceId, plane, tipDeflectionMm);
     m_engaged = true;
 }
 
 void DeviceCalibrationProbe::releaseJack() {
     if (!m_engaged) return;
-    if (devices::CalibrationStand* stand = jack()) stand->release();
+    m_hub.releaseJack(m_deviceId);
     m_engaged = false;
 }
 
 void DeviceCalibrationProbe::startUpload(std::vector<std::uint8_t> image, std::uint16_t version, std::uint32_t crc32c) {
-    devices::TableUploadTarget* target = m_device.tableUploadTarget();
-    if (!target) throw std::invalid_argument("this probe cannot take a table upload");
-    target->uploadTable(std::move(image), version, crc32c);
+    if (!canUpload()) throw std::invalid_argument("this probe cannot take a table upload");
+    m_hub.uploadTable(m_deviceId, image, version, crc32c);
+    m_hub.sync();  // the upload's first status is in the snapshot before the wizard polls it
 }
 
 core::UploadLinkStatus DeviceCalibrationProbe::uploadStatus() const {
-    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
-    if (!target) return {};
-    const devices::TableUploadStatus s = target->uploadStatus();
+    const runtime::DeviceView* v = view();
+    if (!v || !v->uploadsTable) return {};
+    const devices::TableUploadStatus& s = v->upload;
     core::UploadLinkStatus out;
     switch (s.phase) {
         case devices::TableUploadStatus::Phase::Idle:
@@ -88,15 +92,14 @@ core::UploadLinkStatus DeviceCalibrationProbe::uploadStatus() const {
 }
 
 void DeviceCalibrationProbe::requestReadback() {
-    m_device.testConnection();  // a probe answers with its table's version and CRC
+    m_hub.testConnection(m_deviceId);  // a probe answers with its table's version and CRC
 }
 
 std::optional<core::TableReadback> DeviceCalibrationProbe::readback() const {
-    const devices::TableUploadTarget* target = m_device.tableUploadTarget();
-    if (!target) return std::nullopt;
-    const std::optional<devices::MandrelTableInfo> info = target->tableInfo();
-    if (!info) return std::nullopt;
-    return core::TableReadback{info->version, info->crc, info->crc32c, info->sizeBytes, info->valid};
+    const runtime::DeviceView* v = view();
+    if (!v || !v->table) return std::nullopt;
+    const devices::MandrelTableInfo& info = *v->table;
+    return core::TableReadback{info.version, info.crc, info.crc32c, info.sizeBytes, info.valid};
 }
 
 }  // namespace tt::ui

@@ -2,29 +2,32 @@
 
 #include <QString>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "core/calibration/table_upload.h"
 #include "core/ports/deflection_probe.h"
 
-namespace tt::devices {
-class CalibrationStand;
-class Device;
-}  // namespace tt::devices
+namespace tt::runtime {
+class CalibrationLink;
+class DeviceHub;
+struct DeviceView;
+}  // namespace tt::runtime
 
 namespace tt::ui {
 
-/// A configured probe-mandrel device (devices plugin API) as the probe wizard uses it: its
-/// core::DeflectionProbe port for live codes, its TableUploadTarget as the engine's upload port
-/// (chunked upload, read-back of version and CRC), the ADC resolution and image format the mandrel
-/// reports, and the screw jack of its calibration stand when the device offers one. The device
-/// must outlive the adapter; the owner releases a jack the adapter engaged (releaseJack) while the
-/// device is still there.
+/// A configured probe-mandrel device (it lives in the device thread, runtime::DeviceHub) as the probe wizard
+/// uses it from the GUI thread: its live codes through a runtime::CalibrationLink (a relay the device thread
+/// fills), the table upload as the engine's upload port (chunked upload, read-back of version and CRC), the
+/// ADC resolution and image format the mandrel reports (from its snapshot), and the screw jack of its
+/// calibration stand when it sits on one. The hub must outlive the adapter; the owner releases a jack the
+/// adapter engaged (releaseJack) while the device is still there.
 class DeviceCalibrationProbe final : public core::TableUploadPort {
 public:
-    /// Throws std::invalid_argument when the device has no deflection-probe port. Without
-    /// `adcBits` the resolution is the one the mandrel reports (probe protocol 2's DEVICE_INFO).
-    DeviceCalibrationProbe(devices::Device& device, const QString& name, std::optional<int> adcBits = std::nullopt);
+    /// Throws std::invalid_argument when `deviceId` is no probe mandrel of the hub. Without `adcBits` the
+    /// resolution is the one the mandrel reports (probe protocol 2's DEVICE_INFO).
+    DeviceCalibrationProbe(runtime::DeviceHub& hub, const QString& deviceId, const QString& name,
+                           std::optional<int> adcBits = std::nullopt);
     DeviceCalibrationProbe(const DeviceCalibrationProbe&) = delete;
     DeviceCalibrationProbe& operator=(const DeviceCalibrationProbe&) = delete;
 
@@ -49,13 +52,15 @@ public:
     void requestReadback() override;
     std::optional<core::TableReadback> readback() const override;
 
-    /// The device behind the adapter.
-    const devices::Device& device() const { return m_device; }
+    /// The device behind the adapter (its id on the Devices page).
+    const QString& deviceId() const { return m_deviceId; }
 
 private:
-    devices::CalibrationStand* jack() const;
+    const runtime::DeviceView* view() const;
 
-    devices::Device& m_device;
+    runtime::DeviceHub& m_hub;
+    QString m_deviceId;
+    std::shared_ptr<runtime::CalibrationLink> m_link;
     QString m_name;
     std::optional<int> m_bits;
     bool m_engaged = false;

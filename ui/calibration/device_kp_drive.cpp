@@ -2,37 +2,37 @@
 
 #include <stdexcept>
 
-#include "devices/api/device.h"
+#include "runtime/devices/calibration_link.h"
+#include "runtime/devices/device_hub.h"
 
 namespace tt::ui {
 
-DeviceKpDrive::DeviceKpDrive(devices::Device& device, const QString& name) : m_device(device), m_name(name) {
-    if (!device.driveCurrentReadout()) throw std::invalid_argument("the device is not a drive-current read-out");
+DeviceKpDrive::DeviceKpDrive(runtime::DeviceHub& hub, const QString& deviceId, const QString& name)
+    : m_hub(hub), m_deviceId(deviceId), m_name(name) {
+    const runtime::DeviceView* v = hub.view(deviceId);
+    if (!v || v->kind != devices::DeviceKind::DriveCurrent)
+        throw std::invalid_argument("the device is not a drive-current read-out");
+    m_link = hub.calibrationLink(deviceId);
 }
 
 core::DriveCurrentReadout& DeviceKpDrive::readout() {
-    return *m_device.driveCurrentReadout();
-}
-
-devices::CalibrationStand* DeviceKpDrive::jack() const {
-    devices::CalibrationStand* stand = m_device.calibrationStand();
-    return stand && stand->appliesLoad() ? stand : nullptr;
+    return m_link->drive();
 }
 
 bool DeviceKpDrive::hasJack() const {
-    return jack() != nullptr;
+    const runtime::DeviceView* v = m_hub.view(m_deviceId);
+    return v && v->standAppliesLoad;
 }
 
 void DeviceKpDrive::applyLoadN(double loadN) {
-    devices::CalibrationStand* stand = jack();
-    if (!stand) throw std::invalid_argument("this cross feed is not on a stand with a hydraulic jack");
-    stand->applyLoadN(loadN);
+    if (!hasJack()) throw std::invalid_argument("this cross feed is not on a stand with a hydraulic jack");
+    m_hub.applyLoadN(m_deviceId, loadN);
     m_engaged = true;
 }
 
 void DeviceKpDrive::releaseJack() {
     if (!m_engaged) return;
-    if (devices::CalibrationStand* stand = jack()) stand->release();
+    m_hub.releaseJack(m_deviceId);
     m_engaged = false;
 }
 

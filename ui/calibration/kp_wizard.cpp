@@ -23,7 +23,7 @@
 #include "ui/app_state.h"
 #include "ui/calibration/chart_ranges.h"
 #include "ui/calibration/procedure_words.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -122,7 +122,7 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
       m_remove(new QPushButton(this)),
       m_progress(new QProgressBar(this)),
       m_table(new QTableWidget(0, 3, this)),
-      m_chart(new Chart(this)),
+      m_chart(new plot::Chart(this)),
       m_message(wrappedLabel(this)) {
     m_live->setObjectName(QStringLiteral("liveDifference"));
     m_live->setStyleSheet(QStringLiteral("font-size: 16pt; font-weight: bold;"));
@@ -333,7 +333,7 @@ void KpLoadsPage::refresh() {
         ys.push_back(points[i].currentDifferenceA);
     }
     m_chart->setSeries(QStringLiteral("points"), tr("known loads"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
-                       Chart::Style::Points);
+                       plot::Chart::Style::Points);
     showAllWithMargin(*m_chart, xs, ys, true, 0.3);
     m_table->resizeColumnsToContents();
     m_chart->refresh();
@@ -372,8 +372,8 @@ KpFitPage::KpFitPage(KpWizardContext& context, QWidget* parent)
       m_check(new QPushButton(this)),
       m_checkResult(wrappedLabel(this)),
       m_timer(new QTimer(this)),
-      m_chart(new Chart(this)),
-      m_residuals(new Chart(this)) {
+      m_chart(new plot::Chart(this)),
+      m_residuals(new plot::Chart(this)) {
     m_explanation->setObjectName(QStringLiteral("kpExplanation"));
     m_explanation->setTextFormat(Qt::RichText);
     m_checkLoad->setObjectName(QStringLiteral("checkLoadSpin"));
@@ -530,12 +530,12 @@ void KpFitPage::showFit() {
         hi = std::max(hi, p.currentDifferenceA);
     }
     m_chart->setSeries(QStringLiteral("points"), tr("known loads"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
-                       Chart::Style::Points);
+                       plot::Chart::Style::Points);
     m_chart->setSeries(QStringLiteral("fit"), tr("k_p ΔI + offset"), {lo, hi},
                        {f.kpNPerA * lo + f.offsetN, f.kpNPerA * hi + f.offsetN}, QColor(0xc6, 0x28, 0x28));
     showAllWithMargin(*m_chart, xs, ys, true, 0.3);
     m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), ys, f.residualsN, QColor(0x2e, 0x7d, 0x32),
-                           Chart::Style::Points);
+                           plot::Chart::Style::Points);
     showAllWithMargin(*m_residuals, ys, f.residualsN, true, 0.5);
     m_chart->refresh();
     m_residuals->refresh();

@@ -24,9 +24,11 @@ class CalibrationStore;
 class ToolStore;
 }  // namespace tt::storage
 
-namespace tt::ui {
-
+namespace tt::plot {
 class Chart;
+}  // namespace tt::plot
+
+namespace tt::ui {
 
 /// What the k_p wizard has gathered: the procedure (loads, fit, checks) and what the wizard keeps
 /// besides; owned by the Calibration page (Back/Cancel keep it).
@@ -120,7 +122,7 @@ private:
     QPushButton* m_remove;
     QProgressBar* m_progress;
     QTableWidget* m_table;
-    Chart* m_chart;
+    plot::Chart* m_chart;
     QLabel* m_message;
 };
 
@@ -155,8 +157,8 @@ private:
     QPushButton* m_check;
     QLabel* m_checkResult;
     QTimer* m_timer;
-    Chart* m_chart;
-    Chart* m_residuals;
+    plot::Chart* m_chart;
+    plot::Chart* m_residuals;
 };
 
 /// 4. Save the calibration and write k_p into the chosen tools (audited with the operator's name).

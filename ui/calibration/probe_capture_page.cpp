@@ -14,7 +14,7 @@
 #include "ui/calibration/chart_ranges.h"
 #include "ui/calibration/probe_wizard.h"
 #include "ui/calibration/procedure_words.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 
@@ -40,7 +40,7 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
       m_progress(new QProgressBar(this)),
       m_remove(new QPushButton(this)),
       m_table(new QTableWidget(0, 3, this)),
-      m_chart(new Chart(this)),
+      m_chart(new plot::Chart(this)),
       m_message(wrappedLabel(this)) {
     m_live->setObjectName(QStringLiteral("liveCode"));
     m_live->setStyleSheet(QStringLiteral("font-size: 18pt; font-weight: bold;"));
@@ -180,7 +180,7 @@ void ProbeCapturePage::refreshState() {
     m_repeat->setEnabled(p && !proc.capturing() && !proc.points().empty());
     if (code)
         m_chart->setSeries(QStringLiteral("live"), tr("now"), {m_reference->value()}, {*code}, QColor(0xf0, 0xa0, 0x30),
-                           Chart::Style::Points);
+                           plot::Chart::Style::Points);
     else
         m_chart->removeSeries(QStringLiteral("live"));  // no stale "now" while the probe is silent
     m_chart->refresh();
@@ -314,12 +314,12 @@ void ProbeCapturePage::refreshPoints() {
         (p.saturated ? sy : ys).push_back(p.adcCode);
     }
     m_chart->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
-                       Chart::Style::Points);
+                       plot::Chart::Style::Points);
     if (sx.empty())
         m_chart->removeSeries(QStringLiteral("saturated"));
     else
         m_chart->setSeries(QStringLiteral("saturated"), tr("ADC saturated"), sx, sy, kProblemColour,
-                           Chart::Style::Points);
+                           plot::Chart::Style::Points);
     std::vector<double> allX = xs, allY = ys;
     allX.insert(allX.end(), sx.begin(), sx.end());
     allY.insert(allY.end(), sy.begin(), sy.end());

@@ -11,9 +11,12 @@ class QPushButton;
 class QTableWidget;
 class QTimer;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 struct ProbeWizardContext;
 
 /// 3. Capture points: the live ADC code of the chosen plane, the reference typed from the dial
@@ -79,7 +82,7 @@ private:
     QProgressBar* m_progress;
     QPushButton* m_remove;
     QTableWidget* m_table;
-    Chart* m_chart;
+    plot::Chart* m_chart;
     QLabel* m_message;
 };
 

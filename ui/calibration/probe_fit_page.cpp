@@ -9,7 +9,7 @@
 #include "ui/calibration/chart_ranges.h"
 #include "ui/calibration/probe_wizard.h"
 #include "ui/calibration/procedure_words.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 
@@ -20,8 +20,8 @@ ProbeFitPage::ProbeFitPage(ProbeWizardContext& context, QWidget* parent)
       m_degree(new QComboBox(this)),
       m_choice(wrappedLabel(this)),
       m_explanation(wrappedLabel(this)),
-      m_characteristic(new Chart(this)),
-      m_residuals(new Chart(this)) {
+      m_characteristic(new plot::Chart(this)),
+      m_residuals(new plot::Chart(this)) {
     m_degree->setObjectName(QStringLiteral("degreeCombo"));
     m_explanation->setObjectName(QStringLiteral("fitExplanation"));
     m_explanation->setTextFormat(Qt::RichText);
@@ -119,7 +119,7 @@ void ProbeFitPage::showFit() {
             ys.push_back(p.adcCode);
         }
         m_characteristic->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
-                                    Chart::Style::Points);
+                                    plot::Chart::Style::Points);
         std::vector<double> cx, cy;
         const double lo = fit.calibratedMinUm, hi = fit.calibratedMaxUm;
         for (int i = 0; i <= 100; ++i) {
@@ -128,12 +128,12 @@ void ProbeFitPage::showFit() {
             cy.push_back(fit.codeAt(x));
         }
         m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(fit.degree), cx, cy,
-                                    QColor(0xc6, 0x28, 0x28), Chart::Style::Line);
+                                    QColor(0xc6, 0x28, 0x28), plot::Chart::Style::Line);
         showAllWithMargin(*m_characteristic, xs, ys, false, 0.3);
         m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, fit.residualsUm,
-                               QColor(0x2e, 0x7d, 0x32), Chart::Style::Points);
+                               QColor(0x2e, 0x7d, 0x32), plot::Chart::Style::Points);
         m_residuals->setSeries(QStringLiteral("zero"), tr("zero"), {lo, hi}, {0.0, 0.0}, QColor(0x6b, 0x77, 0x85),
-                               Chart::Style::Line);
+                               plot::Chart::Style::Line);
         showAllWithMargin(*m_residuals, xs, fit.residualsUm, true, 0.5);
     }
     m_characteristic->refresh();

@@ -5,9 +5,12 @@
 class QComboBox;
 class QLabel;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 struct ProbeWizardContext;
 
 /// 4. Fit: the characteristic with degree 2, 3, 4 or chosen by cross-validation, the reason for
@@ -37,8 +40,8 @@ private:
     QComboBox* m_degree;
     QLabel* m_choice;
     QLabel* m_explanation;
-    Chart* m_characteristic;
-    Chart* m_residuals;
+    plot::Chart* m_characteristic;
+    plot::Chart* m_residuals;
 };
 
 }  // namespace tt::ui

@@ -77,7 +77,7 @@ QString recordTuningChange(AppContext& context, const core::RunToRunSetup& befor
     const QString record =
         QStringLiteral("controller tuning applied by %1: %2")
             .arg(who.isEmpty() ? QStringLiteral("(no operator)") : who, describeTuningChange(before, after));
-    qCInfo(lcLoop).noquote() << record;
+    qCInfo(lcUi).noquote() << record;
     return record;
 }
 

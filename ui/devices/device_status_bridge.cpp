@@ -1,31 +1,31 @@
 #include "ui/devices/device_status_bridge.h"
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "ui/app_state.h"
 
 namespace tt::ui {
 
-DeviceStatusBridge::DeviceStatusBridge(devices::DeviceManager& manager, AppState& state, QObject* parent)
-    : QObject(parent), m_manager(manager), m_state(state) {
-    connect(&manager, &devices::DeviceManager::devicesChanged, this, &DeviceStatusBridge::update);
-    connect(&manager, &devices::DeviceManager::deviceChanged, this, &DeviceStatusBridge::update);
+DeviceStatusBridge::DeviceStatusBridge(runtime::DeviceHub& hub, AppState& state, QObject* parent)
+    : QObject(parent), m_hub(hub), m_state(state) {
+    connect(&hub, &runtime::DeviceHub::devicesChanged, this, &DeviceStatusBridge::update);
+    connect(&hub, &runtime::DeviceHub::deviceChanged, this, &DeviceStatusBridge::update);
     update();
 }
 
 void DeviceStatusBridge::update() {
-    const devices::DeviceSummary summary = m_manager.summary();
+    const runtime::DeviceSummary summary = m_hub.summary();
     AppState::Tone tone = AppState::Tone::Idle;
     switch (summary.tone) {
-        case devices::DeviceSummary::Tone::Ok:
+        case runtime::DeviceSummary::Tone::Ok:
             tone = AppState::Tone::Ok;
             break;
-        case devices::DeviceSummary::Tone::Warning:
+        case runtime::DeviceSummary::Tone::Warning:
             tone = AppState::Tone::Warning;
             break;
-        case devices::DeviceSummary::Tone::Fault:
+        case runtime::DeviceSummary::Tone::Fault:
             tone = AppState::Tone::Fault;
             break;
-        case devices::DeviceSummary::Tone::None:
+        case runtime::DeviceSummary::Tone::None:
             break;
     }
     m_state.setDevices(tone, summary.text);

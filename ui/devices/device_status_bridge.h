@@ -2,8 +2,8 @@
 
 #include <QObject>
 
-namespace tt::devices {
-class DeviceManager;
+namespace tt::runtime {
+class DeviceHub;
 }
 
 namespace tt::ui {
@@ -16,12 +16,12 @@ class AppState;
 class DeviceStatusBridge : public QObject {
     Q_OBJECT
 public:
-    DeviceStatusBridge(devices::DeviceManager& manager, AppState& state, QObject* parent = nullptr);
+    DeviceStatusBridge(runtime::DeviceHub& hub, AppState& state, QObject* parent = nullptr);
     /// Writes the current summary into the AppState.
     void update();
 
 private:
-    devices::DeviceManager& m_manager;
+    runtime::DeviceHub& m_hub;
     AppState& m_state;
 };
 

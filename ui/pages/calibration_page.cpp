@@ -12,7 +12,7 @@
 #include "core/calibration/linearisation_image.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/device_kp_drive.h"
 #include "ui/calibration/probe_wizard.h"
@@ -136,16 +136,16 @@ void CalibrationPage::showEvent(QShowEvent* event) {
 void CalibrationPage::watchDevices() {
     if (m_devices) disconnect(m_devices, nullptr, this, nullptr);
     m_devices = context().devices;
-    if (m_devices) connect(m_devices, &devices::DeviceManager::devicesChanged, this, &CalibrationPage::adoptDevices);
+    if (m_devices) connect(m_devices, &runtime::DeviceHub::devicesChanged, this, &CalibrationPage::adoptDevices);
 }
 
 void CalibrationPage::adoptDevices() {
     // Only the probes and drives matter: a changed gauge or CNC output leaves the wizards alone.
-    QList<QPair<QString, const void*>> now;
+    QList<QPair<QString, quintptr>> now;  // id and instance of every probe and drive
     if (m_devices)
         for (devices::DeviceKind kind : {devices::DeviceKind::Probe, devices::DeviceKind::DriveCurrent})
             for (const QString& id : m_devices->devicesOfKind(kind))
-                now.append({id, m_devices->device(id)});
+                now.append({id, m_devices->view(id)->instance});
     if (now == m_adopted) return;
     const bool wizardOpen = !overviewShown();
     releaseJacks();
@@ -155,13 +155,12 @@ void CalibrationPage::adoptDevices() {
     m_adopted = now;
     for (const auto& adopted : now) {
         const QString& id = adopted.first;
-        const devices::DeviceEntry* e = m_devices->entry(id);
-        devices::Device* device = m_devices->device(id);
-        if (!e || !device) continue;
-        if (e->kind == devices::DeviceKind::Probe && device->deflectionProbe())
-            m_deviceProbes.push_back(std::make_unique<DeviceCalibrationProbe>(*device, e->name));
-        else if (e->kind == devices::DeviceKind::DriveCurrent && device->driveCurrentReadout())
-            m_deviceDrives.push_back(std::make_unique<DeviceKpDrive>(*device, e->name));
+        const runtime::DeviceView* e = m_devices->view(id);
+        if (!e) continue;
+        if (e->kind == devices::DeviceKind::Probe)
+            m_deviceProbes.push_back(std::make_unique<DeviceCalibrationProbe>(*m_devices, id, e->name));
+        else if (e->kind == devices::DeviceKind::DriveCurrent)
+            m_deviceDrives.push_back(std::make_unique<DeviceKpDrive>(*m_devices, id, e->name));
     }
     if (wizardOpen) {
         showOverview();
@@ -209,14 +208,11 @@ bool CalibrationPage::overviewShown() const {
 
 void CalibrationPage::releaseJacks() {
     // Only of the devices still there: a removed one took its stand with it.
-    QList<const devices::Device*> present;
-    if (m_devices)
-        for (const QString& id : m_devices->deviceIds())
-            present << m_devices->device(id);
+    const QStringList present = m_devices ? m_devices->deviceIds() : QStringList();
     for (const auto& p : m_deviceProbes)
-        if (present.contains(&p->device())) p->releaseJack();
+        if (present.contains(p->deviceId())) p->releaseJack();
     for (const auto& d : m_deviceDrives)
-        if (present.contains(&d->device())) d->releaseJack();
+        if (present.contains(d->deviceId())) d->releaseJack();
 }
 
 void CalibrationPage::showOverview() {

@@ -14,8 +14,8 @@ class QPushButton;
 class QStackedWidget;
 class QTableWidget;
 
-namespace tt::devices {
-class DeviceManager;
+namespace tt::runtime {
+class DeviceHub;
 }
 
 namespace tt::storage {
@@ -83,10 +83,10 @@ private:
     storage::CalibrationStore* m_calibrations = nullptr;  ///< from the application's data access object
     storage::ToolStore* m_tools = nullptr;
     QString m_storeError;
-    QPointer<devices::DeviceManager> m_devices;
+    QPointer<runtime::DeviceHub> m_devices;
     std::vector<std::unique_ptr<DeviceCalibrationProbe>> m_deviceProbes;  ///< adapters of the devices' probes
     std::vector<std::unique_ptr<DeviceKpDrive>> m_deviceDrives;           ///< adapters of the devices' drives
-    QList<QPair<QString, const void*>> m_adopted;                         ///< the devices adapted (id, instance)
+    QList<QPair<QString, quintptr>> m_adopted;                            ///< the devices adapted (id, instance)
     ProbeCalibrationSession m_probeSession;
     KpSession m_kpSession;
 

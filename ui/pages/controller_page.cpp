@@ -22,7 +22,7 @@
 #include "ui/controller/controller_tuning.h"
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -234,9 +234,9 @@ QWidget* ControllerPage::buildCharts() {
     auto* column = new QWidget;
     auto* v = new QVBoxLayout(column);
     v->setContentsMargins(0, 0, 0, 0);
-    m_stepChart = new Chart;
-    m_sensitivityChart = new Chart;
-    for (Chart* c : {m_stepChart, m_sensitivityChart}) {
+    m_stepChart = new plot::Chart;
+    m_sensitivityChart = new plot::Chart;
+    for (plot::Chart* c : {m_stepChart, m_sensitivityChart}) {
         c->setMinimumHeight(220);
         c->setMinimumWidth(220);
         c->setLegendBelow(2);
@@ -402,9 +402,9 @@ void ControllerPage::showCharts(const TuningResult& r) {
     std::vector<double> parts(p.stepLqg.size());
     for (std::size_t k = 0; k < parts.size(); ++k)
         parts[k] = static_cast<double>(k);
-    m_stepChart->setSeries(QStringLiteral("open"), tr("open"), parts, p.stepOpen, kOpenColour, Chart::Style::Steps);
-    m_stepChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), parts, p.stepEwma, kEwmaColour, Chart::Style::Steps);
-    m_stepChart->setSeries(QStringLiteral("lqg"), tr("LQG"), parts, p.stepLqg, kLqgColour, Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("open"), tr("open"), parts, p.stepOpen, kOpenColour, plot::Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), parts, p.stepEwma, kEwmaColour, plot::Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("lqg"), tr("LQG"), parts, p.stepLqg, kLqgColour, plot::Chart::Style::Steps);
     m_stepChart->rescale(true);
     m_sensitivityChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), p.frequencyRadPerPart, p.sensitivityEwma,
                                   kEwmaColour);

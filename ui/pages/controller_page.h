@@ -17,9 +17,12 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 class TuningWorker;
 class WeightEditor;
 struct TuningResult;
@@ -134,8 +137,8 @@ private:
     QLabel* m_timing = nullptr;
     QPushButton* m_apply = nullptr;
     QPushButton* m_revert = nullptr;
-    Chart* m_stepChart = nullptr;
-    Chart* m_sensitivityChart = nullptr;
+    plot::Chart* m_stepChart = nullptr;
+    plot::Chart* m_sensitivityChart = nullptr;
 };
 
 }  // namespace tt::ui

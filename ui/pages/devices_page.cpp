@@ -19,7 +19,8 @@
 #include <QVBoxLayout>
 #include <stdexcept>
 
-#include "devices/api/device_manager.h"
+#include "devices/api/settings_schema.h"
+#include "runtime/devices/device_hub.h"
 #include "ui/app_state.h"
 #include "ui/auth/audit_trail.h"
 #include "ui/devices/device_status_bridge.h"
@@ -111,17 +112,16 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
       m_faultUnplugged(new QCheckBox(this)),
       m_statsTitle(new QLabel(this)),
       m_stats(new QLabel(this)) {
-    m_manager = context.devices;
-    if (!m_manager)
-        throw std::invalid_argument("the Devices page needs the application's device manager (AppContext::devices)");
-    if (context.state) m_bridge = new DeviceStatusBridge(*m_manager, *context.state, this);
+    m_hub = context.devices;
+    if (!m_hub) throw std::invalid_argument("the Devices page needs the application's devices (AppContext::devices)");
+    if (context.state) m_bridge = new DeviceStatusBridge(*m_hub, *context.state, this);
 
     buildUi();
     fillTypes();
     reloadList();
 
-    connect(m_manager, &devices::DeviceManager::devicesChanged, this, &DevicesPage::reloadList);
-    connect(m_manager, &devices::DeviceManager::deviceChanged, this, [this] {
+    connect(m_hub, &runtime::DeviceHub::devicesChanged, this, &DevicesPage::reloadList);
+    connect(m_hub, &runtime::DeviceHub::deviceChanged, this, [this] {
         updateListTones();
         refreshStatus();
     });
@@ -145,7 +145,11 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
 
     auto bindFault = [this](QCheckBox* box, bool devices::FaultSwitches::*flag) {
         connect(box, &QCheckBox::toggled, this, [this, flag](bool on) {
-            if (devices::Device* d = selectedDevice(); d && d->faultSwitches()) d->faultSwitches()->*flag = on;
+            const runtime::DeviceView* d = selectedDevice();
+            if (!d || !d->faults) return;
+            devices::FaultSwitches faults = *d->faults;
+            faults.*flag = on;
+            m_hub->setFaults(d->id, faults);
         });
     };
     bindFault(m_faultSilent, &devices::FaultSwitches::silent);
@@ -161,7 +165,7 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
 
 DevicesPage::~DevicesPage() {
     m_testTimer.stop();
-    if (m_testDevice) m_testDevice->close();
+    if (m_testTarget == runtime::kTrialDeviceId) m_hub->endTrial();
 }
 
 QString DevicesPage::title() const {
@@ -295,7 +299,7 @@ void DevicesPage::buildUi() {
 }
 
 QString DevicesPage::typeName(const QString& pluginId, DeviceKind kind) const {
-    const devices::DevicePlugin* plugin = m_manager->plugin(pluginId);
+    const devices::DevicePlugin* plugin = m_hub->plugin(pluginId);
     return tr("%1 — %2").arg(devices::kindName(kind), plugin ? plugin->displayName() : pluginId);
 }
 
@@ -303,7 +307,7 @@ void DevicesPage::fillTypes() {
     const int current = m_newType->currentIndex();
     m_newType->clear();
     for (DeviceKind kind : devices::allDeviceKinds())
-        for (devices::DevicePlugin* plugin : m_manager->plugins())
+        for (devices::DevicePlugin* plugin : m_hub->plugins())
             if (plugin->kinds().contains(kind))
                 m_newType->addItem(typeName(plugin->pluginId(), kind),
                                    QStringList{plugin->pluginId(), devices::kindKey(kind)});
@@ -314,7 +318,7 @@ void DevicesPage::reloadList() {
     const QString keep = m_selection ? m_selection->deviceId : QString();
     m_list->blockSignals(true);
     m_list->clear();
-    for (const QString& id : m_manager->deviceIds()) {
+    for (const QString& id : m_hub->deviceIds()) {
         auto* item = new QListWidgetItem(m_list);
         item->setData(Qt::UserRole, id);
     }
@@ -326,7 +330,7 @@ void DevicesPage::reloadList() {
     for (int i = 0; i < m_list->count(); ++i)
         if (m_list->item(i)->data(Qt::UserRole).toString() == keep && m_selection) m_list->setCurrentRow(i);
     m_list->blockSignals(false);
-    if (m_selection && !m_selection->deviceId.isEmpty() && !m_manager->entry(m_selection->deviceId)) {
+    if (m_selection && !m_selection->deviceId.isEmpty() && !m_hub->view(m_selection->deviceId)) {
         m_selection.reset();
         showSelection();
     }
@@ -341,9 +345,9 @@ void DevicesPage::updateListTones() {
             item->setIcon(toneIcon(QStringLiteral("idle")));
             continue;
         }
-        const devices::DeviceEntry* e = m_manager->entry(id);
+        const runtime::DeviceView* e = m_hub->view(id);
         if (!e) continue;
-        const DeviceState state = e->device->health().state;
+        const DeviceState state = e->health.state;
         item->setText(QStringLiteral("%1\n%2 · %3").arg(e->name, devices::kindName(e->kind), [&] {
             switch (state) {
                 case DeviceState::Ready:
@@ -361,13 +365,13 @@ void DevicesPage::updateListTones() {
     }
 }
 
-devices::Device* DevicesPage::selectedDevice() const {
+const runtime::DeviceView* DevicesPage::selectedDevice() const {
     if (!m_selection || m_selection->deviceId.isEmpty()) return nullptr;
-    return m_manager->device(m_selection->deviceId);
+    return m_hub->view(m_selection->deviceId);
 }
 
 void DevicesPage::selectDevice(const QString& id) {
-    const devices::DeviceEntry* e = m_manager->entry(id);
+    const runtime::DeviceView* e = m_hub->view(id);
     if (!e) return;
     const bool hadDraft = m_selection && m_selection->deviceId.isEmpty();
     m_selection = Selection{id, e->pluginId, e->kind};
@@ -403,14 +407,14 @@ void DevicesPage::showSelection() {
     }
     m_detailStack->setCurrentIndex(1);
     m_remove->setEnabled(true);
-    const devices::DevicePlugin* plugin = m_manager->plugin(m_selection->pluginId);
+    const devices::DevicePlugin* plugin = m_hub->plugin(m_selection->pluginId);
     m_form->setSchema(plugin ? plugin->settingsSchema(m_selection->kind) : devices::SettingsSchema{}, m_savedValues);
     m_name->setText(m_savedName);
     m_typeText->setText(typeName(m_selection->pluginId, m_selection->kind));
-    devices::Device* device = selectedDevice();
-    m_faults->setVisible(device && device->faultSwitches());
-    if (device && device->faultSwitches()) {
-        const devices::FaultSwitches& f = *device->faultSwitches();
+    const runtime::DeviceView* device = selectedDevice();
+    m_faults->setVisible(device && device->faults);
+    if (device && device->faults) {
+        const devices::FaultSwitches f = *device->faults;
         const QList<std::pair<QCheckBox*, bool>> boxes{{m_faultSilent, f.silent},
                                                        {m_faultNoisy, f.noisy},
                                                        {m_faultStuck, f.stuck},
@@ -427,7 +431,7 @@ void DevicesPage::showSelection() {
 
 void DevicesPage::validateForm() {
     if (!m_selection) return;
-    const devices::DevicePlugin* plugin = m_manager->plugin(m_selection->pluginId);
+    const devices::DevicePlugin* plugin = m_hub->plugin(m_selection->pluginId);
     if (!plugin) return;
     const QList<devices::SettingIssue> issues =
         plugin->validate(m_selection->kind, m_form->values(), devices::Validation::Full);
@@ -458,12 +462,12 @@ void DevicesPage::apply() {
     try {
         trail.require(core::auth::Permission::EditSettings);
         if (m_selection->deviceId.isEmpty()) {
-            const QString id = m_manager->addDevice(m_selection->pluginId, m_selection->kind, m_name->text(), values);
+            const QString id = m_hub->addDevice(m_selection->pluginId, m_selection->kind, m_name->text(), values);
             m_selection->deviceId = id;
             reloadList();
             selectDevice(id);
         } else {
-            m_manager->updateDevice(m_selection->deviceId, m_name->text(), values);
+            m_hub->updateDevice(m_selection->deviceId, m_name->text(), values);
             selectDevice(m_selection->deviceId);
         }
     } catch (const std::exception& e) {  // a refused value, or a role without EditSettings
@@ -472,7 +476,7 @@ void DevicesPage::apply() {
         return;
     }
     trail.recordValues(QStringLiteral("setting"), QStringLiteral("device ") + m_selection->deviceId, before, after);
-    if (devices::Device* d = selectedDevice()) d->open();
+    if (const runtime::DeviceView* d = selectedDevice()) m_hub->open(d->id);
     saveSettings();
     refreshStatus();
 }
@@ -492,8 +496,9 @@ void DevicesPage::removeSelected() {
         showSelection();
         return;
     }
-    const devices::DeviceEntry* e = m_manager->entry(m_selection->deviceId);
-    if (!e) return;
+    const runtime::DeviceView* view = m_hub->view(m_selection->deviceId);
+    if (!view) return;
+    const runtime::DeviceView e = *view;  // the snapshot may be replaced while the question is asked
     AuditTrail trail(context());
     try {
         trail.require(core::auth::Permission::EditSettings);
@@ -502,16 +507,16 @@ void DevicesPage::removeSelected() {
         m_problems->setVisible(true);
         return;
     }
-    QVariantMap before = e->settings;
-    before.insert(QStringLiteral("name"), e->name);
+    QVariantMap before = e.settings;
+    before.insert(QStringLiteral("name"), e.name);
     if (context().prompt &&
         context().prompt->ask(this, tr("Remove device"),
-                              tr("Remove %1? Its settings are deleted; the loop can no longer use it.").arg(e->name)) !=
+                              tr("Remove %1? Its settings are deleted; the loop can no longer use it.").arg(e.name)) !=
             Prompt::Answer::Yes)
         return;
     const QString id = m_selection->deviceId;
     m_selection.reset();
-    m_manager->removeDevice(id);
+    m_hub->removeDevice(id);
     trail.recordValues(QStringLiteral("setting"), QStringLiteral("device ") + id, before, {});
     saveSettings();
     if (m_list->count() > 0) m_list->setCurrentRow(0);
@@ -520,7 +525,7 @@ void DevicesPage::removeSelected() {
 
 void DevicesPage::testConnection() {
     if (!m_selection) return;
-    devices::DevicePlugin* plugin = m_manager->plugin(m_selection->pluginId);
+    devices::DevicePlugin* plugin = m_hub->plugin(m_selection->pluginId);
     if (!plugin) return;
     const QVariantMap values = m_form->values();
     const QList<devices::SettingIssue> issues = plugin->validate(m_selection->kind, values, devices::Validation::Full);
@@ -531,7 +536,7 @@ void DevicesPage::testConnection() {
         m_testResult->show();
         return;
     }
-    devices::Device* live = selectedDevice();
+    const runtime::DeviceView* live = selectedDevice();
     const QVariantMap saved = devices::withDefaults(plugin->settingsSchema(m_selection->kind), m_savedValues);
     if (const QString refusal = testRefusedByTheLoop(live && values == saved); !refusal.isEmpty()) {
         setTone(m_testResult, QStringLiteral("fault"));
@@ -539,32 +544,33 @@ void DevicesPage::testConnection() {
         m_testResult->show();
         return;
     }
-    if (m_testDevice) m_testDevice->close();
-    m_testDevice.reset();
+    endTest();
     if (live && values == saved) {
-        m_testTarget = live;  // the device as it runs
+        m_testTarget = live->id;  // the device as it runs
     } else {
-        // The settings as typed, on a device of their own; the running one lets go of the port.
-        if (live) {
-            live->close();
-            m_reopenAfterTest = m_selection->deviceId;
-        }
+        // The settings as typed, on a trial instance of their own; the running one lets go of the port.
         try {
-            m_testDevice = plugin->create(m_selection->kind, values, devices::DeviceContext{&m_manager->clock()});
+            m_hub->startTrial(m_selection->pluginId, m_selection->kind, values, live ? live->id : QString());
         } catch (const std::invalid_argument& e) {
             finishTest(false, QString::fromStdString(e.what()));
             return;
         }
-        m_testTarget = m_testDevice.get();
+        m_testTarget = runtime::kTrialDeviceId;
     }
     setTone(m_testResult, QStringLiteral("warn"));
     m_testResult->setText(tr("Testing the connection…"));
     m_testResult->show();
     m_test->setEnabled(false);
-    m_testStartValue = m_testTarget->liveValue();
-    m_testTarget->testConnection();
+    const runtime::DeviceView* target = m_hub->view(m_testTarget);
+    m_testStartValue = target ? target->liveValue : QString();
+    m_hub->testConnection(m_testTarget);
     m_testClock.start();
     m_testTimer.start();
+}
+
+void DevicesPage::endTest() {
+    if (m_testTarget == runtime::kTrialDeviceId) m_hub->endTrial();
+    m_testTarget.clear();
 }
 
 QString DevicesPage::testRefusedByTheLoop(bool testsTheRunningDevice) const {
@@ -584,10 +590,11 @@ QString DevicesPage::testRefusedByTheLoop(bool testsTheRunningDevice) const {
 }
 
 void DevicesPage::pollTest() {
-    if (!m_testTarget) return;
-    const core::DeviceHealth h = m_testTarget->health();
+    const runtime::DeviceView* target = m_testTarget.isEmpty() ? nullptr : m_hub->view(m_testTarget);
+    if (!target) return;
+    const core::DeviceHealth h = target->health;
     const QString message = QString::fromStdString(h.message);
-    const QString value = m_testTarget->liveValue();
+    const QString value = target->liveValue;
     if (h.state == DeviceState::Error) {
         finishTest(false, tr("No connection: %1").arg(message));
     } else if (h.state == DeviceState::Ready &&
@@ -604,19 +611,11 @@ void DevicesPage::finishTest(bool ok, const QString& text) {
     setTone(m_testResult, ok ? QStringLiteral("ok") : QStringLiteral("fault"));
     m_testResult->setText(text);
     m_testResult->show();
-    if (m_testDevice) {
-        m_testDevice->close();
-        m_testDevice.reset();
-    }
-    m_testTarget = nullptr;
-    if (!m_reopenAfterTest.isEmpty()) {
-        if (devices::Device* d = m_manager->device(m_reopenAfterTest)) d->open();
-        m_reopenAfterTest.clear();
-    }
+    endTest();
 }
 
 void DevicesPage::refreshStatus() {
-    devices::Device* device = selectedDevice();
+    const runtime::DeviceView* device = selectedDevice();
     if (!device) {
         setTone(m_stateBadge, QStringLiteral("idle"));
         m_stateBadge->setText(m_selection ? tr("Not added") : QString());
@@ -628,7 +627,7 @@ void DevicesPage::refreshStatus() {
         m_statsTitle->setVisible(false);
         return;
     }
-    const core::DeviceHealth h = device->health();
+    const core::DeviceHealth h = device->health;
     setTone(m_stateBadge, toneOf(h.state));
     switch (h.state) {
         case DeviceState::Ready:
@@ -646,26 +645,26 @@ void DevicesPage::refreshStatus() {
     }
     m_stateMessage->setText(QString::fromStdString(h.message));
     // A "Connected" from an earlier test is stale once the device is not ready (unplugged, refused).
-    if (!m_testTarget && h.state != DeviceState::Ready && m_testResult->property("tone").toString() == u"ok")
+    if (m_testTarget.isEmpty() && h.state != DeviceState::Ready && m_testResult->property("tone").toString() == u"ok")
         m_testResult->hide();
-    const QString value = device->liveValue();
+    const QString value = device->liveValue;
     setTone(m_live, h.state == DeviceState::Ready ? QStringLiteral("ok") : QStringLiteral("stale"));
     m_live->setText(value.isEmpty()                 ? QStringLiteral("—")
                     : h.state == DeviceState::Ready ? value
                                                     : tr("%1 (last value)").arg(value));
-    m_lastError->setText(device->lastError().isEmpty() ? tr("none") : device->lastError());
+    m_lastError->setText(device->lastError.isEmpty() ? tr("none") : device->lastError);
     QString table = QStringLiteral("<table cellspacing='0' cellpadding='3'>");
-    for (const devices::DeviceStatistic& s : device->statistics())
+    for (const devices::DeviceStatistic& s : device->statistics)
         table += QStringLiteral("<tr><td>%1</td><td align='right'><b>%2</b></td></tr>")
                      .arg(s.label.toHtmlEscaped(), s.value.toHtmlEscaped());
     table += QStringLiteral("</table>");
     m_stats->setText(table);
-    m_statsTitle->setVisible(!device->statistics().isEmpty());
+    m_statsTitle->setVisible(!device->statistics.isEmpty());
 }
 
 void DevicesPage::saveSettings() {
     QSettings settings;
-    m_manager->save(settings);
+    m_hub->save(settings);
 }
 
 void DevicesPage::retranslate() {
@@ -698,7 +697,7 @@ void DevicesPage::retranslate() {
     // The plugins' texts come translated when asked for: the schema again for the form (what is
     // typed stays), the type line, the form's messages and the status bar's device summary.
     if (m_selection) {
-        if (const devices::DevicePlugin* plugin = m_manager->plugin(m_selection->pluginId)) {
+        if (const devices::DevicePlugin* plugin = m_hub->plugin(m_selection->pluginId)) {
             m_form->setTexts(plugin->settingsSchema(m_selection->kind));
             m_typeText->setText(typeName(m_selection->pluginId, m_selection->kind));
             validateForm();

@@ -19,9 +19,10 @@ class QListWidget;
 class QPushButton;
 class QStackedWidget;
 
-namespace tt::devices {
-class DeviceManager;
-}
+namespace tt::runtime {
+class DeviceHub;
+struct DeviceView;
+}  // namespace tt::runtime
 
 namespace tt::ui {
 
@@ -34,8 +35,9 @@ class SettingsForm;
 /// types), adding and removing them, each one's settings as a form drawn from its plugin's
 /// schema with the problems shown under the fields, Test connection, and the live value, state,
 /// last error and counters. Settings persist (QSettings) when applied; Revert undoes unapplied
-/// edits. Uses the application's DeviceManager (AppContext::devices, required: std::invalid_argument
-/// without one; app/gui.cpp makes it before the window). Keeps the device badge and status bar up to date.
+/// edits. Uses the application's devices (AppContext::devices, a runtime::DeviceHub: the instances live in
+/// the device thread, the page sees their snapshots; required: std::invalid_argument without one; app/gui.cpp
+/// makes it before the window). Keeps the device badge and status bar up to date.
 class DevicesPage : public Page {
     Q_OBJECT
 public:
@@ -45,7 +47,7 @@ public:
     void retranslate() override;
     QString unappliedEdits() const override;
 
-    devices::DeviceManager& manager() { return *m_manager; }
+    runtime::DeviceHub& hub() { return *m_hub; }
     /// The form of the device shown (for tests).
     SettingsForm& form() { return *m_form; }
 
@@ -71,22 +73,22 @@ private:
     QString testRefusedByTheLoop(bool testsTheRunningDevice) const;
     void pollTest();
     void finishTest(bool ok, const QString& text);
+    /// Ends a connection test: the trial instance goes, the instance it closed opens again.
+    void endTest();
     void refreshStatus();
     void updateListTones();
     void saveSettings();
-    devices::Device* selectedDevice() const;
+    const runtime::DeviceView* selectedDevice() const;
     QString typeName(const QString& pluginId, devices::DeviceKind kind) const;
 
-    devices::DeviceManager* m_manager = nullptr;
+    runtime::DeviceHub* m_hub = nullptr;
     DeviceStatusBridge* m_bridge = nullptr;
     std::optional<Selection> m_selection;
     QVariantMap m_savedValues;
     QString m_savedName;
 
     // Test connection.
-    std::unique_ptr<devices::Device> m_testDevice;
-    devices::Device* m_testTarget = nullptr;
-    QString m_reopenAfterTest;
+    QString m_testTarget;  ///< the id of the instance tested (the trial one for typed settings); empty: none
     QString m_testStartValue;  ///< the live value before the test: a new one proves the device answers
     QTimer m_testTimer;
     QElapsedTimer m_testClock;

@@ -12,7 +12,7 @@
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
 #include "ui/reports/report_filter_bar.h"
-#include "ui/reports/report_pdf.h"
+#include "reports/report_pdf.h"
 #include "ui/reports/report_views.h"
 
 namespace tt::ui {
@@ -64,8 +64,8 @@ ReportsPage::ReportsPage(AppContext& context, QWidget* parent)
     layout->addLayout(actions);
     layout->addWidget(m_stack, 1);
 
-    connect(&m_task, &ReportTask::progress, m_progress, &QProgressBar::setValue);
-    connect(&m_task, &ReportTask::finished, this, &ReportsPage::finished);
+    connect(&m_task, &runtime::ReportTask::progress, m_progress, &QProgressBar::setValue);
+    connect(&m_task, &runtime::ReportTask::finished, this, &ReportsPage::finished);
     connect(m_analyse, &QPushButton::clicked, this, &ReportsPage::analyse);
     connect(m_cancel, &QPushButton::clicked, this, &ReportsPage::cancel);
     connect(m_pdf, &QPushButton::clicked, this, [this] { askAndExport(Pdf); });
@@ -154,7 +154,7 @@ void ReportsPage::analyse() {
     }
 }
 
-void ReportsPage::finished(const ReportTaskResult& result, bool cancelled) {
+void ReportsPage::finished(const runtime::ReportTaskResult& result, bool cancelled) {
     if (cancelled) {
         m_status->setText(tr("Cancelled."));
     } else if (!result.error.isEmpty()) {
@@ -210,7 +210,7 @@ bool ReportsPage::exportPdf(const QString& path) {
     m_status->setText(tr("Writing the PDF…"));
     bool written = false;
     try {
-        ReportPdf::write(path, reportHeaderOf(m_views->rows(), m_runs), m_views->points(),
+        reports::ReportPdf::write(path, reports::reportHeaderOf(m_views->rows(), m_runs), m_views->points(),
                          [this](std::size_t done, std::size_t total) {
                              m_progress->setValue(static_cast<int>(100 * done / std::max<std::size_t>(total, 1)));
                              QCoreApplication::processEvents();
@@ -218,7 +218,7 @@ bool ReportsPage::exportPdf(const QString& path) {
                          });
         m_status->setText(tr("Written: %1").arg(path));
         written = true;
-    } catch (const ReportCancelled&) {
+    } catch (const runtime::ReportCancelled&) {
         m_status->setText(tr("Cancelled."));
     } catch (const std::exception& e) {
         m_status->setText(QString::fromStdString(e.what()));

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "ui/page.h"
-#include "ui/reports/report_task.h"
+#include "runtime/reports/report_task.h"
 
 class QLabel;
 class QProgressBar;
@@ -55,11 +55,11 @@ protected:
 
 private:
     void setBusy(bool busy);
-    void finished(const ReportTaskResult& result, bool cancelled);
+    void finished(const runtime::ReportTaskResult& result, bool cancelled);
     void askAndExport(int kind);
     void showEmpty();
 
-    ReportTask m_task;
+    runtime::ReportTask m_task;
     std::vector<core::RunSummary> m_runs;
     QString m_problem;
     bool m_analysedOnce = false;

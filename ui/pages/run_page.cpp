@@ -39,7 +39,7 @@ void RunPage::retranslate() {
     }
 }
 
-RunSession& RunPage::session() {
+runtime::RunSession& RunPage::session() {
     return m_shaft->session();
 }
 
@@ -55,8 +55,8 @@ QListWidget* RunPage::alarms() const {
     return m_shaft->alarms();
 }
 
-RunSettings RunPage::settings() const {
-    return m_shaft->settings();
+runtime::RunRequest RunPage::request() const {
+    return m_shaft->request();
 }
 
 }  // namespace tt::ui

@@ -1,16 +1,19 @@
 #pragma once
 
 #include "ui/page.h"
-#include "ui/run/run_settings.h"
+#include "runtime/run/run_request.h"
 
 class QListWidget;
 class QTabWidget;
+
+namespace tt::runtime {
+class RunSession;
+}  // namespace tt::runtime
 
 namespace tt::ui {
 
 class ManualEntryPanel;
 class ProfilePanel;
-class RunSession;
 class ShaftRunPanel;
 
 /// The operator's main page: one tab per kind of closed loop. The first tab is run-to-run control of the
@@ -29,12 +32,12 @@ public:
     QTabWidget* tabs() const { return m_tabs; }
     /// The shaft run-to-run tab and, for the tests and the shell, its parts.
     ShaftRunPanel& shaft() { return *m_shaft; }
-    RunSession& session();
+    runtime::RunSession& session();
     ProfilePanel* profilePanel() const;
     ManualEntryPanel* manualEntry() const;
     QListWidget* alarms() const;
-    /// The settings the shaft tab's controls hold now.
-    RunSettings settings() const;
+    /// The run request the shaft tab's controls make now.
+    runtime::RunRequest request() const;
 
 private:
     QTabWidget* m_tabs;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui::corner_plots {
 
@@ -33,7 +33,7 @@ double largest(const std::vector<double>& v) {
 
 }  // namespace
 
-void showPaths(Chart& chart, const core::CornerRun& without, const core::CornerRun& with, bool zoom) {
+void showPaths(plot::Chart& chart, const core::CornerRun& without, const core::CornerRun& with, bool zoom) {
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Path near the corner"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Z, mm"),
                         QCoreApplication::translate("CornerPlots", "X, mm"));
@@ -56,7 +56,7 @@ void showPaths(Chart& chart, const core::CornerRun& without, const core::CornerR
     chart.refresh();
 }
 
-void showErrors(Chart& chart, const core::CornerRun& without, const core::CornerRun& with) {
+void showErrors(plot::Chart& chart, const core::CornerRun& without, const core::CornerRun& with) {
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Contour error"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Time, ms"),
                         QCoreApplication::translate("CornerPlots", "Error, µm"));
@@ -75,20 +75,20 @@ void showErrors(Chart& chart, const core::CornerRun& without, const core::Corner
     chart.refresh();
 }
 
-void showPulse(Chart& chart, const core::CornerRun& with, core::FeedAxis pulseAxis) {
+void showPulse(plot::Chart& chart, const core::CornerRun& with, core::FeedAxis pulseAxis) {
     chart.setTitle(pulseAxis == core::FeedAxis::X
                        ? QCoreApplication::translate("CornerPlots", "Corrective pulse on X")
                        : QCoreApplication::translate("CornerPlots", "Corrective pulse on Z"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Time, ms"),
                         QCoreApplication::translate("CornerPlots", "Pulse, V"));
     chart.setSeries(QStringLiteral("pulse"), QString(), scaled(with.trace.timeS, 1e3), with.trace.pulseV, kPulse,
-                    Chart::Style::Steps);
+                    plot::Chart::Style::Steps);
     chart.setYTickCount(3);
     chart.rescale(true);
     chart.refresh();
 }
 
-void showTraining(Chart& chart, const std::vector<double>& trainingLoss, const std::vector<double>& validationLoss,
+void showTraining(plot::Chart& chart, const std::vector<double>& trainingLoss, const std::vector<double>& validationLoss,
                   double outputScaleV) {
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Network training"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Epoch"),
@@ -119,7 +119,7 @@ void showTraining(Chart& chart, const std::vector<double>& trainingLoss, const s
     chart.refresh();
 }
 
-void showDrift(Chart& chart, const core::CornerWorkResult& run, double thresholdFraction, int windowCorners) {
+void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thresholdFraction, int windowCorners) {
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Drift monitor"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Corner"),
                         QCoreApplication::translate("CornerPlots", "Measured − predicted cost, %"));
@@ -141,9 +141,9 @@ void showDrift(Chart& chart, const core::CornerWorkResult& run, double threshold
                   {1.0, last}, {-t, -t}, {t, t}, kThreshold);
     chart.setSeries(QStringLiteral("difference"),
                     QCoreApplication::translate("CornerPlots", "Last %1 corners").arg(windowCorners), corners,
-                    difference, kPulse, Chart::Style::LineAndPoints);
+                    difference, kPulse, plot::Chart::Style::LineAndPoints);
     chart.setSeries(QStringLiteral("retrained"), QCoreApplication::translate("CornerPlots", "Retrained"), retrainX,
-                    retrainY, kWithout, Chart::Style::Points);
+                    retrainY, kWithout, plot::Chart::Style::Points);
     chart.setLegendBelow(3);
     chart.rescale(true);
     chart.setYRange(-3.0 * t, 3.0 * t);

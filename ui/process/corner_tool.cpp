@@ -15,7 +15,7 @@
 #include <cmath>
 
 #include "config/corner_config.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/process/corner_job.h"
 #include "ui/process/corner_move_editor.h"
 #include "ui/process/corner_plots.h"
@@ -52,14 +52,14 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_cancel(new QPushButton(this)),
       m_views(new QTabWidget(this)),
       m_zoom(new QCheckBox(this)),
-      m_pathChart(new Chart(this)),
-      m_errorChart(new Chart(this)),
-      m_pulseChart(new Chart(this)),
+      m_pathChart(new plot::Chart(this)),
+      m_errorChart(new plot::Chart(this)),
+      m_pulseChart(new plot::Chart(this)),
       m_trainingMovesLabel(new QLabel(this)),
       m_trainingMoves(new QSpinBox(this)),
       m_train(new QPushButton(this)),
       m_networkText(wrapped(this)),
-      m_trainingChart(new Chart(this)),
+      m_trainingChart(new plot::Chart(this)),
       m_frictionLabel(new QLabel(this)),
       m_friction(new QDoubleSpinBox(this)),
       m_cornersLabel(new QLabel(this)),
@@ -67,7 +67,7 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_run(new QPushButton(this)),
       m_retrain(new QPushButton(this)),
       m_driftText(wrapped(this)),
-      m_driftChart(new Chart(this)) {
+      m_driftChart(new plot::Chart(this)) {
     (void)context;  // the tool needs no device and no history: it works on the simulator
     try {
         m_scenario = config::loadCornerScenario(config::kDefaultCornerPreset);

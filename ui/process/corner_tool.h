@@ -20,9 +20,12 @@ class QPushButton;
 class QSpinBox;
 class QTabWidget;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 class CornerJob;
 class CornerMoveEditor;
 
@@ -82,11 +85,11 @@ public:
     QLabel* statusLabel() const { return m_status; }
     QLabel* networkLabel() const { return m_networkText; }
     QLabel* driftLabel() const { return m_driftText; }
-    Chart* pathChart() const { return m_pathChart; }
-    Chart* errorChart() const { return m_errorChart; }
-    Chart* pulseChart() const { return m_pulseChart; }
-    Chart* trainingChart() const { return m_trainingChart; }
-    Chart* driftChart() const { return m_driftChart; }
+    plot::Chart* pathChart() const { return m_pathChart; }
+    plot::Chart* errorChart() const { return m_errorChart; }
+    plot::Chart* pulseChart() const { return m_pulseChart; }
+    plot::Chart* trainingChart() const { return m_trainingChart; }
+    plot::Chart* driftChart() const { return m_driftChart; }
 
 signals:
     /// A job ended (trained, ran, retrained, cancelled or failed); for tests and the status line.
@@ -128,14 +131,14 @@ private:
     QPushButton* m_cancel;
     QTabWidget* m_views;
     QCheckBox* m_zoom;
-    Chart* m_pathChart;
-    Chart* m_errorChart;
-    Chart* m_pulseChart;
+    plot::Chart* m_pathChart;
+    plot::Chart* m_errorChart;
+    plot::Chart* m_pulseChart;
     QLabel* m_trainingMovesLabel;
     QSpinBox* m_trainingMoves;
     QPushButton* m_train;
     QLabel* m_networkText;
-    Chart* m_trainingChart;
+    plot::Chart* m_trainingChart;
     QLabel* m_frictionLabel;
     QDoubleSpinBox* m_friction;
     QLabel* m_cornersLabel;
@@ -143,7 +146,7 @@ private:
     QPushButton* m_run;
     QPushButton* m_retrain;
     QLabel* m_driftText;
-    Chart* m_driftChart;
+    plot::Chart* m_driftChart;
     std::optional<core::CornerRun> m_shownWithout;
     std::optional<core::CornerRun> m_shownWith;
 };

@@ -5,7 +5,7 @@
 #include <QTableWidget>
 #include <algorithm>
 
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 
@@ -33,16 +33,16 @@ QColor familyColour(std::size_t k, std::size_t count) {
 
 FeedChartTabs::FeedChartTabs(QWidget* parent)
     : QTabWidget(parent),
-      m_feed(new Chart(this)),
-      m_opening(new Chart(this)),
-      m_current(new Chart(this)),
-      m_sweep(new Chart(this)),
+      m_feed(new plot::Chart(this)),
+      m_opening(new plot::Chart(this)),
+      m_current(new plot::Chart(this)),
+      m_sweep(new plot::Chart(this)),
       m_table(new QTableWidget(this)) {
     setObjectName(QStringLiteral("feedCharts"));
     m_feed->setObjectName(QStringLiteral("feedChart"));
     m_sweep->setObjectName(QStringLiteral("feedSweepChart"));
     m_table->setObjectName(QStringLiteral("feedSweepTable"));
-    for (Chart* c : {m_feed, m_opening, m_current, m_sweep}) {
+    for (plot::Chart* c : {m_feed, m_opening, m_current, m_sweep}) {
         c->setLegendBelow(3);
         c->setYTickCount(5);
     }
@@ -114,7 +114,7 @@ void FeedChartTabs::plotRuns() {
                          column(without, &core::FeedSample::currentA, 1e3), kWithout);
     m_current->setSeries(QStringLiteral("with"), tr("with regulator"), t,
                          column(with, &core::FeedSample::currentA, 1e3), kWith);
-    for (Chart* c : {m_feed, m_opening, m_current}) {
+    for (plot::Chart* c : {m_feed, m_opening, m_current}) {
         c->rescale(true);
         c->refresh();
     }

@@ -7,9 +7,11 @@
 
 class QTableWidget;
 
-namespace tt::ui {
-
+namespace tt::plot {
 class Chart;
+}  // namespace tt::plot
+
+namespace tt::ui {
 
 /// The Hydraulic feed tool's curves, one tab each: the feed with and without the regulator; the slot's
 /// opening and the magnet current; the sweep as a family of feed curves; the sweep's table (settling
@@ -27,8 +29,8 @@ public:
     void showSweep(const FeedStudyResult& result);
     void retranslate();
 
-    Chart* feedChart() const { return m_feed; }
-    Chart* sweepChart() const { return m_sweep; }
+    plot::Chart* feedChart() const { return m_feed; }
+    plot::Chart* sweepChart() const { return m_sweep; }
     QTableWidget* sweepTable() const { return m_table; }
 
 private:
@@ -36,10 +38,10 @@ private:
     void plotSweep();
     QString sweepValueText(double value) const;
 
-    Chart* m_feed;
-    Chart* m_opening;
-    Chart* m_current;
-    Chart* m_sweep;
+    plot::Chart* m_feed;
+    plot::Chart* m_opening;
+    plot::Chart* m_current;
+    plot::Chart* m_sweep;
     QTableWidget* m_table;
     std::shared_ptr<const FeedStudyResult> m_runs;
     std::shared_ptr<const FeedStudyResult> m_sweepResult;

@@ -20,7 +20,7 @@
 
 #include "config/preset_library.h"
 #include "devices/parsers/gcode_writer.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/process/deformation_model_panel.h"
 #include "ui/process/feed_model_task.h"
 #include "ui/process/gcode_view.h"
@@ -100,8 +100,8 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
       m_levelHigh(new QLabel(this)),
       m_result(new QLabel(this)),
       m_views(new QTabWidget(this)),
-      m_curves(new Chart(this)),
-      m_feeds(new Chart(this)),
+      m_curves(new plot::Chart(this)),
+      m_feeds(new plot::Chart(this)),
       m_programView(new GCodeView(this)),
       m_modelPanel(new DeformationModelPanel(this)) {
     try {

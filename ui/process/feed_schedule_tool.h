@@ -18,9 +18,12 @@ class QPushButton;
 class QSlider;
 class QTabWidget;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 class DeformationModelPanel;
 class FeedModelTask;
 class GCodeView;
@@ -72,8 +75,8 @@ public:
     QString problem() const { return m_problem; }
 
     /// Widgets, for tests and screenshots.
-    Chart* curvesChart() const { return m_curves; }
-    Chart* feedChart() const { return m_feeds; }
+    plot::Chart* curvesChart() const { return m_curves; }
+    plot::Chart* feedChart() const { return m_feeds; }
     GCodeView* programView() const { return m_programView; }
     QTabWidget* views() const { return m_views; }
     QSlider* levelSlider() const { return m_level; }
@@ -148,8 +151,8 @@ private:
     QLabel* m_levelHigh;
     QLabel* m_result;
     QTabWidget* m_views;
-    Chart* m_curves;
-    Chart* m_feeds;
+    plot::Chart* m_curves;
+    plot::Chart* m_feeds;
     GCodeView* m_programView;
     DeformationModelPanel* m_modelPanel;
 };

@@ -12,9 +12,12 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
+
 namespace tt::ui {
 
-class Chart;
 class FeedBlockDiagram;
 class FeedChartTabs;
 class FeedParameterForm;

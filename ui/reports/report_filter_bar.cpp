@@ -9,7 +9,7 @@
 #include <QVBoxLayout>
 #include <set>
 
-#include "ui/reports/point_report.h"
+#include "runtime/reports/point_report.h"
 
 namespace tt::ui {
 
@@ -139,8 +139,8 @@ storage::MeasurementFilter ReportFilterBar::filter() const {
 }
 
 core::PointAnalysisSettings ReportFilterBar::settings() const {
-    const auto chart = static_cast<ReportChart>(m_chart->currentData().toInt());
-    return reportSettings(m_subgroup->value(), chart, static_cast<std::size_t>(m_baseline->value()));
+    const auto chart = static_cast<runtime::ReportChart>(m_chart->currentData().toInt());
+    return runtime::reportSettings(m_subgroup->value(), chart, static_cast<std::size_t>(m_baseline->value()));
 }
 
 void ReportFilterBar::retranslate() {
@@ -157,10 +157,10 @@ void ReportFilterBar::retranslate() {
     // A spin box sizes itself once: room for the words of its special value in this language.
     for (QAbstractSpinBox* box : std::initializer_list<QAbstractSpinBox*>{m_from, m_to, m_baseline})
         box->setMinimumWidth(box->fontMetrics().horizontalAdvance(box->specialValueText()) + 56);
-    m_chart->setItemText(static_cast<int>(ReportChart::Automatic), tr("by subgroup size"));
-    m_chart->setItemText(static_cast<int>(ReportChart::XbarRange), tr("X̄-R"));
-    m_chart->setItemText(static_cast<int>(ReportChart::XbarStdDev), tr("X̄-s"));
-    m_chart->setItemText(static_cast<int>(ReportChart::IndividualsMR), tr("I-MR"));
+    m_chart->setItemText(static_cast<int>(runtime::ReportChart::Automatic), tr("by subgroup size"));
+    m_chart->setItemText(static_cast<int>(runtime::ReportChart::XbarRange), tr("X̄-R"));
+    m_chart->setItemText(static_cast<int>(runtime::ReportChart::XbarStdDev), tr("X̄-s"));
+    m_chart->setItemText(static_cast<int>(runtime::ReportChart::IndividualsMR), tr("I-MR"));
     if (m_machine->count() > 0) m_machine->setItemText(0, tr("all machines"));
     fillRuns();  // the run descriptions in the new language
 }

@@ -12,8 +12,8 @@
 #include <QVBoxLayout>
 #include <set>
 
-#include "ui/plot/chart.h"
-#include "ui/reports/report_charts.h"
+#include "plot/chart.h"
+#include "reports/report_charts.h"
 
 namespace tt::ui {
 
@@ -35,15 +35,15 @@ ReportViews::ReportViews(QWidget* parent)
       m_pointLabel(new QLabel(this)),
       m_point(new QComboBox(this)),
       m_summary(new QLabel(this)),
-      m_location(new Chart(this)),
-      m_spread(new Chart(this)),
+      m_location(new plot::Chart(this)),
+      m_spread(new plot::Chart(this)),
       m_violations(new QLabel(this)),
-      m_histogram(new Chart(this)),
+      m_histogram(new plot::Chart(this)),
       m_capability(new QTableWidget(this)),
       m_partLabel(new QLabel(this)),
       m_part(new QSpinBox(this)),
       m_partName(new QLabel(this)),
-      m_profile(new Chart(this)),
+      m_profile(new plot::Chart(this)),
       m_multiplesHost(new QWidget(this)),
       m_multiplesGrid(new QGridLayout(m_multiplesHost)) {
     m_tabs->setObjectName(QStringLiteral("reportTabs"));
@@ -121,7 +121,7 @@ ReportViews::ReportViews(QWidget* parent)
     retranslate();
 }
 
-void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<PointReport> points) {
+void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points) {
     m_rows = std::move(rows);
     m_points = std::move(points);
     m_parts.clear();
@@ -141,27 +141,27 @@ void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<Po
 
 void ReportViews::fillPointChoice() {
     m_point->clear();
-    for (const PointReport& p : m_points)
-        m_point->addItem(ReportCharts::pointTitle(p));
+    for (const runtime::PointReport& p : m_points)
+        m_point->addItem(reports::ReportCharts::pointTitle(p));
 }
 
 void ReportViews::showPoint(int index) {
     if (index < 0 || index >= static_cast<int>(m_points.size())) return;
-    const PointReport& p = m_points[static_cast<std::size_t>(index)];
+    const runtime::PointReport& p = m_points[static_cast<std::size_t>(index)];
     m_summary->setText(
-        QStringLiteral("%1 · %2").arg(ReportCharts::chartDescription(p), ReportCharts::verdictText(p.verdicts)));
-    ReportCharts::showLocation(*m_location, p);
-    ReportCharts::showSpread(*m_spread, p);
-    ReportCharts::showHistogram(*m_histogram, p);
+        QStringLiteral("%1 · %2").arg(reports::ReportCharts::chartDescription(p), reports::ReportCharts::verdictText(p.verdicts)));
+    reports::ReportCharts::showLocation(*m_location, p);
+    reports::ReportCharts::showSpread(*m_spread, p);
+    reports::ReportCharts::showHistogram(*m_histogram, p);
     QStringList lines{
         tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size()))};
-    lines << ReportCharts::violationLines(p, 8);
+    lines << reports::ReportCharts::violationLines(p, 8);
     m_violations->setText(lines.join(QLatin1Char('\n')));
-    const std::vector<CapabilityLine> table = ReportCharts::capabilityLines(p);
+    const std::vector<reports::CapabilityLine> table = reports::ReportCharts::capabilityLines(p);
     m_capability->clearSpans();
     m_capability->setRowCount(static_cast<int>(table.size()));
     for (int row = 0; row < static_cast<int>(table.size()); ++row) {
-        const CapabilityLine& line = table[static_cast<std::size_t>(row)];
+        const reports::CapabilityLine& line = table[static_cast<std::size_t>(row)];
         m_capability->setItem(row, 0, new QTableWidgetItem(line.name));
         auto* value = new QTableWidgetItem(line.value);
         value->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -180,19 +180,19 @@ void ReportViews::showPart(int number) {
     const auto [run, part] = m_parts[static_cast<std::size_t>(number - 1)];
     const QString name = tr("run %1, part %2").arg(run).arg(part);
     m_partName->setText(name);
-    ReportCharts::showProfile(*m_profile, partProfileOf(m_rows, run, part), tr("Profile of %1").arg(name));
+    reports::ReportCharts::showProfile(*m_profile, reports::partProfileOf(m_rows, run, part), tr("Profile of %1").arg(name));
 }
 
 void ReportViews::showMultiples() {
-    for (Chart* chart : m_multiples)
+    for (plot::Chart* chart : m_multiples)
         delete chart;
     m_multiples.clear();
     for (std::size_t i = 0; i < m_points.size(); ++i) {
-        auto* chart = new Chart(m_multiplesHost);
+        auto* chart = new plot::Chart(m_multiplesHost);
         chart->setObjectName(QStringLiteral("reportMultiple%1").arg(i + 1));
         chart->setFontPointSize(9);
         chart->setMinimumHeight(200);
-        ReportCharts::showLocation(*chart, m_points[i], true);
+        reports::ReportCharts::showLocation(*chart, m_points[i], true);
         chart->setFontPointSize(9);
         m_multiplesGrid->addWidget(chart, static_cast<int>(i) / kMultipleColumns,
                                    static_cast<int>(i) % kMultipleColumns);

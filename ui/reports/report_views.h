@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/storage/measurement_query.h"
-#include "ui/reports/point_report.h"
+#include "runtime/reports/point_report.h"
 
 class QComboBox;
 class QGridLayout;
@@ -15,9 +15,11 @@ class QSpinBox;
 class QTableWidget;
 class QTabWidget;
 
-namespace tt::ui {
-
+namespace tt::plot {
 class Chart;
+}  // namespace tt::plot
+
+namespace tt::ui {
 
 /// The results of the Reports page in tabs: the control chart pair of the chosen point with its rule
 /// violations; its histogram with the capability table; the profile of a chosen part along the shaft with
@@ -28,50 +30,50 @@ public:
     explicit ReportViews(QWidget* parent = nullptr);
 
     /// Shows a new report (the readings for the part profiles).
-    void show(std::vector<storage::MeasurementRow> rows, std::vector<PointReport> points);
+    void show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points);
     /// The point shown in the chart and distribution tabs (index into points()).
     void showPoint(int index);
     /// The part (1-based, in production order over the chosen runs) whose profile is shown.
     void showPart(int number);
     void retranslate();
 
-    const std::vector<PointReport>& points() const { return m_points; }
+    const std::vector<runtime::PointReport>& points() const { return m_points; }
     const std::vector<storage::MeasurementRow>& rows() const { return m_rows; }
     QTabWidget* tabs() const { return m_tabs; }
     QComboBox* pointChoice() const { return m_point; }
     QSpinBox* partChoice() const { return m_part; }
-    Chart* location() const { return m_location; }
-    Chart* spread() const { return m_spread; }
-    Chart* histogram() const { return m_histogram; }
-    Chart* profile() const { return m_profile; }
+    plot::Chart* location() const { return m_location; }
+    plot::Chart* spread() const { return m_spread; }
+    plot::Chart* histogram() const { return m_histogram; }
+    plot::Chart* profile() const { return m_profile; }
     QTableWidget* capability() const { return m_capability; }
     QLabel* violations() const { return m_violations; }
     /// The small multiples, one per point.
-    const std::vector<Chart*>& multiples() const { return m_multiples; }
+    const std::vector<plot::Chart*>& multiples() const { return m_multiples; }
 
 private:
     void fillPointChoice();
     void showMultiples();
 
     std::vector<storage::MeasurementRow> m_rows;
-    std::vector<PointReport> m_points;
+    std::vector<runtime::PointReport> m_points;
     std::vector<std::pair<std::int64_t, std::int64_t>> m_parts;  ///< (run, part) in production order
     QTabWidget* m_tabs;
     QLabel* m_pointLabel;
     QComboBox* m_point;
     QLabel* m_summary;
-    Chart* m_location;
-    Chart* m_spread;
+    plot::Chart* m_location;
+    plot::Chart* m_spread;
     QLabel* m_violations;
-    Chart* m_histogram;
+    plot::Chart* m_histogram;
     QTableWidget* m_capability;
     QLabel* m_partLabel;
     QSpinBox* m_part;
     QLabel* m_partName;
-    Chart* m_profile;
+    plot::Chart* m_profile;
     QWidget* m_multiplesHost;
     QGridLayout* m_multiplesGrid;
-    std::vector<Chart*> m_multiples;
+    std::vector<plot::Chart*> m_multiples;
 };
 
 }  // namespace tt::ui

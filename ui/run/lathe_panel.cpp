@@ -53,7 +53,13 @@ LathePanel::LathePanel(QWidget* parent)
     grid->addLayout(measureTexts, 1, 0);
     grid->addWidget(m_reading, 1, 1);
     grid->setColumnStretch(0, 1);
-    connect(m_finished, &QPushButton::clicked, this, &LathePanel::partFinished);
+    connect(m_finished, &QPushButton::clicked, this, [this] {
+        // One press per part: the part leaves the machine in the loop's thread, so the button waits for
+        // the next part the loop reports.
+        m_pressedPart = m_view.partOnMachine;
+        m_finished->setEnabled(false);
+        emit partFinished();
+    });
     connect(m_reading, &QPushButton::clicked, this, &LathePanel::readingRequested);
     retranslate();
 }
@@ -102,7 +108,8 @@ void LathePanel::retranslate() {
     m_reading->setVisible(m_view.runGoing && m_view.haveGauge && !m_view.byHand);
     m_reading->setEnabled(m_view.awaitingPart.has_value() && m_view.gaugeReady);
     m_finished->setText(m_view.partOnMachine ? tr("Part %1 finished").arg(*m_view.partOnMachine) : tr("Part finished"));
-    m_finished->setEnabled(m_view.runGoing && m_view.partOnMachine.has_value());
+    m_finished->setEnabled(m_view.runGoing && m_view.partOnMachine.has_value() &&
+                           m_view.partOnMachine != m_pressedPart);
 }
 
 }  // namespace tt::ui

@@ -56,6 +56,7 @@ private:
     QString measureDetail() const;
 
     View m_view;
+    std::optional<qint64> m_pressedPart;  ///< the part whose Part finished was pressed last
     QLabel* m_machine;
     QLabel* m_machineDetail;
     QLabel* m_measure;

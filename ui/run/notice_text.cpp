@@ -64,35 +64,31 @@ QString stateText(const core::Notice& n) {
     }
 }
 
-QString faultText(const core::Notice& n) {
+/// The mismatch monitor's alarm: which test, over how many parts, and what the loop does about it.
+QString mismatchText(const core::Notice& n) {
+    const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
+                                            : QCoreApplication::translate("Notice", "variance");
+    const QString then = n.cause == "hold"
+                             ? QCoreApplication::translate(
+                                   "Notice", "The CNC keeps the last correction until the run is restarted")
+                             : QCoreApplication::translate("Notice", "The controller goes on");
+    return QCoreApplication::translate("Notice",
+                                       "The plant no longer matches the controller's model (part %1, point "
+                                       "%2): the %3 test of the innovations over %4 parts is %5, above its "
+                                       "limit %6. %7")
+        .arg(n.part)
+        .arg(n.point)
+        .arg(test)
+        .arg(n.otherPart)
+        .arg(n.value, 0, 'g', 3)
+        .arg(n.limit, 0, 'g', 3)
+        .arg(then);
+}
+
+/// What the loop says about a part's corrections, its tolerance or the controller's model.
+QString correctionText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {
-        case K::PartAbandoned:
-            return QCoreApplication::translate(
-                       "Notice", "Part %1 was on the machine when the run was stopped; it is not recorded")
-                .arg(n.part);
-        case K::HistoryEndFailed:
-            return QCoreApplication::translate("Notice", "The end of the run could not be stored: %1").arg(cause(n));
-        case K::UnexpectedPartFinished:
-            return QCoreApplication::translate(
-                       "Notice", "The machine reported part %1 finished, which the loop did not start; ignored")
-                .arg(n.part);
-        case K::HistoryPartFailed:
-            return QCoreApplication::translate(
-                       "Notice",
-                       "The history could not be written, part %1 is not stored (%2); the CNC keeps the last "
-                       "correction")
-                .arg(n.part)
-                .arg(cause(n));
-        case K::ReadingUnexpected:
-            return QCoreApplication::translate(
-                       "Notice", "A reading of %1 mm arrived but no part is waiting to be measured; it was ignored")
-                .arg(mm(n.value));
-        case K::HistoryMeasurementFailed:
-            return QCoreApplication::translate(
-                       "Notice", "The diameters of part %1 could not be stored (%2); the CNC keeps the last correction")
-                .arg(n.part)
-                .arg(cause(n));
         case K::CorrectionsFailed:
             return QCoreApplication::translate(
                        "Notice",
@@ -133,27 +129,44 @@ QString faultText(const core::Notice& n) {
                 .arg(n.part)
                 .arg(n.point)
                 .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
-        case K::ModelMismatch: {
-            const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
-                                                    : QCoreApplication::translate("Notice", "variance");
-            const QString then = n.cause == "hold"
-                                     ? QCoreApplication::translate(
-                                           "Notice", "The CNC keeps the last correction until the run is restarted")
-                                     : QCoreApplication::translate("Notice", "The controller goes on");
-            return QCoreApplication::translate("Notice",
-                                               "The plant no longer matches the controller's model (part %1, point "
-                                               "%2): the %3 test of the innovations over %4 parts is %5, above its "
-                                               "limit %6. %7")
-                .arg(n.part)
-                .arg(n.point)
-                .arg(test)
-                .arg(n.otherPart)
-                .arg(n.value, 0, 'g', 3)
-                .arg(n.limit, 0, 'g', 3)
-                .arg(then);
-        }
+        case K::ModelMismatch:
+            return mismatchText(n);
         default:
             return {};
+    }
+}
+
+QString faultText(const core::Notice& n) {
+    using K = core::NoticeKind;
+    switch (n.kind) {
+        case K::PartAbandoned:
+            return QCoreApplication::translate(
+                       "Notice", "Part %1 was on the machine when the run was stopped; it is not recorded")
+                .arg(n.part);
+        case K::HistoryEndFailed:
+            return QCoreApplication::translate("Notice", "The end of the run could not be stored: %1").arg(cause(n));
+        case K::UnexpectedPartFinished:
+            return QCoreApplication::translate(
+                       "Notice", "The machine reported part %1 finished, which the loop did not start; ignored")
+                .arg(n.part);
+        case K::HistoryPartFailed:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "The history could not be written, part %1 is not stored (%2); the CNC keeps the last "
+                       "correction")
+                .arg(n.part)
+                .arg(cause(n));
+        case K::ReadingUnexpected:
+            return QCoreApplication::translate(
+                       "Notice", "A reading of %1 mm arrived but no part is waiting to be measured; it was ignored")
+                .arg(mm(n.value));
+        case K::HistoryMeasurementFailed:
+            return QCoreApplication::translate(
+                       "Notice", "The diameters of part %1 could not be stored (%2); the CNC keeps the last correction")
+                .arg(n.part)
+                .arg(cause(n));
+        default:
+            return correctionText(n);
     }
 }
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/control/profile_interpolation.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 
@@ -25,7 +25,7 @@ std::vector<double> toStd(const QVector<double>& v) {
 
 }  // namespace
 
-ProfilePanel::ProfilePanel(QWidget* parent) : QWidget(parent), m_profile(new Chart(this)), m_history(new Chart(this)) {
+ProfilePanel::ProfilePanel(QWidget* parent) : QWidget(parent), m_profile(new plot::Chart(this)), m_history(new plot::Chart(this)) {
     m_profile->setObjectName(QStringLiteral("profileChart"));
     m_history->setObjectName(QStringLiteral("historyChart"));
     m_profile->setMinimumHeight(220);
@@ -54,7 +54,7 @@ void ProfilePanel::retranslate() {
     }
 }
 
-void ProfilePanel::setRun(const RunLayout& layout) {
+void ProfilePanel::setRun(const runtime::RunLayout& layout) {
     m_layout = layout;
     m_recent.clear();
     m_trueProfiles.clear();
@@ -108,7 +108,7 @@ void ProfilePanel::onLoopEvent(const core::LoopEvent& event) {
         all[static_cast<std::size_t>(p.pointIndex)] = *p.measuredMm - p.nominalMm;
     }
     m_profile->setSeries(QStringLiteral("measured"), tr("part %1 gauged").arg(m.partNumber), zs, errors, kMeasured,
-                         Chart::Style::Points);
+                         plot::Chart::Style::Points);
     if (zs.size() >= 2) {
         const core::PiecewiseCubic curve = core::PiecewiseCubic::pchip(zs, errors);
         std::vector<double> x, y;
@@ -159,7 +159,7 @@ void ProfilePanel::drawHistory() {
             errors.push_back(values[static_cast<std::size_t>(i)]);
         }
         m_history->setSeries(QStringLiteral("point%1").arg(i), tr("x = %1").arg(m_layout.pointZMm[i], 0, 'f', 0), parts,
-                             errors, kPointColours[i % 8], Chart::Style::LineAndPoints);
+                             errors, kPointColours[i % 8], plot::Chart::Style::LineAndPoints);
     }
     m_history->setBand(QStringLiteral("tolerance"), tr("tolerance"),
                        {static_cast<double>(m_recent.front().first), static_cast<double>(m_recent.back().first)},

@@ -6,11 +6,13 @@
 #include <map>
 
 #include "core/loop/loop_events.h"
-#include "ui/run/run_settings.h"
+#include "runtime/run/loop_snapshot.h"
+
+namespace tt::plot {
+class Chart;
+}  // namespace tt::plot
 
 namespace tt::ui {
-
-class Chart;
 
 /// The Run page's plots: the profile of the last part (diameter error at the control points and along
 /// the shaft, the tolerance band, the systematic model and the correction path shown by its effect on
@@ -22,14 +24,14 @@ public:
     explicit ProfilePanel(QWidget* parent = nullptr);
 
     /// A new run: clears the plots and draws what is fixed (band, model).
-    void setRun(const RunLayout& layout);
+    void setRun(const runtime::RunLayout& layout);
     void onLoopEvent(const core::LoopEvent& event);
     /// The part as it really came off the machine (machines that know it: ShaftMachine::trueProfile).
     void onPartProfile(qint64 partNumber, const QVector<double>& zMm, const QVector<double>& errorMm);
     void retranslate();
 
-    Chart* profileChart() const { return m_profile; }
-    Chart* historyChart() const { return m_history; }
+    plot::Chart* profileChart() const { return m_profile; }
+    plot::Chart* historyChart() const { return m_history; }
     /// Parts in the history strip.
     int historyParts() const { return static_cast<int>(m_recent.size()); }
     /// How many parts back the history strip reaches.
@@ -40,9 +42,9 @@ private:
     void rescaleProfile();
     void drawHistory();
 
-    Chart* m_profile;
-    Chart* m_history;
-    RunLayout m_layout;
+    plot::Chart* m_profile;
+    plot::Chart* m_history;
+    runtime::RunLayout m_layout;
     std::deque<std::pair<qint64, std::vector<double>>> m_recent;  ///< part, deviation per point (NaN: none)
     std::map<qint64, std::pair<QVector<double>, QVector<double>>> m_trueProfiles;  ///< recent true profiles
     qint64 m_lastMeasured = 0;

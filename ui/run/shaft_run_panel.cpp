@@ -13,20 +13,21 @@
 #include <QTime>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
-#include "devices/api/device_manager.h"
+#include "config/controller_tuning_json.h"
+#include "plot/chart.h"
+#include "runtime/devices/device_hub.h"
+#include "runtime/run/run_session.h"
 #include "ui/app_state.h"
 #include "ui/auth/audit_trail.h"
 #include "ui/controller/controller_tuning.h"
-#include "ui/plot/chart.h"
 #include "ui/prompt.h"
-#include "ui/run/interrupted_run.h"
-#include "ui/run/lathe_link.h"
 #include "ui/run/lathe_panel.h"
 #include "ui/run/manual_entry_panel.h"
 #include "ui/run/notice_text.h"
 #include "ui/run/profile_panel.h"
-#include "ui/run/run_session.h"
 #include "ui/run/verdict_counter.h"
 
 namespace tt::ui {
@@ -78,13 +79,21 @@ void setChoice(QComboBox* combo, const QString& data) {
     if (index >= 0) combo->setCurrentIndex(index);
 }
 
+/// The speed choice nearest to `speed` machine s per wall s.
+int speedIndex(double speed) {
+    int best = kDefaultSpeed;
+    for (int i = 0; i < 4; ++i)
+        if (speed > 0.0 && std::abs(std::log(kSpeeds[i] / speed)) < std::abs(std::log(kSpeeds[best] / speed))) best = i;
+    return best;
+}
+
 }  // namespace
 
 ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     : QWidget(parent),
       m_context(context),
-      m_session(new RunSession(this)),
-      m_link(new LatheLink(context.devices, this)),
+      m_session(new runtime::RunSession(this)),
+      m_catalog(context.devices),
       m_start(new QPushButton(this)),
       m_pause(new QPushButton(this)),
       m_stop(new QPushButton(this)),
@@ -115,12 +124,38 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
       m_skip(new QPushButton(this)),
       m_alarmsTitle(new QLabel(this)),
       m_alarms(new QListWidget(this)) {
-    // Left: the profile, the real lathe's part cycle, the diameters by hand (in manual mode). Right: the loop,
+    auto* body = new QHBoxLayout;
+    body->addWidget(buildLeft(), 4);
+    body->addWidget(buildSide(), 3);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(8, 8, 8, 4);
+    layout->addWidget(buildControls());
+    layout->addWidget(buildSetupRow());
+    layout->addLayout(body, 1);
+    connectControls();
+    connectSession();
+    connectDevices();
+    m_manual->setVisible(false);
+    m_skip->setVisible(false);
+    fillDeviceChoices();
+    restoreChoices();
+    retranslate();
+    updateControls();
+}
+
+ShaftRunPanel::~ShaftRunPanel() {
+    releaseMachine(tr("the Run page was closed"));
+}
+
+QWidget* ShaftRunPanel::buildLeft() {
+    // Left: the profile, the operator's part cycle, the diameters by hand (in manual mode). Right: the loop,
     // the devices, the history strip, the alarms.
-    auto* left = new QVBoxLayout;
-    left->addWidget(m_profile, 1);
-    left->addWidget(buildDevicePicker());
-    left->addWidget(m_lathePanel);
+    auto* left = new QWidget(this);
+    auto* column = new QVBoxLayout(left);
+    column->setContentsMargins(0, 0, 0, 0);
+    column->addWidget(m_profile, 1);
+    column->addWidget(buildDevicePicker());
+    column->addWidget(m_lathePanel);
     // The run's options under the profile: "by hand" just above the entry fields it shows (the set-up row and
     // the side column fit 1280 x 800).
     auto* options = new QHBoxLayout;
@@ -128,18 +163,13 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     options->addSpacing(16);
     options->addWidget(m_pauseOnScrap);
     options->addStretch(1);
-    left->addLayout(options);
-    left->addWidget(m_devices);  // the machine and its devices in words, under the profile
-    left->addWidget(m_manual);
-    auto* body = new QHBoxLayout;
-    body->addLayout(left, 4);
-    body->addWidget(buildSide(), 3);
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(8, 8, 8, 4);
-    layout->addWidget(buildControls());
-    layout->addWidget(buildSetupRow());
-    layout->addLayout(body, 1);
+    column->addLayout(options);
+    column->addWidget(m_devices);  // the machine and its devices in words, under the profile
+    column->addWidget(m_manual);
+    return left;
+}
 
+void ShaftRunPanel::connectControls() {
     connect(m_start, &QPushButton::clicked, this, &ShaftRunPanel::onStart);
     connect(m_pause, &QPushButton::clicked, this, &ShaftRunPanel::onPauseContinue);
     connect(m_stop, &QPushButton::clicked, this, &ShaftRunPanel::onStop);
@@ -158,49 +188,46 @@ ShaftRunPanel::ShaftRunPanel(AppContext& context, QWidget* parent)
     connect(m_output, &QComboBox::currentIndexChanged, this, [this] { updateTexts(); });
     connect(m_gauge, &QComboBox::currentIndexChanged, this, [this] {
         // Diameters "typed in by hand" is the gauge choice without a device.
-        if (realLatheChosen() && m_gauge->currentIndex() >= 0)
+        const std::optional<runtime::MachineOffer> offer = chosenOffer();
+        if (offer && offer->can.usesDevices && m_gauge->currentIndex() >= 0)
             m_manualMode->setChecked(m_gauge->currentData().toString().isEmpty());
         updateTexts();
     });
     connect(m_verdicts, &VerdictCounter::outOfTolerance, this, &ShaftRunPanel::onOutOfTolerance);
-    connect(m_skip, &QPushButton::clicked, m_session, &RunSession::skipMeasurement);
-    connect(m_manual, &ManualEntryPanel::diametersEntered, m_session, &RunSession::submitDiameters);
     connect(m_manual, &ManualEntryPanel::valueRefused, this, [this](const QString& text) { addAlarm(text, true); });
     connect(m_lathePanel, &LathePanel::partFinished, this, &ShaftRunPanel::onPartFinished);
-    connect(m_lathePanel, &LathePanel::readingRequested, this, [this] { m_link->requestReading(); });
-    connect(m_session, &RunSession::started, this, &ShaftRunPanel::onStarted);
-    connect(m_session, &RunSession::startFailed, this, &ShaftRunPanel::onStartFailed);
-    connect(m_session, &RunSession::snapshotChanged, this, &ShaftRunPanel::onSnapshot);
-    connect(m_session, &RunSession::loopEvent, this, &ShaftRunPanel::onLoopEvent);
-    connect(m_session, &RunSession::partProfile, m_profile, &ProfilePanel::onPartProfile);
-    connect(m_session, &RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
-    connect(m_session, &RunSession::tuningTaken, this,
-            [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
-    if (ControllerTuning* tuning = m_context.tuning)
-        connect(tuning, &ControllerTuning::applied, m_session, &RunSession::applyTuning);
-    if (devices::DeviceManager* manager = m_context.devices) {
-        connect(manager, &devices::DeviceManager::devicesChanged, this, [this] {
-            fillDeviceChoices();
-            updateTexts();
-        });
-        connect(manager, &devices::DeviceManager::deviceChanged, this, [this](const QString& id) {
-            for (QComboBox* combo : {m_output, m_gauge})
-                if (const int index = combo->findData(id); index >= 0) combo->setItemText(index, deviceChoiceText(id));
-            updateTexts();
-        });
-    }
-
-    m_manual->setVisible(false);
-    m_skip->setVisible(false);
-    fillDeviceChoices();
-    restoreChoices();
-    retranslate();
-    updateControls();
+    connect(m_lathePanel, &LathePanel::readingRequested, this, [this] {
+        if (m_context.devices && !m_running.gauge.isEmpty()) m_context.devices->requestReading(m_running.gauge);
+    });
 }
 
-ShaftRunPanel::~ShaftRunPanel() {
-    // A loop write waiting for the CNC output in this thread is refused before the loop thread is stopped.
-    m_link->disconnectDevices(tr("the Run page was closed"));
+void ShaftRunPanel::connectSession() {
+    connect(m_skip, &QPushButton::clicked, m_session, &runtime::RunSession::skipMeasurement);
+    connect(m_manual, &ManualEntryPanel::diametersEntered, m_session, &runtime::RunSession::submitDiameters);
+    connect(m_session, &runtime::RunSession::started, this, &ShaftRunPanel::onStarted);
+    connect(m_session, &runtime::RunSession::startFailed, this, &ShaftRunPanel::onStartFailed);
+    connect(m_session, &runtime::RunSession::snapshotChanged, this, &ShaftRunPanel::onSnapshot);
+    connect(m_session, &runtime::RunSession::loopEvent, this, &ShaftRunPanel::onLoopEvent);
+    connect(m_session, &runtime::RunSession::partProfile, m_profile, &ProfilePanel::onPartProfile);
+    connect(m_session, &runtime::RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
+    connect(m_session, &runtime::RunSession::tuningTaken, this,
+            [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
+    if (ControllerTuning* tuning = m_context.tuning)
+        connect(tuning, &ControllerTuning::applied, m_session, &runtime::RunSession::applyTuning);
+}
+
+void ShaftRunPanel::connectDevices() {
+    runtime::DeviceHub* hub = m_context.devices;
+    if (!hub) return;
+    connect(hub, &runtime::DeviceHub::devicesChanged, this, [this] {
+        fillDeviceChoices();
+        updateTexts();
+    });
+    connect(hub, &runtime::DeviceHub::deviceChanged, this, [this](const QString& id) {
+        for (QComboBox* combo : {m_output, m_gauge})
+            if (const int index = combo->findData(id); index >= 0) combo->setItemText(index, deviceChoiceText(id));
+        updateTexts();
+    });
 }
 
 QWidget* ShaftRunPanel::buildControls() {
@@ -361,12 +388,12 @@ void ShaftRunPanel::retranslate() {
     updateTexts();
 }
 
-// ---- the devices to choose from ---------------------------------------------------------------------------
+// ---- the machines and devices to choose from ----------------------------------------------------------------
 
 QString ShaftRunPanel::deviceChoiceText(const QString& id) const {
-    const devices::DeviceEntry* e = m_context.devices ? m_context.devices->entry(id) : nullptr;
-    if (!e) return id;
-    return tr("%1 — %2").arg(e->name, healthWord(e->device->health().state));
+    const runtime::DeviceView* v = m_context.devices ? m_context.devices->view(id) : nullptr;
+    if (!v) return id;
+    return tr("%1 — %2").arg(v->name, healthWord(v->health.state));
 }
 
 void ShaftRunPanel::fillDeviceChoices() {
@@ -376,10 +403,10 @@ void ShaftRunPanel::fillDeviceChoices() {
     const QSignalBlocker blockGauge(m_gauge);
     m_output->clear();
     m_gauge->clear();
-    if (devices::DeviceManager* manager = m_context.devices) {
-        for (const QString& id : manager->devicesOfKind(devices::DeviceKind::CorrectionOutput))
+    if (const runtime::DeviceHub* hub = m_context.devices) {
+        for (const QString& id : hub->devicesOfKind(devices::DeviceKind::CorrectionOutput))
             m_output->addItem(deviceChoiceText(id), id);
-        for (const QString& id : manager->devicesOfKind(devices::DeviceKind::Gauge))
+        for (const QString& id : hub->devicesOfKind(devices::DeviceKind::Gauge))
             m_gauge->addItem(deviceChoiceText(id), id);
     }
     m_gauge->addItem(tr("Typed in by hand"), QString());
@@ -389,7 +416,7 @@ void ShaftRunPanel::fillDeviceChoices() {
 
 void ShaftRunPanel::restoreChoices() {
     const QSettings settings;
-    setChoice(m_machine, settings.value(QStringLiteral("run/machine")).toString());
+    setChoice(m_machine, runtime::currentMachineKey(settings.value(QStringLiteral("run/machine")).toString()));
     setChoice(m_output, settings.value(QStringLiteral("run/cncOutput")).toString());
     if (settings.contains(QStringLiteral("run/gauge")))
         setChoice(m_gauge, settings.value(QStringLiteral("run/gauge")).toString());
@@ -398,55 +425,55 @@ void ShaftRunPanel::restoreChoices() {
 void ShaftRunPanel::saveChoices() const {
     QSettings settings;
     settings.setValue(QStringLiteral("run/machine"), m_machine->currentData().toString());
-    if (realLatheChosen()) {
+    const std::optional<runtime::MachineOffer> offer = chosenOffer();
+    if (offer && offer->can.usesDevices) {
         settings.setValue(QStringLiteral("run/cncOutput"), m_output->currentData().toString());
         settings.setValue(QStringLiteral("run/gauge"), m_gauge->currentData().toString());
     }
 }
 
-bool ShaftRunPanel::realLatheChosen() const {
-    return m_machine->currentData().toString() == kDevicesMachineKey;
-}
-
-std::optional<devices::ShaftMachineOffer> ShaftRunPanel::chosenOffer() const {
-    for (const devices::ShaftMachineOffer& offer : m_offers)
+std::optional<runtime::MachineOffer> ShaftRunPanel::chosenOffer() const {
+    for (const runtime::MachineOffer& offer : m_offers)
         if (offer.key == m_machine->currentData().toString()) return offer;
     return std::nullopt;
+}
+
+std::optional<runtime::MachineOffer> ShaftRunPanel::shownOffer() const {
+    return m_snapshot.state == core::LoopState::Idle ? chosenOffer() : m_onMachine;
 }
 
 void ShaftRunPanel::fillMachineChoices() {
     const QString chosen = m_machine->currentData().toString();
     const QSignalBlocker block(m_machine);
-    m_offers = m_context.devices ? m_context.devices->shaftMachineOffers() : QList<devices::ShaftMachineOffer>();
+    m_offers = m_catalog.offers();
     m_machine->clear();
-    for (const devices::ShaftMachineOffer& offer : m_offers)
+    for (const runtime::MachineOffer& offer : m_offers)
         m_machine->addItem(offer.name, offer.key);
-    m_machine->addItem(tr("Real lathe (Devices page)"), kDevicesMachineKey);
     setChoice(m_machine, chosen);
 }
 
 // ---- commands -----------------------------------------------------------------------------------------
 
-RunSettings ShaftRunPanel::settings() const {
-    RunSettings s;
-    s.machineKey = m_machine->currentData().toString();
-    s.machineName = m_machine->currentText();
-    s.operatorCycle = realLatheChosen();
-    s.preset = m_preset->currentData().toString();
-    s.controller = m_controller->currentData().toString();
-    s.delay = m_delay->value();
-    s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
-    s.manualEntry = m_manualMode->isChecked();
-    s.pauseOnScrap = m_pauseOnScrap->isChecked();
-    s.databasePath = m_context.databasePath;
-    s.seed = QRandomGenerator::global()->generate64() >> 12;
-    if (m_context.tuning) s.tuning = m_context.tuning->current();
-    if (s.operatorCycle) {
-        s.outputDeviceId = m_output->currentData().toString();
-        s.gaugeDeviceId = m_gauge->currentData().toString();
-        if (s.gaugeDeviceId.isEmpty()) s.manualEntry = true;
+runtime::RunRequest ShaftRunPanel::request() const {
+    runtime::RunRequest r;
+    r.machine = m_machine->currentData().toString();
+    r.preset = m_preset->currentData().toString();
+    r.controller = core::controllerKindFromName(m_controller->currentData().toString().toStdString());
+    r.delay = m_delay->value();
+    r.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
+    r.manualEntry = m_manualMode->isChecked();
+    r.pauseOnScrap = m_pauseOnScrap->isChecked();
+    r.database = m_context.databasePath;
+    r.seed = QRandomGenerator::global()->generate64() >> 12;
+    if (m_context.tuning && m_context.tuning->current())
+        r.tuning = config::controllerTuningToJson(*m_context.tuning->current());
+    const std::optional<runtime::MachineOffer> offer = chosenOffer();
+    if (offer && offer->can.usesDevices) {
+        r.cncOutput = m_output->currentData().toString();
+        r.gauge = m_gauge->currentData().toString();
+        if (r.gauge.isEmpty()) r.manualEntry = true;
     }
-    return s;
+    return r;
 }
 
 bool ShaftRunPanel::mayRunMachine() {
@@ -459,61 +486,79 @@ bool ShaftRunPanel::mayRunMachine() {
     }
 }
 
-bool ShaftRunPanel::resumeRun(const InterruptedRun& run) {
+void ShaftRunPanel::showRequest(const runtime::RunRequest& request) {
+    setChoice(m_machine, request.machine);
+    setChoice(m_preset, request.preset);
+    setChoice(m_controller, QString::fromStdString(core::controllerKindName(request.controller)));
+    if (request.delay) m_delay->setValue(*request.delay);
+    m_speed->setCurrentIndex(speedIndex(request.speed));
+    setChoice(m_output, request.cncOutput);
+    setChoice(m_gauge, request.gauge);
+    const QSignalBlocker block(m_manualMode);
+    m_manualMode->setChecked(request.manualEntry);
+    m_manual->setVisible(request.manualEntry);
+    m_skip->setVisible(request.manualEntry);
+    m_pauseOnScrap->setChecked(request.pauseOnScrap);
+}
+
+bool ShaftRunPanel::launch(const runtime::RunRequest& request, std::optional<qint64> resumeRunId) {
     if (!mayRunMachine()) return false;
     if (m_snapshot.state != core::LoopState::Idle) {
         refuseStart(tr("A run is already going; stop it first."));
         return false;
     }
-    RunSettings s = run.settings;
-    std::optional<devices::ShaftMachineOffer> offer;
-    for (const devices::ShaftMachineOffer& o : m_offers)
-        if (o.key == s.machineKey) offer = o;
+    m_offers = m_catalog.offers();
+    std::optional<runtime::MachineOffer> offer;
+    for (const runtime::MachineOffer& o : m_offers)
+        if (o.key == request.machine) offer = o;
     if (!offer) {
-        refuseStart(tr("The machine of run %1 is not offered; it cannot be continued.").arg(run.point.run.runId));
+        refuseStart(tr("The machine “%1” is not offered; choose another.").arg(request.machine));
         return false;
     }
-    setChoice(m_machine, s.machineKey);
-    setChoice(m_preset, s.preset);
-    setChoice(m_controller, s.controller);
-    m_delay->setValue(s.delay);
-    s.machineName = offer->name;
-    s.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
-    MachineMaker makeMachine = [make = offer->make, seed = s.seed,
-                                speed = s.speed](const core::ShaftScenario& scenario) {
-        return std::shared_ptr<core::ShaftMachine>(make(scenario, seed, speed));
-    };
-    addAlarm(tr("Continuing run %1 from part %2.").arg(run.point.run.runId).arg(run.nextPart()), false);
-    m_session->resume(s, run.point.run.runId, std::move(makeMachine));
+    const runtime::DeviceView* output = m_context.devices && !request.cncOutput.isEmpty()
+                                            ? m_context.devices->view(request.cncOutput)
+                                            : nullptr;
+    runtime::RunStart start{request, offer->name, output ? output->name : QString(), offer->can, {}};
+    try {
+        start.make = offer->prepare(request);
+    } catch (const std::invalid_argument& e) {
+        refuseStart(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_onMachine = offer;
+    m_running = request;
+    if (resumeRunId)
+        m_session->resume(start, *resumeRunId);
+    else
+        m_session->start(start);
     m_start->setEnabled(false);
     return true;
 }
 
+bool ShaftRunPanel::startRequest(const runtime::RunRequest& request) {
+    showRequest(request);
+    return launch(request, std::nullopt);
+}
+
+bool ShaftRunPanel::resumeRun(const runtime::InterruptedRun& run) {
+    runtime::RunRequest request = run.request;
+    request.database = m_context.databasePath;
+    request.speed = kSpeeds[std::clamp(m_speed->currentIndex(), 0, 3)];
+    showRequest(request);
+    if (!launch(request, run.point.run.runId)) return false;
+    addAlarm(tr("Continuing run %1 from part %2.").arg(run.point.run.runId).arg(run.nextPart()), false);
+    return true;
+}
+
 void ShaftRunPanel::onStart() {
-    if (!mayRunMachine()) return;
-    RunSettings s = settings();
-    MachineMaker makeMachine;
-    if (s.operatorCycle) {
-        const QString problem = m_link->startProblem(s.outputDeviceId, s.gaugeDeviceId);
-        if (!problem.isEmpty()) {
+    const runtime::RunRequest r = request();
+    if (const std::optional<runtime::MachineOffer> offer = chosenOffer()) {
+        if (const QString problem = offer->startProblem(r); !problem.isEmpty()) {
             refuseStart(problem);
             return;
         }
-        const std::shared_ptr<const LathePorts> lathe = m_link->connectDevices(s.outputDeviceId, s.gaugeDeviceId);
-        s.outputName = lathe->outputName;
-        s.gaugeName = lathe->gaugeName;
-        makeMachine = [machine = lathe->machine](const core::ShaftScenario&) { return machine; };
-    } else if (const std::optional<devices::ShaftMachineOffer> offer = chosenOffer()) {
-        makeMachine = [make = offer->make, seed = s.seed, speed = s.speed](const core::ShaftScenario& scenario) {
-            return std::shared_ptr<core::ShaftMachine>(make(scenario, seed, speed));
-        };
-    } else {
-        refuseStart(tr("The machine chosen is no longer offered; choose another."));
-        return;
     }
-    saveChoices();
-    m_session->start(s, std::move(makeMachine));
-    m_start->setEnabled(false);
+    if (launch(r, std::nullopt)) saveChoices();
 }
 
 void ShaftRunPanel::refuseStart(const QString& reason) {
@@ -533,13 +578,16 @@ void ShaftRunPanel::onStop() {
 }
 
 void ShaftRunPanel::onPartFinished() {
-    m_link->finishPart();
-    updateLathePanel();
+    m_session->confirmPartFinished();
+}
+
+void ShaftRunPanel::releaseMachine(const QString& reason) {
+    if (m_onMachine) m_onMachine->release(reason);
 }
 
 // ---- what the loop reports -------------------------------------------------------------------------------
 
-void ShaftRunPanel::onStarted(const RunLayout& layout) {
+void ShaftRunPanel::onStarted(const runtime::RunLayout& layout) {
     m_layout = layout;
     m_haveRun = true;
     m_profile->setRun(layout);
@@ -554,15 +602,15 @@ void ShaftRunPanel::onStarted(const RunLayout& layout) {
 }
 
 void ShaftRunPanel::onStartFailed(const QString& reason) {
-    m_link->disconnectDevices(tr("the run did not start"));
+    releaseMachine(tr("the run did not start"));
     addAlarm(reason, true);
     updateControls();
 }
 
-void ShaftRunPanel::onSnapshot(const LoopSnapshot& snapshot) {
+void ShaftRunPanel::onSnapshot(const runtime::LoopSnapshot& snapshot) {
     const bool ended = snapshot.state == core::LoopState::Idle && m_snapshot.state != core::LoopState::Idle;
     m_snapshot = snapshot;
-    if (ended && m_layout.operatorCycle) m_link->disconnectDevices(tr("the run is over"));
+    if (ended) releaseMachine(tr("the run is over"));
     m_manual->setAwaitingPart(snapshot.manualEntry ? snapshot.awaitingPart : std::nullopt);
     if (m_context.state) m_context.state->setLoop(toAppLoop(snapshot.state), noticeText(snapshot.status));
     if (m_context.tuning)
@@ -608,12 +656,12 @@ void ShaftRunPanel::updateControls() {
         w->setEnabled(idle);
     m_pause->setText(s == core::LoopState::Paused ? tr("Continue") : tr("Pause"));
     // While a run goes, the page shows its machine; otherwise the one chosen.
-    const bool real = idle ? realLatheChosen() : m_layout.operatorCycle;
-    // The real lathe: its devices are chosen while idle; during a run the part cycle takes their place.
-    m_devicePicker->setVisible(real && idle);
-    m_lathePanel->setVisible(real && !idle);
-    const std::optional<devices::ShaftMachineOffer> offer = chosenOffer();
-    const bool adjustable = idle ? offer && offer->adjustableSpeed : m_layout.adjustableSpeed;
+    const std::optional<runtime::MachineOffer> offer = shownOffer();
+    const runtime::MachineCapabilities can = offer ? offer->can : runtime::MachineCapabilities{};
+    // Devices are chosen while idle; during a run the operator's part cycle takes their place.
+    m_devicePicker->setVisible(can.usesDevices && idle);
+    m_lathePanel->setVisible(can.operatorCycle && !idle);
+    const bool adjustable = idle ? can.adjustableSpeed : m_layout.adjustableSpeed;
     m_speedLabel->setVisible(adjustable);
     m_speed->setVisible(adjustable);
     updateLathePanel();
@@ -621,19 +669,22 @@ void ShaftRunPanel::updateControls() {
 
 void ShaftRunPanel::updateLathePanel() {
     LathePanel::View v;
-    const bool realRun = m_haveRun && m_layout.operatorCycle && m_link->isConnected();
+    const bool cycleRun = m_haveRun && m_layout.operatorCycle;
     v.runGoing =
-        realRun && (m_snapshot.state == core::LoopState::Running || m_snapshot.state == core::LoopState::Paused);
-    if (realRun) {
-        v.partOnMachine = m_link->partOnMachine();
-        v.cncValue = m_link->outputValue();
+        cycleRun && (m_snapshot.state == core::LoopState::Running || m_snapshot.state == core::LoopState::Paused);
+    if (cycleRun) {
+        const runtime::DeviceHub* hub = m_context.devices;
+        const runtime::DeviceView* output = hub ? hub->view(m_running.cncOutput) : nullptr;
+        const runtime::DeviceView* gauge = hub && !m_running.gauge.isEmpty() ? hub->view(m_running.gauge) : nullptr;
+        v.partOnMachine = m_snapshot.partOnMachine;
+        v.cncValue = output ? output->liveValue : QString();
         v.awaitingPart = m_snapshot.awaitingPart;
         v.nextPoint = m_snapshot.nextPoint;
         v.pointCount = static_cast<int>(m_layout.pointZMm.size());
         v.nextPointXMm = m_layout.pointZMm.value(m_snapshot.nextPoint);
         v.byHand = m_snapshot.manualEntry;
-        v.haveGauge = m_link->ports() && !m_link->ports()->gaugeName.isEmpty();
-        v.gaugeValue = m_link->gaugeValue();
+        v.haveGauge = !m_running.gauge.isEmpty();
+        v.gaugeValue = gauge ? gauge->liveValue : QString();
         v.gaugeReady = m_snapshot.gauge.ready();
     }
     m_lathePanel->setView(v);
@@ -653,39 +704,43 @@ QString ShaftRunPanel::stateText() const {
     return {};
 }
 
+QString ShaftRunPanel::devicesIdleText() const {
+    auto line = [](const QString& what, const QString& name, const core::DeviceHealth& h) {
+        return tr("%1: “%2” — %3").arg(what, name, h.ready() ? healthWord(h.state) : healthText(h));
+    };
+    const runtime::DeviceHub* hub = m_context.devices;
+    const runtime::DeviceView* output = hub ? hub->view(m_output->currentData().toString()) : nullptr;
+    const QString gaugeId = m_gauge->currentData().toString();
+    const runtime::DeviceView* gauge = hub && !gaugeId.isEmpty() ? hub->view(gaugeId) : nullptr;
+    const QString cnc = output ? line(tr("CNC"), output->name, output->health)
+                               : tr("CNC: none (add a correction output on the Devices page)");
+    const QString diameters = gauge ? line(tr("Gauge"), gauge->name, gauge->health) : tr("Diameters: typed in by hand");
+    return QStringLiteral("%1\n%2").arg(cnc, diameters);
+}
+
 QString ShaftRunPanel::deviceText() const {
     const bool idle = m_snapshot.state == core::LoopState::Idle;
-    const bool real = idle ? realLatheChosen() : m_layout.operatorCycle;
-    if (!real) {
+    const std::optional<runtime::MachineOffer> offer = shownOffer();
+    if (!offer || !offer->can.usesDevices) {
         if (!m_haveRun || idle)
             return tr("Machine: %1 (its own CNC, gauge and part cycle)").arg(m_machine->currentText());
         const QString gauge = m_snapshot.manualEntry ? tr("Diameters: typed in by hand")
                                                      : tr("Gauge: %1").arg(healthText(m_snapshot.gauge));
         return tr("%1 · CNC: %2").arg(gauge, healthWord(m_snapshot.cnc.state));
     }
-    // The real lathe: which devices, and their state in a word (with the reason when not ready).
-    // While idle the reason of a device that is not ready is shown; during a run the loop's own words and the
-    // alarms say what it means for the run.
-    auto line = [idle](const QString& what, const QString& name, const core::DeviceHealth& h) {
-        return tr("%1: “%2” — %3").arg(what, name, h.ready() || !idle ? healthWord(h.state) : healthText(h));
+    // Devices from the Devices page: which, and their state in a word (with the reason when not ready). While
+    // idle the reason of a device that is not ready is shown; during a run the loop's own words and the alarms
+    // say what it means for the run.
+    if (idle) return devicesIdleText();
+    auto line = [](const QString& what, const QString& name, const core::DeviceHealth& h) {
+        return tr("%1: “%2” — %3").arg(what, name, healthWord(h.state));
     };
-    if (idle) {
-        const devices::DeviceManager* manager = m_context.devices;
-        const devices::DeviceEntry* output = manager ? manager->entry(m_output->currentData().toString()) : nullptr;
-        const devices::DeviceEntry* gauge = manager ? manager->entry(m_gauge->currentData().toString()) : nullptr;
-        const QString cnc = output ? line(tr("CNC"), output->name, output->device->health())
-                                   : tr("CNC: none (add a correction output on the Devices page)");
-        const QString diameters =
-            gauge ? line(tr("Gauge"), gauge->name, gauge->device->health()) : tr("Diameters: typed in by hand");
-        return QStringLiteral("%1\n%2").arg(cnc, diameters);
-    }
-    const LathePorts* ports = m_link->ports();
-    const QString outputName = ports ? ports->outputName : QString();
-    const QString gaugeName = ports ? ports->gaugeName : QString();
-    const QString diameters = m_snapshot.manualEntry || gaugeName.isEmpty()
-                                  ? tr("Diameters: typed in by hand")
-                                  : line(tr("Gauge"), gaugeName, m_snapshot.gauge);
-    return QStringLiteral("%1\n%2").arg(line(tr("CNC"), outputName, m_snapshot.cnc), diameters);
+    const runtime::DeviceHub* hub = m_context.devices;
+    const runtime::DeviceView* output = hub ? hub->view(m_running.cncOutput) : nullptr;
+    const runtime::DeviceView* gauge = hub && !m_running.gauge.isEmpty() ? hub->view(m_running.gauge) : nullptr;
+    const QString diameters = m_snapshot.manualEntry || !gauge ? tr("Diameters: typed in by hand")
+                                                               : line(tr("Gauge"), gauge->name, m_snapshot.gauge);
+    return QStringLiteral("%1\n%2").arg(line(tr("CNC"), output ? output->name : QString(), m_snapshot.cnc), diameters);
 }
 
 void ShaftRunPanel::updateTexts() {
@@ -694,10 +749,8 @@ void ShaftRunPanel::updateTexts() {
                            : m_snapshot.state == core::LoopState::Paused  ? QStringLiteral("color: #9a5b00;")
                            : m_snapshot.state == core::LoopState::Running ? QStringLiteral("color: #2e7d32;")
                                                                           : QString());
-    const std::optional<devices::ShaftMachineOffer> offer = chosenOffer();
-    const QString idleText =
-        offer ? tr("Press Start: %1").arg(offer->description)
-              : tr("Press Start: each part's corrections go to the CNC; you machine the part and press Part finished.");
+    const std::optional<runtime::MachineOffer> offer = chosenOffer();
+    const QString idleText = offer ? tr("Press Start: %1").arg(offer->description) : tr("Choose a machine.");
     m_detail->setText(m_haveRun ? noticeText(m_snapshot.status) : idleText);
     m_devices->setText(deviceText());
     m_partCounter->setText(m_haveRun ? tr("Parts done: %1").arg(m_snapshot.partsFinished) : QString());

@@ -6,9 +6,11 @@
 #include <optional>
 
 #include "core/loop/loop_events.h"
-#include "devices/api/shaft_machine_offer.h"
+#include "runtime/run/loop_snapshot.h"
+#include "runtime/run/machine_catalog.h"
+#include "runtime/run/run_request.h"
+#include "runtime/run/stored_runs.h"
 #include "ui/app_context.h"
-#include "ui/run/run_settings.h"
 
 class QCheckBox;
 class QComboBox;
@@ -17,48 +19,50 @@ class QListWidget;
 class QPushButton;
 class QSpinBox;
 
+namespace tt::runtime {
+class RunSession;
+}  // namespace tt::runtime
+
 namespace tt::ui {
 
-class LatheLink;
 class LathePanel;
 class ManualEntryPanel;
 class ProfilePanel;
-struct InterruptedRun;
-class RunSession;
 class VerdictCounter;
 
 /// Run-to-run control of the shaft profile (paper 000), the Run page's first tab: the closed loop with the
-/// run history. Start / Pause / Stop, the set-up, the controller, the delay z and the speed (machines whose
-/// time can run faster); the machine: one a device plugin offers whole (devices::ShaftMachineOffer, e.g.
-/// the built-in simulator's lathe), or the lathe assembled from the CNC output and the gauge chosen from the
-/// Devices page (AppContext::devices) with the part cycle confirmed with the big Part finished button; the live profile
-/// of the last part with the tolerance band, the systematic model and the correction path; a history strip of the error
-/// at each control point; the loop and the devices it uses in plain words; the alarms; manual entry of diameters. The
-/// loop runs in its own thread (RunSession), so the window never waits; the devices stay in this thread (LatheLink).
+/// run history. Start / Pause / Stop, the set-up, the controller, the delay z and the speed; the machine: any
+/// the runtime offers (runtime::MachineCatalog: the plugins' complete machines such as the built-in
+/// simulator's lathe, and the lathe assembled from the CNC output and gauge of the Devices page). The page
+/// asks what the chosen machine can do (its speed, devices to choose, a part cycle the operator confirms with
+/// the big Part finished button), never what it is. The live profile of the last part with the tolerance band,
+/// the systematic model and the correction path; a history strip of the error at each control point; the loop
+/// and its devices in plain words; the alarms; manual entry of diameters. The controls make one run request
+/// (runtime::RunRequest); the loop runs in its own thread (runtime::RunSession) and the devices in theirs.
 class ShaftRunPanel : public QWidget {
     Q_OBJECT
 public:
-    /// `context.devices` may be null: then no machine is offered and a run is refused with the reason.
+    /// `context.devices` may be null: then no machine but the lathe from devices is offered, and it refuses.
     explicit ShaftRunPanel(AppContext& context, QWidget* parent = nullptr);
     ~ShaftRunPanel() override;
     /// Sets every visible text (also on a language change).
     void retranslate();
 
     /// The loop thread's handle.
-    RunSession& session() { return *m_session; }
-    /// The real lathe's devices as connected to the loop.
-    LatheLink& lathe() { return *m_link; }
-    /// The plots, the diameters typed by hand, the real lathe's part cycle, the alarm list.
+    runtime::RunSession& session() { return *m_session; }
+    /// The plots, the diameters typed by hand, the operator's part cycle, the alarm list.
     ProfilePanel* profilePanel() const { return m_profile; }
     ManualEntryPanel* manualEntry() const { return m_manual; }
     LathePanel* lathePanel() const { return m_lathePanel; }
     QListWidget* alarms() const { return m_alarms; }
-    /// The settings the controls hold now.
-    RunSettings settings() const;
-    /// Continues an interrupted run (ui/run/interrupted_run.h) on its machine with its stored settings; false
-    /// (with the reason in the alarm list and a warning) when the user may not run the machine, a run is
-    /// going or the machine is not offered.
-    bool resumeRun(const InterruptedRun& run);
+    /// The run request the controls make now (a fresh seed each time).
+    runtime::RunRequest request() const;
+    /// Starts `request` as it is (its machine, seed, end and plant; the controls show its set-up); false with
+    /// the reason in the alarm list and a warning when it cannot start.
+    bool startRequest(const runtime::RunRequest& request);
+    /// Continues an interrupted run (runtime/run/stored_runs.h) on its machine with its stored request; false
+    /// (with the reason) when the user may not run the machine, a run is going or the machine is not offered.
+    bool resumeRun(const runtime::InterruptedRun& run);
 
 signals:
     /// The out-of-tolerance alert sounded: a rework or scrap part with the setting kSoundOnOutOfTolerance on
@@ -70,40 +74,52 @@ private:
     QWidget* buildSetupRow();
     QWidget* buildDevicePicker();
     QWidget* buildSide();
+    QWidget* buildLeft();
+    void connectControls();
+    void connectSession();
+    void connectDevices();
     void onStart();
+    /// Readies the offer's machine for `request` and hands the run to the loop thread; `resumeRunId` continues
+    /// a stored run. False (with the reason shown) when it cannot.
+    bool launch(const runtime::RunRequest& request, std::optional<qint64> resumeRunId);
     void refuseStart(const QString& reason);
     /// The logged-in user may run the machine (Permission::RunMachine); refuses the start otherwise.
     bool mayRunMachine();
+    void showRequest(const runtime::RunRequest& request);
     void onPauseContinue();
     void onStop();
     void onPartFinished();
-    void onStarted(const RunLayout& layout);
+    void onStarted(const runtime::RunLayout& layout);
     void onStartFailed(const QString& reason);
-    void onSnapshot(const LoopSnapshot& snapshot);
+    void onSnapshot(const runtime::LoopSnapshot& snapshot);
     void onLoopEvent(const core::LoopEvent& event);
     void addAlarm(const QString& text, bool severe);
     void onOutOfTolerance();
     void fillDeviceChoices();
     void restoreChoices();
     void saveChoices() const;
-    bool realLatheChosen() const;
-    /// The machine offer chosen, or none (the lathe assembled from the devices).
-    std::optional<devices::ShaftMachineOffer> chosenOffer() const;
+    /// The machine chosen (while idle) or the one the run is on.
+    std::optional<runtime::MachineOffer> shownOffer() const;
+    std::optional<runtime::MachineOffer> chosenOffer() const;
     void fillMachineChoices();
     void updateControls();
     void updateTexts();
     void updateLathePanel();
     QString stateText() const;
     QString deviceText() const;
+    QString devicesIdleText() const;
     QString deviceChoiceText(const QString& id) const;
+    void releaseMachine(const QString& reason);
 
     AppContext& m_context;
-    RunSession* m_session;
-    LatheLink* m_link;
-    LoopSnapshot m_snapshot;
+    runtime::RunSession* m_session;
+    runtime::MachineCatalog m_catalog;
+    runtime::LoopSnapshot m_snapshot;
     bool m_haveRun = false;
-    RunLayout m_layout;
-    QList<devices::ShaftMachineOffer> m_offers;  ///< complete machines the plugins offer
+    runtime::RunLayout m_layout;
+    QList<runtime::MachineOffer> m_offers;          ///< every machine a run can go on
+    std::optional<runtime::MachineOffer> m_onMachine;  ///< the machine of the run started last
+    runtime::RunRequest m_running;                  ///< the request of the run started last
 
     QPushButton* m_start;
     QPushButton* m_pause;

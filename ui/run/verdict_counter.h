@@ -1,5 +1,7 @@
 #pragma once
 
+#include <QString>
+
 #include <QWidget>
 #include <cstdint>
 #include <optional>
@@ -10,6 +12,11 @@
 class QLabel;
 
 namespace tt::ui {
+
+/// The setting (QSettings key) "Sound on rework or scrap": the Run page beeps for every part judged rework or
+/// scrap (View menu of the main window).
+inline const QString kSoundOnOutOfTolerance = QStringLiteral("run/soundOnOutOfTolerance");
+
 
 /// The Run page's tally of the measured parts by tolerance verdict: the last part's verdict in a big coloured
 /// banner (scrap red, rework amber, good green: an out-of-tolerance part never looks accepted), the good,

@@ -1,5 +1,6 @@
 // The host side: settings schemas, the plugin folder, the manager (plugins loaded from the build
 // tree's plugin folder, instances, persistence, status summary).
+#include "devices/api/simulated_instrument.h"
 #include "devices/api/device_manager.h"
 
 #include <gtest/gtest.h>
@@ -98,7 +99,7 @@ TEST(DeviceManager, SummaryNamesTheFirstDeviceInError) {
     QObject::connect(&manager, &DeviceManager::deviceChanged, [&](const QString& id) { changes += id == g; });
     manager.device(g)->open();
     EXPECT_EQ(manager.summary().tone, DeviceSummary::Tone::Ok);
-    manager.device(g)->faultSwitches()->disconnected = true;
+    tt::devices::simulatedInstrument(*manager.device(g))->faultSwitches().disconnected = true;
     ASSERT_TRUE(QTest::qWaitFor([&] { return manager.summary().tone == DeviceSummary::Tone::Fault; }, 2000));
     EXPECT_TRUE(
         manager.summary().text.startsWith(QStringLiteral("Micrometer: the simulated gauge micrometer is unplugged")))

@@ -12,6 +12,7 @@
 #include "core/calibration/kp_procedure.h"
 #include "core/control/dither_current_difference.h"
 #include "core/loop/loop_clock.h"
+#include "devices/api/simulated_instrument.h"
 #include "devices/api/device_manager.h"
 #include "devices/simulator/mandrel_emulator.h"
 #include "devices/simulator/simulator_plugin.h"
@@ -42,7 +43,7 @@ protected:
 
 TEST_F(CalibrationStandTest, TheMandrelsScrewJackBendsTheBarUntilReleased) {
     auto d = make(DeviceKind::Probe);
-    CalibrationStand* stand = d->calibrationStand();
+    CalibrationStand* stand = tt::devices::simulatedInstrument(*d)->calibrationStand();
     ASSERT_NE(stand, nullptr);
     EXPECT_TRUE(stand->bendsBar());
     EXPECT_FALSE(stand->appliesLoad());
@@ -70,7 +71,7 @@ TEST_F(CalibrationStandTest, TheMandrelsScrewJackBendsTheBarUntilReleased) {
 
 TEST_F(CalibrationStandTest, TheCrossFeedsHydraulicJackGivesTheTrueKpThroughTheRegisters) {
     auto d = make(DeviceKind::DriveCurrent);  // polled every 20 ms: the PLC cycle of the stand
-    CalibrationStand* stand = d->calibrationStand();
+    CalibrationStand* stand = tt::devices::simulatedInstrument(*d)->calibrationStand();
     ASSERT_NE(stand, nullptr);
     EXPECT_TRUE(stand->appliesLoad());
     EXPECT_FALSE(stand->bendsBar());
@@ -110,11 +111,11 @@ TEST(CalibrationStand, OnlyTheSimulatorsProbeAndDriveHaveOneUnlessSetOff) {
     for (DeviceKind kind : allDeviceKinds()) {
         auto d = plugin.create(kind, {}, DeviceContext{&clock});
         const bool expected = kind == DeviceKind::Probe || kind == DeviceKind::DriveCurrent;
-        EXPECT_EQ(d->calibrationStand() != nullptr, expected) << kindKey(kind).toStdString();
+        EXPECT_EQ(tt::devices::simulatedInstrument(*d)->calibrationStand() != nullptr, expected) << kindKey(kind).toStdString();
     }
     // "On a calibration stand" off: a simulated machine, where the operator loads the bar.
     for (DeviceKind kind : {DeviceKind::Probe, DeviceKind::DriveCurrent})
-        EXPECT_EQ(plugin.create(kind, {{QStringLiteral("stand"), false}}, DeviceContext{&clock})->calibrationStand(),
+        EXPECT_EQ(tt::devices::simulatedInstrument(*plugin.create(kind, {{QStringLiteral("stand"), false}}, DeviceContext{&clock}))->calibrationStand(),
                   nullptr);
 }
 

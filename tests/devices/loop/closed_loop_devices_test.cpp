@@ -16,6 +16,7 @@
 #include "core/loop/loop_engine.h"
 #include "core/sim/shaft/lathe_simulator.h"
 #include "core/sim/shaft/lathe_station.h"
+#include "devices/api/simulated_instrument.h"
 #include "devices/gauge_serial/gauge_serial_factory.h"
 #include "devices/simulator/micrometer_emulator.h"
 #include "devices/simulator/simulator_plugin.h"
@@ -157,7 +158,7 @@ TEST(ClosedLoopWithGaugePlugins, SimulatorPluginAndSerialGaugeGiveTheSameResult)
                                 std::make_unique<Integrator>(5));
         engine.start(shop.run());
         drive(engine, shop, [&](double d) {
-            gauge->simulationInputs()->setDiameterSource([d] { return d; });
+            tt::devices::simulatedInstrument(*gauge)->simulationInputs().setDiameterSource([d] { return d; });
             gauge->diameterGauge()->requestReading();
         });
         ASSERT_TRUE(engine.complete()) << engine.detail();

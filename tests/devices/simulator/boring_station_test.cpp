@@ -7,6 +7,7 @@
 #include <QTest>
 
 #include "core/run/boring_run.h"
+#include "devices/api/simulated_instrument.h"
 #include "devices/api/steady_clock.h"
 #include "devices/simulator/simulator_plugin.h"
 #include "tests/core/boring/heavy_scenario.h"
@@ -30,14 +31,14 @@ protected:
 TEST_F(SimulatedBoringStationTest, OnlyTheDriveAndTheMandrelOfferAPass) {
     for (DeviceKind kind : allDeviceKinds()) {
         auto d = plugin.create(kind, {}, DeviceContext{&clock});
-        EXPECT_EQ(d->boringTruth() != nullptr, kind == DeviceKind::DriveCurrent || kind == DeviceKind::Probe);
+        EXPECT_EQ(tt::devices::simulatedInstrument(*d)->boringTruth() != nullptr, kind == DeviceKind::DriveCurrent || kind == DeviceKind::Probe);
     }
 }
 
 TEST_F(SimulatedBoringStationTest, ThePassOfTheDriveCompensatesAndFollowsItsFaultSwitches) {
     auto drive = open(DeviceKind::DriveCurrent);
     const core::BoringScenario s = core::test::heavyBoring();
-    const std::shared_ptr<core::BoringStation> pass = drive->boringTruth()->beginPass(s);
+    const std::shared_ptr<core::BoringStation> pass = tt::devices::simulatedInstrument(*drive)->boringTruth()->beginPass(s);
     ASSERT_NE(pass->driveReadout(), nullptr);
     EXPECT_TRUE(pass->runsAheadOfTime());
     const std::unique_ptr<core::BoringRun> run =
@@ -53,29 +54,29 @@ TEST_F(SimulatedBoringStationTest, ThePassOfTheDriveCompensatesAndFollowsItsFaul
 
     // The drive's silent switch: after three missed polls the device is in error, and so is the
     // pass's read-out, with the device's words.
-    drive->faultSwitches()->silent = true;
+    tt::devices::simulatedInstrument(*drive)->faultSwitches().silent = true;
     ASSERT_TRUE(QTest::qWaitFor([&] { return drive->health().state == core::DeviceState::Error; }, 2000));
     QTest::qWait(50);
     const core::BoringRunCycle silent = run->cycle();
     EXPECT_TRUE(silent.compensation->step.holding);
     EXPECT_EQ(silent.compensation->reading.problem, core::ReadingProblem::SourceNotReady);
     EXPECT_EQ(silent.compensation->reading.sourceHealth.message, drive->health().message);
-    drive->faultSwitches()->silent = false;
+    tt::devices::simulatedInstrument(*drive)->faultSwitches().silent = false;
     ASSERT_TRUE(QTest::qWaitFor([&] { return drive->health().ready(); }, 2000));
     QTest::qWait(50);
     EXPECT_EQ(pass->driveReadout()->health().state, core::DeviceState::Ready);
     // Unplugged likewise; and a pass that begins while the device is down begins gated.
-    drive->faultSwitches()->disconnected = true;
+    tt::devices::simulatedInstrument(*drive)->faultSwitches().disconnected = true;
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return pass->driveReadout()->health().state == core::DeviceState::Error; }, 2000));
-    const std::shared_ptr<core::BoringStation> another = drive->boringTruth()->beginPass(s);
+    const std::shared_ptr<core::BoringStation> another = tt::devices::simulatedInstrument(*drive)->boringTruth()->beginPass(s);
     EXPECT_EQ(another->driveReadout()->health().state, core::DeviceState::Error);
 }
 
 TEST_F(SimulatedBoringStationTest, ThePassOfTheMandrelIsCalibratedFirst) {
     auto probe = open(DeviceKind::Probe);
     const core::BoringScenario s = core::test::heavyBoring();
-    const std::shared_ptr<core::BoringStation> pass = probe->boringTruth()->beginPass(s);
+    const std::shared_ptr<core::BoringStation> pass = tt::devices::simulatedInstrument(*probe)->boringTruth()->beginPass(s);
     ASSERT_NE(pass->probe(), nullptr);
     const std::unique_ptr<core::BoringRun> run =
         core::buildBoringRun(core::boringChoices(s, core::BoringMethod::Probe), *pass);

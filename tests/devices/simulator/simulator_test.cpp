@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "core/common/crc32c.h"
+#include "devices/api/simulated_instrument.h"
 #include "devices/api/steady_clock.h"
 #include "devices/simulator/simulated_drive.h"
 #include "devices/simulator/simulated_output.h"
@@ -49,8 +50,7 @@ TEST_F(SimulatorTest, MakesEveryKindWithItsPort) {
     EXPECT_EQ(plugin.kinds().size(), 4);
     for (DeviceKind kind : allDeviceKinds()) {
         auto d = make(kind);
-        EXPECT_NE(d->faultSwitches(), nullptr);
-        EXPECT_NE(d->simulationInputs(), nullptr);
+        EXPECT_NE(tt::devices::simulatedInstrument(*d), nullptr);
         EXPECT_EQ(d->diameterGauge() != nullptr, kind == DeviceKind::Gauge);
         EXPECT_EQ(d->deflectionProbe() != nullptr, kind == DeviceKind::Probe);
         EXPECT_EQ(d->driveCurrentReadout() != nullptr, kind == DeviceKind::DriveCurrent);
@@ -62,7 +62,7 @@ TEST_F(SimulatorTest, GaugeMeasuresTheInjectedDiametersAtItsResolution) {
     auto d = make(DeviceKind::Gauge, {{QStringLiteral("decimals"), 3}});
     std::vector<double> truth{27.01234, 26.99951, 27.1};
     std::size_t next = 0;
-    d->simulationInputs()->setDiameterSource([&] { return truth[next++]; });
+    tt::devices::simulatedInstrument(*d)->simulationInputs().setDiameterSource([&] { return truth[next++]; });
     for (std::size_t i = 0; i < truth.size(); ++i)
         d->diameterGauge()->requestReading();
     std::vector<double> got;
@@ -74,12 +74,12 @@ TEST_F(SimulatorTest, GaugeMeasuresTheInjectedDiametersAtItsResolution) {
 TEST_F(SimulatorTest, GaugeFaultSwitches) {
     auto d =
         make(DeviceKind::Gauge, {{QStringLiteral("nominalDiameterMm"), 30.0}, {QStringLiteral("replyTimeoutMs"), 150}});
-    FaultSwitches* f = d->faultSwitches();
+    FaultSwitches* f = &tt::devices::simulatedInstrument(*d)->faultSwitches();
     auto* gauge = d->diameterGauge();
     // Stuck: the same value, whatever the source says.
     gauge->requestReading();
     f->stuck = true;
-    d->simulationInputs()->setDiameterSource([] { return 31.0; });
+    tt::devices::simulatedInstrument(*d)->simulationInputs().setDiameterSource([] { return 31.0; });
     gauge->requestReading();
     EXPECT_DOUBLE_EQ(gauge->takeReading()->diameterMm, 30.0);
     EXPECT_DOUBLE_EQ(gauge->takeReading()->diameterMm, 30.0);
@@ -128,13 +128,13 @@ TEST_F(SimulatorTest, GaugeRefusesInchReadingsOnAMillimetreJob) {
 
 TEST_F(SimulatorTest, ProbeStreamsTheInjectedDeflectionAndCountsCorruptFrames) {
     auto d = make(DeviceKind::Probe, {{QStringLiteral("rateHz"), 500}});
-    d->simulationInputs()->setDeflectionSource([](double) { return std::array<double, 2>{0.0421, -0.0013}; });
+    tt::devices::simulatedInstrument(*d)->simulationInputs().setDeflectionSource([](double) { return std::array<double, 2>{0.0421, -0.0013}; });
     (void)collect([&] { return d->deflectionProbe()->takeSample(); }, 50);
     const auto samples = collect([&] { return d->deflectionProbe()->takeSample(); }, 100);
     ASSERT_FALSE(samples.empty());
     EXPECT_NEAR(samples.back().deflectionMm[0], 0.0421, 1e-6);
     EXPECT_TRUE(samples.back().linearised);
-    d->faultSwitches()->malformed = true;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().malformed = true;
     const auto during = collect([&] { return d->deflectionProbe()->takeSample(); }, 100);
     for (const auto& s : during)
         EXPECT_NEAR(s.deflectionMm[0], 0.0421, 1e-6);
@@ -142,10 +142,10 @@ TEST_F(SimulatorTest, ProbeStreamsTheInjectedDeflectionAndCountsCorruptFrames) {
     for (const auto& s : d->statistics())
         if (s.label == QStringLiteral("Frames corrupt")) corrupt = s.value;
     EXPECT_GT(corrupt.toInt(), 0);
-    d->faultSwitches()->malformed = false;
-    d->faultSwitches()->silent = true;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().malformed = false;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().silent = true;
     ASSERT_TRUE(waitState(*d, core::DeviceState::Error));
-    d->faultSwitches()->silent = false;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().silent = false;
     ASSERT_TRUE(waitState(*d, core::DeviceState::Ready));
 }
 
@@ -177,7 +177,7 @@ TEST_F(SimulatorTest, DriveOscillatesAsInPaper001) {
     ASSERT_GE(samples.size(), 3u);
     for (const auto& s : samples)
         EXPECT_NEAR(std::fabs(s.currentA - 0.6), 2.0, 0.006);  // int16 in 0.01 A
-    d->faultSwitches()->malformed = true;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().malformed = true;
     EXPECT_TRUE(collect([&] { return d->driveCurrentReadout()->takeSample(); }, 50).empty());
     EXPECT_TRUE(d->lastError().contains(QStringLiteral("NaN")));
 }
@@ -185,11 +185,11 @@ TEST_F(SimulatorTest, DriveOscillatesAsInPaper001) {
 TEST_F(SimulatorTest, OutputVerifiesAndForwardsCorrections) {
     auto d = make(DeviceKind::CorrectionOutput);
     std::vector<double> forwarded;
-    d->simulationInputs()->setOffsetSink([&](double x) { forwarded.push_back(x); });
+    tt::devices::simulatedInstrument(*d)->simulationInputs().setOffsetSink([&](double x) { forwarded.push_back(x); });
     EXPECT_TRUE(d->correctionOutput()->sendDynamicOffset(-0.0123).ok);
     EXPECT_EQ(forwarded, std::vector<double>{-0.0123});
     EXPECT_NEAR(*dynamic_cast<SimulatedOutput&>(*d).plcOffsetMm(), -0.0123, 1e-12);
-    d->faultSwitches()->malformed = true;
+    tt::devices::simulatedInstrument(*d)->faultSwitches().malformed = true;
     const core::OutputResult r = d->correctionOutput()->sendDynamicOffset(0.02);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.message.find("read-back mismatch"), std::string::npos);

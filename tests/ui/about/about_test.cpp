@@ -8,7 +8,7 @@
 #include <QLabel>
 #include <QMessageBox>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -26,7 +26,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite"), &devices};
 };
 

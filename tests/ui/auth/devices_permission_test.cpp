@@ -8,7 +8,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/auth/user_session.h"
@@ -23,7 +23,7 @@ TEST(DevicesUnderRoles, AnOperatorCannotAddADeviceAndTheEngineersIsAudited) {
     test::ScriptedPrompt prompt;
     AppState state;
     UserSession session(&state);
-    devices::DeviceManager manager;  // the built-in simulator only
+    runtime::DeviceHub manager;  // the built-in simulator only
     AppContext context{&prompt, &state, nullptr, dir.filePath(QStringLiteral("history.sqlite")), &manager};
     context.session = &session;
     context.access = &session.guard();

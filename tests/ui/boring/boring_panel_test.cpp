@@ -7,6 +7,7 @@
 // reaches the CNC, a silent drive holds it, a new run resumes from it and zeroing it asks first; a
 // source without a pass of its own (a Modbus drive) needs a tool and a CNC output.
 #include "ui/boring/boring_panel.h"
+#include "hub_faults.h"
 
 #include <gtest/gtest.h>
 
@@ -21,12 +22,12 @@
 #include <cmath>
 
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "devices/simulator/simulated_output.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 
 namespace tt::ui {
 namespace {
@@ -59,7 +60,7 @@ protected:
     }
     QString addSimulator(devices::DeviceKind kind, const QString& name) {
         const QString id = manager.addDevice(QStringLiteral("simulator"), kind, name, {});
-        manager.device(id)->open();
+        manager.open(id);
         return id;
     }
     static double stepLimitMm(const BoringPanel& panel) {
@@ -74,7 +75,7 @@ protected:
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
-    devices::DeviceManager manager;
+    runtime::DeviceHub manager;
     AppContext context{&prompt, &state, nullptr, QString()};
 };
 
@@ -125,7 +126,7 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     // the panel says why.
     ASSERT_TRUE(panel.silentBox()->isVisible());
     panel.silentBox()->setChecked(true);
-    EXPECT_TRUE(manager.device(drive)->faultSwitches()->silent);
+    EXPECT_TRUE(manager.view(drive)->faults->silent);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 5000));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     EXPECT_FALSE(panel.detail().isEmpty());  // the device's own words, for the engineer
@@ -173,7 +174,7 @@ TEST_F(BoringPanelTest, TheMandrelsOwnPassCompensatesAndASilentMandrelHolds) {
         << *s.boreErrorMaxMm << " mm against " << *s.uncompensatedMaxMm << " mm";
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_4_probe")));
     // A silent mandrel (its fault switch on the Devices page) holds the offset too.
-    manager.device(probe)->faultSwitches()->silent = true;
+    test::setFault(manager, probe, &devices::FaultSwitches::silent, true);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 5000));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("probe mandrel"))) << panel.reason().toStdString();
     const double held = panel.stats().offsetMm;
@@ -246,16 +247,18 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().offsetMm > 0.004; }, 8000)) << panel.reason().toStdString();
     ASSERT_TRUE(panel.stats().forceN.has_value());
     EXPECT_NEAR(*panel.stats().forceN, 90.0, 5.0);
-    const auto* plc = dynamic_cast<devices::SimulatedOutput*>(manager.device(output));
-    ASSERT_NE(plc, nullptr);
+    std::optional<double> plcOffsetMm;
+    manager.withDevice(output, [&](devices::Device& d) {
+        if (const auto* plc = dynamic_cast<devices::SimulatedOutput*>(&d)) plcOffsetMm = plc->plcOffsetMm();
+    });
     // What the CNC holds: the offsets reach it through the relay, at most one PLC cycle behind.
-    ASSERT_TRUE(plc->plcOffsetMm().has_value());
-    EXPECT_NEAR(*plc->plcOffsetMm(), panel.stats().offsetMm, stepLimitMm(panel) + 1e-9);
+    ASSERT_TRUE(plcOffsetMm.has_value());
+    EXPECT_NEAR(*plcOffsetMm, panel.stats().offsetMm, stepLimitMm(panel) + 1e-9);
     EXPECT_LE(panel.stats().largestStepMm, stepLimitMm(panel) + 1e-9);
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_5_devices")));
 
     // The drive read-out goes silent (fault switch): the offset stays where it is.
-    manager.device(drive)->faultSwitches()->silent = true;
+    test::setFault(manager, drive, &devices::FaultSwitches::silent, true);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 3000));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     QTest::qWait(100);  // the last offset before the hold reaches the CNC
@@ -268,7 +271,7 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     panel.stop();
     EXPECT_DOUBLE_EQ(*plc->plcOffsetMm(), held);  // stopping does not move the tool
     // A new run starts from the offset the CNC holds, not from 0 (no jump of the tool).
-    manager.device(drive)->faultSwitches()->silent = false;
+    test::setFault(manager, drive, &devices::FaultSwitches::silent, false);
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, 5000)) << panel.reason().toStdString();
@@ -297,7 +300,7 @@ TEST_F(BoringPanelTest, AProbeDeviceDrivesTheOffsetAndRemovingADeviceStopsTheRun
     ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:probe").arg(probe)));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     EXPECT_TRUE(panel.planeBox()->isVisible());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(probe)->health().ready(); }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.ready(); }, 3000));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     // +0.020 mm deflection: the offset goes to −0.020 mm at 0.05 mm/s (0.4 s).
     ASSERT_TRUE(QTest::qWaitFor([&] { return std::abs(panel.stats().offsetMm + 0.020) < 1e-6; }, 5000))

@@ -11,12 +11,13 @@
 #include <QTest>
 
 #include "boring_tab.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "english_words.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
+#include "hub_faults.h"
 
 namespace tt::ui {
 namespace {
@@ -50,7 +51,7 @@ protected:
         EXPECT_EQ(panel->headline(), QStringLiteral("Компенсация")) << panel->reason().toStdString();
         // The source goes silent (its fault switch): the offset is held, and the tab says why, with
         // the device's own words underneath.
-        devices.device(device)->faultSwitches()->silent = true;
+        test::setFault(devices, device, &devices::FaultSwitches::silent, true);
         EXPECT_TRUE(QTest::qWaitFor(
             [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); }, 5000))
             << panel->reason().toStdString();
@@ -60,7 +61,7 @@ protected:
         QStringList english = test::englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
         panel->stop();
         english << test::englishIn(panel, {QStringLiteral("Boring bar D80 L800")});
-        devices.device(device)->faultSwitches()->silent = false;
+        test::setFault(devices, device, &devices::FaultSwitches::silent, false);
         return english;
     }
 
@@ -68,7 +69,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
     QString drive;
     QString probe;

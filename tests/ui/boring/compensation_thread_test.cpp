@@ -17,11 +17,11 @@
 #include <chrono>
 
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/boring/boring_panel.h"
-#include "ui/boring/compensation_session.h"
+#include "runtime/boring/compensation_session.h"
 
 namespace tt::ui {
 namespace {
@@ -57,11 +57,54 @@ protected:
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
-    devices::DeviceManager manager;
+    runtime::DeviceHub manager;
     AppContext context{&prompt, &state, nullptr, QString()};
     QString drive;
     QString output;
 };
+
+/// The largest gap between two instants of `times` within [from, to], s (0 with fewer than two).
+double largestGapS(const std::vector<Clock::time_point>& times, Clock::time_point from, Clock::time_point to) {
+    double largest = 0.0;
+    for (std::size_t i = 1; i < times.size(); ++i)
+        if (times[i - 1] >= from && times[i] <= to) largest = std::max(largest, seconds(times[i - 1], times[i]));
+    return largest;
+}
+
+TEST_F(CompensationThread, ABusyWindowForTwoSecondsDelaysNeitherACycleNorAnOffsetWrite) {
+    // The compensation has its thread, the devices theirs: with the GUI thread busy for 2 s, the PLC cycles keep
+    // their period and so do the offsets written to the CNC output (in the device thread).
+    constexpr double kPeriodS = 0.020;
+    BoringPanel panel(context);
+    panel.show();
+    ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:current").arg(drive)));
+    ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
+    panel.plcCycleBox()->setValue(20);
+    panel.maxRateBox()->setValue(0.005);  // the offset ramps: a new one every cycle
+    ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
+    QTest::qWait(300);  // the run settles
+    const Clock::time_point blockStart = Clock::now();
+    while (Clock::now() - blockStart < std::chrono::seconds(2)) {
+        // busy: no event of the GUI thread is processed
+    }
+    const Clock::time_point blockEnd = Clock::now();
+    const std::vector<Clock::time_point> writes = manager.boringWriteTimes();
+    QTest::qWait(100);
+    panel.stop();
+    const std::vector<Clock::time_point> cycles = panel.session().cycleStarts();
+    const auto during = [&](const std::vector<Clock::time_point>& times) {
+        return std::count_if(times.begin(), times.end(),
+                             [&](Clock::time_point t) { return t >= blockStart && t <= blockEnd; });
+    };
+    EXPECT_GE(during(cycles), 90) << "PLC cycles while the GUI thread was busy (100 due)";
+    EXPECT_GE(during(writes), 90) << "offsets written while the GUI thread was busy (100 due)";
+    const double cycleGapS = largestGapS(cycles, blockStart, blockEnd);
+    const double writeGapS = largestGapS(writes, blockStart, blockEnd);
+    RecordProperty("largest_cycle_gap_ms", QString::number(cycleGapS * 1000.0, 'f', 2).toStdString());
+    RecordProperty("largest_write_gap_ms", QString::number(writeGapS * 1000.0, 'f', 2).toStdString());
+    EXPECT_LT(cycleGapS, 2.0 * kPeriodS) << "largest gap between two PLC cycles: " << cycleGapS * 1000.0 << " ms";
+    EXPECT_LT(writeGapS, 2.0 * kPeriodS) << "largest gap between two offset writes: " << writeGapS * 1000.0 << " ms";
+}
 
 TEST_F(CompensationThread, ABusyWindowDoesNotDelayAnyPlcCycle) {
     constexpr double kPeriodS = 0.010;  // the shortest PLC cycle of paper 001

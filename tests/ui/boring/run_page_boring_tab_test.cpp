@@ -9,7 +9,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -27,7 +27,7 @@ TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatorsOwnPassInTheMainWindow) {
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     const QString drive = devices.addDevice(QStringLiteral("simulator"), devices::DeviceKind::DriveCurrent,
                                             QStringLiteral("Cross feed (simulator)"), {});
     devices.openAll();

@@ -22,7 +22,8 @@
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "devices/api/simulated_instrument.h"
+#include "runtime/devices/device_hub.h"
 #include "devices/api/steady_clock.h"
 #include "devices/simulator/mandrel_emulator.h"
 #include "devices/simulator/simulated_probe.h"
@@ -97,12 +98,22 @@ protected:
         return loads->message().contains(QStringLiteral("stroke pairs"));
     }
 
+    /// Whether the stand of device `id` has its jack engaged.
+    bool jackEngaged(const QString& id) {
+        bool engaged = false;
+        manager.withDevice(id, [&](devices::Device& d) {
+            devices::SimulatedInstrument* sim = devices::simulatedInstrument(d);
+            engaged = sim && sim->calibrationStand() && sim->calibrationStand()->engaged();
+        });
+        return engaged;
+    }
+
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
     test::StandDevices stand{QStringLiteral("Simulated probe mandrel"),
                              QStringLiteral("Simulated drive-current readout")};
-    devices::DeviceManager& manager = stand.manager;
+    runtime::DeviceHub& manager = stand.manager;
     const QString& probeId = stand.probeId;
     AppContext context{&prompt, &state, nullptr, QString()};
 };
@@ -235,16 +246,18 @@ TEST_F(CalibrationPageTest, ProbeWizardCapturesFitsVerifiesSavesAndUploadsWithBa
     // The mandrel holds the image saved, and that table reads the bridge's code at 0.2 mm as
     // 0.2 mm (3 µm: the fit and the table's step).
     const QByteArray saved = page.probeSession().saved->image;
-    const auto* mandrel = dynamic_cast<devices::SimulatedProbe*>(manager.device(probeId));
-    ASSERT_NE(mandrel, nullptr);
-    EXPECT_EQ(mandrel->emulator().tableImage(), std::vector<std::uint8_t>(saved.begin(), saved.end()));
+    std::vector<std::uint8_t> stored;
+    manager.withDevice(probeId, [&](devices::Device& d) {
+        if (const auto* mandrel = dynamic_cast<devices::SimulatedProbe*>(&d)) stored = mandrel->emulator().tableImage();
+    });
+    EXPECT_EQ(stored, std::vector<std::uint8_t>(saved.begin(), saved.end()));
     const core::TableImage image = core::decodeTableImage(std::vector<std::uint8_t>(saved.begin(), saved.end()));
     EXPECT_NEAR(image.table.deflectionUm(devices::MandrelEmulator::adcCode(0.2)), 200.0, 3.0);
 
     w->accept();  // Finish
     ASSERT_TRUE(page.overviewShown());
     EXPECT_TRUE(page.probeSession().procedure.points().empty());
-    EXPECT_FALSE(manager.device(probeId)->calibrationStand()->engaged());  // the jack is released
+    EXPECT_FALSE(jackEngaged(probeId));  // the jack is released
     QTableWidget* tables = page.tablesView();
     ASSERT_EQ(tables->rowCount(), 1);
     EXPECT_EQ(tables->item(0, 2)->text(), QStringLiteral("1"));
@@ -277,7 +290,9 @@ TEST_F(CalibrationPageTest, ANonMonotonicSetIsRefusedOnTheFitPage) {
 }
 
 TEST_F(CalibrationPageTest, AFaultyFlashIsCaughtByTheReadBack) {
-    dynamic_cast<devices::SimulatedProbe&>(*manager.device(probeId)).emulator().setFaultyFlash(true);
+    manager.withDevice(probeId, [](devices::Device& d) {
+        dynamic_cast<devices::SimulatedProbe&>(d).emulator().setFaultyFlash(true);
+    });
     CalibrationPage page(context);
     page.show();
     page.startProbeCalibration();
@@ -351,9 +366,7 @@ TEST_F(CalibrationPageTest, KpWizardMeasuresKnownLoadsVerifiesAndWritesKpIntoThe
     EXPECT_EQ(page.kpSession().procedure.points().size(), 2u);
     w->reject();
     ASSERT_TRUE(page.overviewShown());
-    EXPECT_FALSE(manager.device(manager.devicesOfKind(devices::DeviceKind::DriveCurrent).front())
-                     ->calibrationStand()
-                     ->engaged());  // Cancel released the jack
+    EXPECT_FALSE(jackEngaged(manager.devicesOfKind(devices::DeviceKind::DriveCurrent).front()));  // Cancel released the jack
     page.startKpCalibration();
     w->next();
     EXPECT_EQ(page.kpSession().procedure.points().size(), 2u);  // kept across Cancel

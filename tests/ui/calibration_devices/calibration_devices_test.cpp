@@ -20,7 +20,7 @@
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "devices/simulator/simulated_drive.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -66,7 +66,7 @@ protected:
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
     AppState state;
-    devices::DeviceManager manager;
+    runtime::DeviceHub manager;
     AppContext context{&prompt, &state, nullptr, QString()};
 };
 
@@ -116,8 +116,11 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
         add(devices::DeviceKind::DriveCurrent, QStringLiteral("Cross feed X"),
             {{QStringLiteral("pollMs"), 10}, {QStringLiteral("periodS"), 0.2}, {QStringLiteral("stand"), false}});
     double loadN = 0.0;
-    manager.device(id)->simulationInputs()->setDriveSource(
-        [&loadN](double t) { return devices::oscillatingCrossFeed(t, 0.02, 0.2, 2.0, loadN / 150.0); });
+    std::atomic<double> loadN{0.0};  // set here, read by the drive in the device thread
+    manager.withDevice(id, [&loadN](devices::Device& d) {
+        devices::simulatedInstrument(d)->simulationInputs().setDriveSource(
+            [&loadN](double t) { return devices::oscillatingCrossFeed(t, 0.02, 0.2, 2.0, loadN.load() / 150.0); });
+    });
     manager.openAll();
     CalibrationPage page(context);
     page.resize(1280, 760);

@@ -20,7 +20,7 @@
 #include "core/control/run_to_run_plant.h"
 #include "core/run/tuning_preview.h"
 #include "core/sim/statistics/run_to_run_analysis.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -52,7 +52,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 

@@ -20,7 +20,7 @@
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/pages/process_page.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/process/corner_move_editor.h"
 
 namespace tt::ui {

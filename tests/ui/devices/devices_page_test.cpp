@@ -15,7 +15,7 @@
 #include <QSettings>
 #include <QTest>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "devices/simulator/micrometer_emulator.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -66,7 +66,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager manager;
+    runtime::DeviceHub manager;
     AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite")};
 };
 
@@ -122,14 +122,13 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     apply->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
     const QString id = manager.deviceIds().front();
-    devices::Device* gauge = manager.device(id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, 3000))
-        << gauge->health().message;
-    EXPECT_EQ(manager.entry(id)->name, QStringLiteral("Micrometer at the lathe"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, 3000))
+        << manager.view(id)->health.message;
+    EXPECT_EQ(manager.view(id)->name, QStringLiteral("Micrometer at the lathe"));
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 1 ready"));
-    gauge->diameterGauge()->requestReading();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return gauge->liveValue() == QStringLiteral("26.812 mm"); }, 3000));
+    manager.requestReading(id);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->liveValue == QStringLiteral("26.812 mm"); }, 3000));
     QTest::qWait(600);  // the page refreshes its counters twice a second
     EXPECT_EQ(child<QLabel>(p, QStringLiteral("LiveValue"))->text(), QStringLiteral("26.812 mm"));
     {
@@ -157,8 +156,8 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     chooseType(p, QStringLiteral("simulator"), QStringLiteral("probe"));
     child<QPushButton>(p, QStringLiteral("applyDevice"))->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
-    devices::Device* probe = manager.device(manager.deviceIds().front());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return probe->health().state == core::DeviceState::Ready; }, 3000));
+    const QString probe = manager.deviceIds().front();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.state == core::DeviceState::Ready; }, 3000));
 
     // Unapplied edits are undone by Revert.
     QWidget* rate = p.form().editor(QStringLiteral("rateHz"));
@@ -199,19 +198,19 @@ TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
     chooseType(p, QStringLiteral("simulator"), QStringLiteral("gauge"));
     child<QPushButton>(p, QStringLiteral("applyDevice"))->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
-    devices::Device* gauge = manager.device(manager.deviceIds().front());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, 3000));
+    const QString gauge = manager.deviceIds().front();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(gauge)->health.state == core::DeviceState::Ready; }, 3000));
     auto* result = child<QLabel>(p, QStringLiteral("TestResult"));
     auto* test = child<QPushButton>(p, QStringLiteral("testConnection"));
 
     // A run going (or paused): the test reading would be taken as a diameter, so nothing is asked.
     for (AppState::Loop loop : {AppState::Loop::Running, AppState::Loop::Paused}) {
         state.setLoop(loop, QString());
-        const QString before = gauge->liveValue();
+        const QString before = manager.view(gauge)->liveValue;
         test->click();
         EXPECT_TRUE(result->text().contains(QStringLiteral("Stop the run first"))) << result->text().toStdString();
         QTest::qWait(300);
-        EXPECT_EQ(gauge->liveValue(), before) << "the gauge was asked for a reading during a run";
+        EXPECT_EQ(manager.view(gauge)->liveValue, before) << "the gauge was asked for a reading during a run";
         EXPECT_TRUE(test->isEnabled());
     }
 

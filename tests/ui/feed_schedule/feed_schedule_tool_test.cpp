@@ -24,7 +24,7 @@
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/process/deformation_model_panel.h"
 #include "ui/process/feed_model_task.h"
 #include "ui/process/gcode_view.h"

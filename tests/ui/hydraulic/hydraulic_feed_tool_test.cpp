@@ -14,14 +14,14 @@
 #include <QTest>
 
 #include "config/hydraulic_feed_config.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/process_page.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/process/feed_block_diagram.h"
 #include "ui/process/feed_chart_tabs.h"
 #include "ui/process/feed_parameter_form.h"
@@ -64,7 +64,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context;
     std::unique_ptr<MainWindow> window;
     HydraulicFeedTool* tool = nullptr;

@@ -27,7 +27,7 @@
 
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -276,13 +276,13 @@ TEST_F(RussianWindow, EveryPageAndBothRunTabsAreRussianAndNothingIsCutOff) {
     QApplication::processEvents();
     EXPECT_EQ(settingsButton->text(), QStringLiteral("Настройки"));
     // The simulators were made on a Russian first start: their names are Russian.
-    const devices::DeviceManager& manager = devices->manager();
-    EXPECT_EQ(manager.entry(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->name,
+    const runtime::DeviceHub& manager = devices->hub();
+    EXPECT_EQ(manager.view(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->name,
               QStringLiteral("Симулятор микрометра"));
     // The simulated devices tell their state in Russian once they tick after the switch.
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
-            return manager.device(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->health().message ==
+            return manager.view(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->health.message ==
                    "симулятор микрометра готов";
         },
         3000));

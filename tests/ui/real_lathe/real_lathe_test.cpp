@@ -7,6 +7,11 @@
 // continuing when it is plugged in again, and Start refused with the reason when a device is not ready.
 #include <gtest/gtest.h>
 
+#include <QDateTime>
+#include <QFileInfo>
+#include <chrono>
+#include <thread>
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
@@ -28,7 +33,7 @@
 #include "config/loop_scenario.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "devices/simulator/micrometer_emulator.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -37,9 +42,10 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
-#include "ui/run/lathe_link.h"
+#include "runtime/run/machine_catalog.h"
+#include "runtime/run/stored_runs.h"
 #include "ui/run/lathe_panel.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
 // Readable QString values in failure messages.
@@ -107,8 +113,8 @@ protected:
         outputId = manager.addDevice(QStringLiteral("cnc-gcode"), devices::DeviceKind::CorrectionOutput,
                                      QStringLiteral("DNC folder"), {{QStringLiteral("folder"), dncFolder()}});
         manager.openAll();
-        ASSERT_TRUE(waitFor([&] { return manager.device(gaugeId)->health().ready(); }))
-            << manager.device(gaugeId)->health().message;
+        ASSERT_TRUE(waitFor([&] { return manager.view(gaugeId)->health.ready(); }))
+            << manager.view(gaugeId)->health.message;
         pty.releaseSlave();
         context.devices = &manager;
         scenario = config::loadLoopScenario(QStringLiteral("paper-2012-group1"), 1);
@@ -117,7 +123,7 @@ protected:
     QString dncFolder() const { return dir.filePath(QStringLiteral("dnc")); }
     QString gcodeFile(qint64 part) const { return QDir(dncFolder()).filePath(QStringLiteral("part-%1.nc").arg(part)); }
     int gcodeFiles() const { return static_cast<int>(QDir(dncFolder()).entryList(QDir::Files).size()); }
-    int readingsAccepted() { return manager.device(gaugeId)->statistics().front().value.toInt(); }
+    int readingsAccepted() { return manager.view(gaugeId)->statistics.front().value.toInt(); }
 
     /// The diameters the test lathe turns from the path in the part's G-code file: the lathe's own error
     /// (the preset's systematic barrel d(x), which the loop's feed-forward knows, plus the tool set
@@ -153,7 +159,7 @@ protected:
 
     void chooseRealLathe(QWidget& page) {
         auto* machineCombo = page.findChild<QComboBox*>(QStringLiteral("machineCombo"));
-        machineCombo->setCurrentIndex(machineCombo->findData(QStringLiteral("real")));
+        machineCombo->setCurrentIndex(machineCombo->findData(runtime::kDevicesLatheKey));
         auto* output = page.findChild<QComboBox*>(QStringLiteral("cncOutputCombo"));
         output->setCurrentIndex(output->findData(outputId));
         auto* gauge = page.findChild<QComboBox*>(QStringLiteral("gaugeCombo"));
@@ -166,7 +172,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager manager;
+    runtime::DeviceHub manager;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite"))};
     QString gaugeId;
     QString outputId;
@@ -177,7 +183,6 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
     MainWindow window(context);
     RunPage& page = openRunPage(window);
     ShaftRunPanel& shaft = page.shaft();
-    LatheLink& link = shaft.lathe();
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok) << "the badge follows the configured devices";
 
     chooseRealLathe(page);
@@ -192,12 +197,12 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
 
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     QPushButton* finished = shaft.lathePanel()->finishedButton();
-    const RunSession& session = shaft.session();
+    const runtime::RunSession& session = shaft.session();
     std::vector<std::vector<double>> turned;  // diameters of parts 1.. as the test lathe turned them
     // Part `part` is on the machine and the operator can say it is finished.
     auto onMachine = [&](qint64 part) {
         return waitFor([&] {
-            return link.partOnMachine() == part && finished->isEnabled() &&
+            return session.snapshot().partOnMachine == part && finished->isEnabled() &&
                    finished->text() == QStringLiteral("Part %1 finished").arg(part);
         });
     };
@@ -243,7 +248,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
     QTest::qWait(300);  // fifteen ticks of the loop: still nothing new
     EXPECT_EQ(session.snapshot().state, core::LoopState::Paused);
     EXPECT_EQ(gcodeFiles(), 4) << "no new part, no new corrections";
-    EXPECT_FALSE(link.partOnMachine());
+    EXPECT_FALSE(session.snapshot().partOnMachine);
     EXPECT_FALSE(finished->isEnabled());
     EXPECT_FALSE(shaft.lathePanel()->readingButton()->isEnabled()) << "nothing to ask while unplugged";
     EXPECT_TRUE(deviceText->text().contains(QStringLiteral("Gauge: “Micrometer at the lathe” — error")))
@@ -252,8 +257,8 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
 
     // Plugged in again: the loop continues by itself, takes part 4's diameters and writes part 5.
     pty.plug();
-    ASSERT_TRUE(waitFor([&] { return manager.device(gaugeId)->health().ready(); }, 8000))
-        << manager.device(gaugeId)->health().message;
+    ASSERT_TRUE(waitFor([&] { return manager.view(gaugeId)->health.ready(); }, 8000))
+        << manager.view(gaugeId)->health.message;
     pty.releaseSlave();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Running; }))
         << core::describe(session.snapshot().status);
@@ -266,7 +271,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
     ASSERT_TRUE(onMachine(6));
     page.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }));
-    EXPECT_FALSE(link.isConnected()) << "the run is over: the devices are let go";
+    EXPECT_FALSE(manager.latheConnected()) << "the run is over: the devices are let go";
 
     // The history: parts 1..5 with the corrections written into their G-code files and the diameters the
     // micrometer sent (0.001 mm resolution), all accepted.
@@ -274,8 +279,10 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
     storage::SqlHistoryStore history(db);
     const std::vector<core::RunSummary> runs = history.runs();
     ASSERT_EQ(runs.size(), 1u);
-    EXPECT_NE(runs.front().description.settingsJson.find("\"machine\":\"real-lathe\""), std::string::npos);
-    EXPECT_NE(runs.front().description.settingsJson.find("\"cnc_output\":\"DNC folder\""), std::string::npos);
+    const runtime::RunRequest stored = runtime::requestOfStoredRun(runs.front());
+    EXPECT_EQ(stored.machine, runtime::kDevicesLatheKey);
+    EXPECT_EQ(stored.cncOutput, outputId);
+    EXPECT_EQ(stored.gauge, gaugeId);
     const std::vector<core::StoredPart> parts = history.parts(runs.front().runId);
     ASSERT_EQ(parts.size(), 5u) << "part 6 was on the machine when the run was stopped";
     for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -312,8 +319,8 @@ TEST_F(RealLatheTest, StartIsRefusedWithTheReasonWhenAChosenDeviceIsNotReady) {
 
     // The DNC folder is gone (network share down): the output reports it and Start says so.
     ASSERT_TRUE(QDir(dncFolder()).removeRecursively());
-    manager.device(outputId)->open();
-    ASSERT_EQ(manager.device(outputId)->health().state, core::DeviceState::Error);
+    manager.open(outputId);
+    ASSERT_EQ(manager.view(outputId)->health.state, core::DeviceState::Error);
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_EQ(prompt.log.size(), 1);
     EXPECT_EQ(prompt.log.front(), QStringLiteral("warn: The run cannot start"));
@@ -323,14 +330,14 @@ TEST_F(RealLatheTest, StartIsRefusedWithTheReasonWhenAChosenDeviceIsNotReady) {
     EXPECT_TRUE(page.alarms()->item(0)->text().contains(QStringLiteral("Not started: The CNC output")));
     EXPECT_EQ(page.session().snapshot().state, core::LoopState::Idle);
     EXPECT_TRUE(page.findChild<QPushButton*>(QStringLiteral("startButton"))->isEnabled());
-    EXPECT_FALSE(page.shaft().lathe().isConnected());
+    EXPECT_FALSE(manager.latheConnected());
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_real_lathe_refused")));
 
     // The folder is back, but the gauge's cable is out.
     ASSERT_TRUE(QDir().mkpath(dncFolder()));
-    manager.device(outputId)->open();
+    manager.open(outputId);
     pty.unplug();
-    ASSERT_TRUE(waitFor([&] { return manager.device(gaugeId)->health().state == core::DeviceState::Error; }));
+    ASSERT_TRUE(waitFor([&] { return manager.view(gaugeId)->health.state == core::DeviceState::Error; }));
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_EQ(prompt.log.size(), 2);
     EXPECT_TRUE(prompt.lastText.startsWith(QStringLiteral("The gauge “Micrometer at the lathe” is in error: ")))
@@ -343,7 +350,7 @@ TEST_F(RealLatheTest, StartIsRefusedWithTheReasonWhenAChosenDeviceIsNotReady) {
     gauge->setCurrentIndex(gauge->findData(QString()));
     EXPECT_TRUE(page.findChild<QCheckBox*>(QStringLiteral("manualEntryCheck"))->isChecked());
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return page.shaft().lathe().partOnMachine() == 1; }))
+    ASSERT_TRUE(waitFor([&] { return page.session().snapshot().partOnMachine == 1; }))
         << core::describe(page.session().snapshot().status);
     EXPECT_EQ(prompt.log.size(), 2);
     EXPECT_TRUE(QFile::exists(gcodeFile(1)));
@@ -357,7 +364,7 @@ TEST_F(RealLatheTest, StartIsRefusedWithTheReasonWhenAChosenDeviceIsNotReady) {
 TEST_F(RealLatheTest, AGCodeOutputForAnotherDiameterIsRefusedAtStart) {
     manager.updateDevice(outputId, QStringLiteral("DNC folder"),
                          {{QStringLiteral("folder"), dncFolder()}, {QStringLiteral("nominalDiameterMm"), 26.5}});
-    manager.device(outputId)->open();
+    manager.open(outputId);
     MainWindow window(context);
     RunPage& page = openRunPage(window);
     chooseRealLathe(page);
@@ -369,8 +376,59 @@ TEST_F(RealLatheTest, AGCodeOutputForAnotherDiameterIsRefusedAtStart) {
                                       "26.500 mm, the set-up paper-2012-group1 turns 27.000 mm")))
         << alarm.toStdString();
     EXPECT_EQ(gcodeFiles(), 0);
-    EXPECT_FALSE(page.shaft().lathe().isConnected());
+    EXPECT_FALSE(manager.latheConnected());
     EXPECT_TRUE(page.findChild<QPushButton*>(QStringLiteral("startButton"))->isEnabled());
+}
+
+TEST_F(RealLatheTest, ABusyWindowLosesNoGaugeReadingAndDelaysNoCorrection) {
+    // The devices live in their own thread: with the window blocked for 2 s (a busy-wait: the GUI thread
+    // processes nothing), the micrometer's five readings of part 1 still reach the loop and the loop still
+    // writes part 2's corrections to the CNC during the block.
+    MainWindow window(context);
+    RunPage& page = openRunPage(window);
+    chooseRealLathe(page);
+    page.findChild<QSpinBox*>(QStringLiteral("delaySpin"))->setValue(1);
+    page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
+    const runtime::RunSession& session = page.session();
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().partOnMachine == 1; }));
+    const std::vector<double> turned = machine(1);
+    page.shaft().lathePanel()->finishedButton()->click();
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().awaitingPart == 1; }));
+    std::vector<QByteArray> frames;  // the DATA button's frames of the five readings, made in this thread
+    for (double d : turned) {
+        micrometer.setSource([d] { return d; });
+        frames.push_back(micrometer.pressDataButton());
+    }
+    const int before = readingsAccepted();
+    const QDateTime blockStart = QDateTime::currentDateTime();
+    std::thread operatorHand([&] {
+        for (const QByteArray& frame : frames) {
+            pty.send(frame);
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    });
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < std::chrono::seconds(2)) {
+        // busy: no event of the GUI thread is processed
+    }
+    const QDateTime blockEnd = QDateTime::currentDateTime();
+    operatorHand.join();
+    ASSERT_TRUE(QFile::exists(gcodeFile(2))) << "part 2's corrections were written while the window was busy";
+    const QDateTime written = QFileInfo(gcodeFile(2)).lastModified();
+    EXPECT_GE(written, blockStart.addMSecs(-1000));  // file times may have a coarse resolution
+    EXPECT_LE(written, blockEnd) << "written during the block, not after it";
+    ASSERT_TRUE(waitFor([&] { return readingsAccepted() == before + 5; }));  // none lost
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().partOnMachine == 2; }));
+    page.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }));
+    const std::vector<core::StoredPart> parts = [&] {
+        storage::Database db(storage::DatabaseConfig::sqlite(context.databasePath));
+        return storage::SqlHistoryStore(db).parts(1);
+    }();
+    ASSERT_FALSE(parts.empty());
+    ASSERT_TRUE(parts.front().measurement.has_value());
+    for (std::size_t i = 0; i < 5; ++i)
+        EXPECT_NEAR(*parts.front().measurement->points[i].measuredMm, std::round(turned[i] * 1000.0) / 1000.0, 1e-9);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <QTest>
 #include <ostream>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/devices/terminal_devices.h"
@@ -18,6 +18,7 @@
 #include "ui/main_window.h"
 #include "ui/pages/devices_page.h"
 #include "ui/pages/run_page.h"
+#include "hub_faults.h"
 
 // Readable QString values in failure messages.
 inline void PrintTo(const QString& text, std::ostream* os) {
@@ -40,7 +41,7 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         TerminalDevices devices(kBuildPlugins);
         EXPECT_TRUE(devices.firstStart());
         EXPECT_TRUE(devices.problems().isEmpty()) << devices.problems().join(QStringLiteral("; ")).toStdString();
-        devices::DeviceManager& m = devices.manager();
+        runtime::DeviceHub& m = devices.hub();
         ASSERT_EQ(m.deviceIds().size(), 4);
         for (devices::DeviceKind kind : devices::allDeviceKinds()) {
             const QStringList ofKind = m.devicesOfKind(kind);
@@ -62,16 +63,16 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         EXPECT_FALSE(devices.firstStart());
         QStringList expected = firstIds;
         expected.removeAt(1);  // the probe
-        EXPECT_EQ(devices.manager().deviceIds(), expected);
-        for (const QString& id : devices.manager().deviceIds())
-            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.manager().device(id)->health().ready(); }, 5000));
-        for (const QString& id : devices.manager().deviceIds())
-            devices.manager().removeDevice(id);
+        EXPECT_EQ(devices.hub().deviceIds(), expected);
+        for (const QString& id : devices.hub().deviceIds())
+            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.hub().view(id)->health.ready(); }, 5000));
+        for (const QString& id : devices.hub().deviceIds())
+            devices.hub().removeDevice(id);
     }
     {
         TerminalDevices devices(kBuildPlugins);
         EXPECT_FALSE(devices.firstStart()) << "an empty list is a choice, not a first start";
-        EXPECT_TRUE(devices.manager().deviceIds().isEmpty());
+        EXPECT_TRUE(devices.hub().deviceIds().isEmpty());
     }
 }
 
@@ -79,7 +80,7 @@ TEST_F(TerminalDevicesTest, APluginFolderThatIsMissingIsReportedAndTheSimulatorS
     TerminalDevices devices(QStringLiteral("/nonexistent/trueturn/plugins"));
     ASSERT_EQ(devices.problems().size(), 1);
     EXPECT_TRUE(devices.problems().front().contains(QStringLiteral("does not exist")));
-    EXPECT_EQ(devices.manager().deviceIds().size(), 4);
+    EXPECT_EQ(devices.hub().deviceIds().size(), 4);
 }
 
 TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
@@ -88,11 +89,11 @@ TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
     AppState state;
     LanguageSwitcher language;
     AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite"),
-                       &devices.manager()};
+                       &devices.hub()};
     MainWindow window(context);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return devices.manager().summary().text == QStringLiteral("4 ready"); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return devices.hub().summary().text == QStringLiteral("4 ready"); }, 5000));
     auto* devicesPage = static_cast<DevicesPage*>(window.page(PageId::Devices));
-    EXPECT_EQ(&devicesPage->manager(), &devices.manager());
+    EXPECT_EQ(&devicesPage->manager(), &devices.hub());
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("DeviceBadge"))->text(), QStringLiteral("Devices: ready"));
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 4 ready"));
@@ -101,15 +102,15 @@ TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
     auto* output = run->findChild<QComboBox*>(QStringLiteral("cncOutputCombo"));
     ASSERT_EQ(output->count(), 1);
     EXPECT_EQ(output->itemData(0).toString(),
-              devices.manager().devicesOfKind(devices::DeviceKind::CorrectionOutput).front());
+              devices.hub().devicesOfKind(devices::DeviceKind::CorrectionOutput).front());
     EXPECT_EQ(output->itemText(0), QStringLiteral("Simulated CNC output — ready"));
     auto* gauge = run->findChild<QComboBox*>(QStringLiteral("gaugeCombo"));
     ASSERT_EQ(gauge->count(), 2);
     EXPECT_EQ(gauge->itemText(1), QStringLiteral("Typed in by hand"));
     // A device's trouble reaches the badge and the Run page's choice.
-    const QString gaugeId = devices.manager().devicesOfKind(devices::DeviceKind::Gauge).front();
-    devices.manager().device(gaugeId)->faultSwitches()->disconnected = true;
-    devices.manager().device(gaugeId)->open();
+    const QString gaugeId = devices.hub().devicesOfKind(devices::DeviceKind::Gauge).front();
+    test::setFault(devices.hub(), gaugeId, &devices::FaultSwitches::disconnected, true);
+    devices.hub().open(gaugeId);
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Fault);
     EXPECT_EQ(gauge->itemText(0), QStringLiteral("Simulated gauge micrometer — error"));
 }

@@ -21,7 +21,7 @@
 
 #include "core/quality/point_analysis.h"
 #include "core/storage/database.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "english_words.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
@@ -29,8 +29,8 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/reports_page.h"
-#include "ui/plot/chart.h"
-#include "ui/reports/report_charts.h"
+#include "plot/chart.h"
+#include "reports/report_charts.h"
 #include "ui/reports/report_filter_bar.h"
 #include "ui/reports/report_views.h"
 
@@ -99,7 +99,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 
@@ -118,7 +118,7 @@ TEST_F(ReportsPageTest, ChartsAndCapabilityOfTheStoredRunAreCoreQualitysFigures)
         const core::PointAnalysis expected = core::analysePoint(readings(point), settings);
         views->pointChoice()->setCurrentIndex(point);
         views->showPoint(point);
-        const PointReport& shown = views->points()[static_cast<std::size_t>(point)];
+        const runtime::PointReport& shown = views->points()[static_cast<std::size_t>(point)];
         ASSERT_TRUE(shown.spec.has_value());
         EXPECT_NEAR(shown.spec->lowerMm, kLowerMm, 1e-9);
         EXPECT_NEAR(shown.spec->upperMm, kUpperMm, 1e-9);
@@ -141,7 +141,7 @@ TEST_F(ReportsPageTest, ChartsAndCapabilityOfTheStoredRunAreCoreQualitysFigures)
         EXPECT_TRUE(table->item(1, 2)->text().contains(
             QString::number(expected.capability->indices.cpkInterval->lower, 'f', 2)));
         // The histogram holds every reading; the fitted normal and both limits are drawn.
-        const ReportHistogram h = histogramOf(shown);
+        const reports::ReportHistogram h = reports::histogramOf(shown);
         double total = 0.0;
         for (double c : h.counts)
             total += c;
@@ -168,7 +168,7 @@ TEST_F(ReportsPageTest, ChartsAndCapabilityOfTheStoredRunAreCoreQualitysFigures)
     views->tabs()->setCurrentIndex(2);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_profile_en")));
     ASSERT_EQ(views->multiples().size(), 5u);
-    for (const Chart* chart : views->multiples())
+    for (const plot::Chart* chart : views->multiples())
         EXPECT_EQ(chart->pointCount(QStringLiteral("values")), 150);
     views->tabs()->setCurrentIndex(3);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_all_points_en")));

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <QComboBox>
 #include <QElapsedTimer>
 #include <QProcess>
 #include <QTest>
@@ -17,8 +18,11 @@
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "run_window.h"
+#include "tests/support/stored_runs.h"
 #include "screenshots.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/machine_catalog.h"
+#include "runtime/run/run_session.h"
+#include "runtime/run/shaft_run_assembly.h"
 #include "ui/run/shaft_run_panel.h"
 
 namespace tt::ui {
@@ -42,42 +46,32 @@ protected:
     /// Runs the simulated lathe with the history of `context` until kPartsBeforeCut parts are finished and
     /// drops everything without stopping: the run stays "running", as after a power cut.
     void makeInterruptedRun() {
-        RunSettings s;
-        s.preset = QStringLiteral("paper-2012-group1");
-        s.controller = QStringLiteral("lqg");
-        s.delay = 2;
-        s.seed = 7;
-        s.machineKey = QStringLiteral("simulated-lathe");
-        const config::LoopScenario scenario = config::loadLoopScenario(s.preset, s.delay);
-        const core::ShaftRunPlan plan =
-            core::planShaftRun(scenario, {core::ControllerKind::Lqg, std::nullopt, kPlannedParts});
-        std::optional<devices::ShaftMachineOffer> offer;
-        for (const devices::ShaftMachineOffer& o : devices.shaftMachineOffers())
-            if (o.key == s.machineKey) offer = o;
+        runtime::RunRequest request;
+        request.preset = QStringLiteral("paper-2012-group1");
+        request.delay = 2;
+        request.seed = 7;
+        request.endPart = kPlannedParts;
+        request.database = context.databasePath;
+        const std::optional<runtime::MachineOffer> offer =
+            runtime::MachineCatalog(&devices).find(runtime::kBuiltInLatheKey);
         ASSERT_TRUE(offer.has_value());
-        std::unique_ptr<core::ShaftMachine> machine = offer->make(scenario, s.seed, 3600.0);
         storage::Database database(storage::DataStores(context.databasePath).config());
         storage::SqlHistoryStore history(database);
-        std::unique_ptr<core::LoopEngine> engine = core::buildShaftRun(scenario, plan, *machine, &history);
-        engine->start(storedRunDescription(s, plan));
-        ASSERT_TRUE(waitFor(
-            [&] {
-                engine->step();
-                return engine->partsFinished() >= kPartsBeforeCut;
-            },
-            60000));
+        std::unique_ptr<runtime::AssembledRun> run = runtime::assembleRun(request, offer->prepare(request), &history);
+        runtime::startRun(*run);
+        while (run->engine->partsFinished() < kPartsBeforeCut) run->stepper->advanceTo(1e18, 1);
     }
 };
 
 TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEveryPartStoredOnce) {
     makeInterruptedRun();
-    const std::optional<InterruptedRun> found = findInterruptedRun(context);
+    const std::optional<runtime::InterruptedRun> found = findInterruptedRun(context);
     ASSERT_TRUE(found.has_value());
     const qint64 runId = found->point.run.runId;
     const qint64 next = found->nextPart();
     EXPECT_GE(next, kPartsBeforeCut - 2) << "the parts the controller has used are the resume point";
-    EXPECT_EQ(found->settings.lastPartNumber, std::optional<qint64>(kPlannedParts));
-    EXPECT_EQ(found->settings.seed, 7u);
+    EXPECT_EQ(found->request.endPart, std::optional<std::int64_t>(kPlannedParts));
+    EXPECT_EQ(found->request.seed, 7u);
 
     MainWindow window(context);
     RunPage* page = showRunPage(window);
@@ -87,7 +81,7 @@ TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEver
     EXPECT_FALSE(offerInterruptedRun(context, window));
     EXPECT_EQ(prompt.log.back(), QStringLiteral("ask: Interrupted run"));
     const QString expected = QStringLiteral(
-                                 "Run %1 (simulated lathe, paper-2012-group1, %2 of %3 parts done) was "
+                                 "Run %1 (Simulated lathe (built in), paper-2012-group1, %2 of %3 parts done) was "
                                  "interrupted. Continue it from part %4?")
                                  .arg(runId)
                                  .arg(found->point.run.partCount)
@@ -100,7 +94,7 @@ TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEver
 
     // Yes: the Run page continues it at part `next`, to its planned end.
     std::set<qint64> startedParts;
-    QObject::connect(&page->session(), &RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
+    QObject::connect(&page->session(), &runtime::RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
         if (e.kind == core::LoopEvent::Kind::PartStarted) startedParts.insert(e.partNumber);
     });
     prompt.answers.push_back(Prompt::Answer::Yes);
@@ -123,6 +117,45 @@ TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEver
     EXPECT_EQ(*numbers.begin(), 1);
     EXPECT_EQ(*numbers.rbegin(), kPlannedParts);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_page_resumed")));
+}
+
+TEST_F(InterruptedRunTest, ARunCutOffOnTheCommandLineContinuesOnTheRunPageWithItsPlantAndIntegralAction) {
+    // The same run twice on the command line: left alone, and cut off with SIGTERM after part 40; the Run page
+    // continues the cut one from its stored request. The simulated lathe depends only on the part number and
+    // the corrections the parts received, so both store the same diameters when the resumed run keeps the
+    // plant gain 0.7 and the integral action (1e-12 mm: the stored controller state's rounding).
+    const QStringList run{QStringLiteral("--preset"), QStringLiteral("paper-2012"), QStringLiteral("--delay"),
+                          QStringLiteral("2"), QStringLiteral("--parts"), QStringLiteral("150"),
+                          QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--seed"), QStringLiteral("5"),
+                          QStringLiteral("--plant-gain"), QStringLiteral("0.7"), QStringLiteral("--integral"),
+                          QStringLiteral("on")};
+    const QString whole = dir.filePath(QStringLiteral("whole.sqlite"));
+    QProcess left;
+    left.start(QStringLiteral(TRUETURN_EXE),
+               QStringList{QStringLiteral("simulate")} + run + QStringList{QStringLiteral("--db"), whole});
+    ASSERT_TRUE(left.waitForFinished(-1));
+    ASSERT_EQ(left.exitCode(), 0) << left.readAllStandardError().toStdString();
+    ASSERT_EQ(test::interruptedSimulate(QStringLiteral(TRUETURN_EXE),
+                                        run + QStringList{QStringLiteral("--db"), context.databasePath,
+                                                          QStringLiteral("--speed"), QStringLiteral("18000")},
+                                        40),
+              130);
+
+    MainWindow window(context);
+    RunPage* page = showRunPage(window);
+    ASSERT_NE(page, nullptr);
+    auto* speed = window.findChild<QComboBox*>(QStringLiteral("speedCombo"));
+    speed->setCurrentIndex(speed->count() - 1);  // the fastest pace
+    prompt.answers.push_back(Prompt::Answer::Yes);
+    ASSERT_TRUE(offerInterruptedRun(context, window));
+    ASSERT_TRUE(waitFor([&] { return context.data().history()->runs().front().status == "complete"; }, 300000))
+        << core::describe(page->session().snapshot().status);
+    const std::vector<double> a = test::storedDiameters(whole);
+    const std::vector<double> b = test::storedDiameters(context.databasePath);
+    ASSERT_EQ(a.size(), 150u * 5u);
+    ASSERT_EQ(b.size(), a.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+        ASSERT_NEAR(a[i], b[i], 1e-12) << "reading " << i << " (part " << i / 5 + 1 << ")";
 }
 
 TEST_F(InterruptedRunTest, AFinishedRunIsNotOffered) {
@@ -158,7 +191,7 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
     ASSERT_TRUE(simulate.waitForFinished(30000));
     EXPECT_EQ(simulate.exitCode(), 130) << simulate.readAllStandardError().toStdString();
 
-    const std::optional<InterruptedRun> found = findInterruptedRun(context);
+    const std::optional<runtime::InterruptedRun> found = findInterruptedRun(context);
     ASSERT_TRUE(found.has_value());
     EXPECT_EQ(found->settings.lastPartNumber, std::optional<qint64>(400)) << "warm-up 0 + 400 parts";
     EXPECT_EQ(found->settings.seed, 3u);
@@ -168,7 +201,7 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
     RunPage* page = showRunPage(window);
     ASSERT_NE(page, nullptr);
     std::set<qint64> startedParts;
-    QObject::connect(&page->session(), &RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
+    QObject::connect(&page->session(), &runtime::RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
         if (e.kind == core::LoopEvent::Kind::PartStarted) startedParts.insert(e.partNumber);
     });
     prompt.answers.push_back(Prompt::Answer::Yes);

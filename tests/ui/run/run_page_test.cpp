@@ -18,17 +18,17 @@
 #include <functional>
 
 #include "core/storage/database.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "run_window.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
-#include "ui/plot/chart.h"
+#include "plot/chart.h"
 #include "ui/run/manual_entry_panel.h"
 #include "ui/run/profile_panel.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 
 namespace tt::ui {
 namespace {
@@ -63,7 +63,7 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
 
     // The plot has the data: measured points, the line between them, the simulated part, the model,
     // the correction path, the tolerance band; the history strip one series per control point.
-    Chart* profile = page->profilePanel()->profileChart();
+    plot::Chart* profile = page->profilePanel()->profileChart();
     EXPECT_EQ(profile->pointCount(QStringLiteral("measured")), 5);
     EXPECT_GT(profile->pointCount(QStringLiteral("interpolated")), 100);
     EXPECT_GT(profile->pointCount(QStringLiteral("true")), 100);

@@ -14,7 +14,7 @@
 #include <QTest>
 #include <optional>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "english_words.h"
 #include "run_window.h"
 #include "screenshots.h"
@@ -24,7 +24,7 @@
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
 #include "ui/run/manual_entry_panel.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
 namespace tt::ui {
@@ -94,7 +94,7 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
     for (int n = 0; n < 6 && !anyAlarmContains(page->alarms(), QStringLiteral("точка 3")); ++n) {
         ASSERT_TRUE(QTest::qWaitFor(
             [&] {
-                const LoopSnapshot& s = page->session().snapshot();
+                const runtime::LoopSnapshot& s = page->session().snapshot();
                 return s.manualEntry && s.awaitingPart && s.awaitingPart != typed && manual->field(0)->isEnabled();
             },
             30000));

@@ -3,6 +3,8 @@
 // And the Run page's Start needs the "run the machine" permission (issue 17 item 12).
 #include <gtest/gtest.h>
 
+#include "config/controller_tuning_json.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
@@ -22,7 +24,7 @@
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
 #include "ui/pages/controller_page.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
 namespace tt::ui {
@@ -60,13 +62,13 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     MainWindow window(context);
     RunPage* runPage = showRunPage(window);
     ASSERT_NE(runPage, nullptr);
-    RunSession& session = runPage->session();
+    runtime::RunSession& session = runPage->session();
     std::map<qint64, std::vector<core::PointCorrectionRecord>> started;  // part -> its corrections
-    QObject::connect(&session, &RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
+    QObject::connect(&session, &runtime::RunSession::loopEvent, &window, [&](const core::LoopEvent& e) {
         if (e.kind == core::LoopEvent::Kind::PartStarted) started[e.partNumber] = e.corrections;
     });
     qint64 takenAt = 0;
-    QObject::connect(&session, &RunSession::tuningTaken, &window, [&](qint64 part) { takenAt = part; });
+    QObject::connect(&session, &runtime::RunSession::tuningTaken, &window, [&](qint64 part) { takenAt = part; });
 
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
@@ -126,9 +128,11 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     window.findChild<QPushButton*>(QStringLiteral("applyTuning"))->click();
     EXPECT_TRUE(controller->statusText().contains(QStringLiteral("next Start")))
         << controller->statusText().toStdString();
-    const RunSettings next = runPage->settings();
+    const runtime::RunRequest next = runPage->request();
     ASSERT_TRUE(next.tuning.has_value());
-    EXPECT_DOUBLE_EQ(next.tuning->weights.R1(0, 0), controller->appliedSetup().weights.R1(0, 0));
+    const core::RunToRunSetup carried =
+        config::tunedSetupFromJson(*next.tuning, runtime::scenarioOf(runtime::RunRequest{}).control);
+    EXPECT_DOUBLE_EQ(carried.weights.R1(0, 0), controller->appliedSetup().weights.R1(0, 0));
 }
 
 TEST_F(RunTuningTest, AQualityUserCannotStartTheMachine) {

@@ -6,7 +6,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
@@ -31,7 +31,7 @@ protected:
     ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 

@@ -6,7 +6,7 @@
 #include <QTabWidget>
 #include <QTest>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "terminal_window.h"
 #include "ui/boring/boring_panel.h"
 #include "ui/pages/run_page.h"
@@ -17,7 +17,7 @@ namespace {
 using BoringHeader = test::TerminalWindowTest;
 
 TEST_F(BoringHeader, TheHeaderSaysWhatTheCompensationDoes) {
-    devices::DeviceManager& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->manager();
     const QString drive = manager.devicesOfKind(devices::DeviceKind::DriveCurrent).value(0);
     ASSERT_FALSE(drive.isEmpty()) << "the first start's simulated drive read-out";
     auto window = openWindow();
@@ -31,7 +31,7 @@ TEST_F(BoringHeader, TheHeaderSaysWhatTheCompensationDoes) {
     auto* status = window->findChild<QLabel*>(QStringLiteral("statusLoop"));
     ASSERT_TRUE(badge && status);
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Idle"));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(drive)->health().ready(); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(drive)->health.ready(); }, 5000));
     ASSERT_TRUE(panel->selectSource(QStringLiteral("dev:%1:current").arg(drive)));
     panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();

@@ -11,7 +11,7 @@
 #include <QPushButton>
 #include <QTest>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "terminal_window.h"
 #include "ui/pages/devices_page.h"
@@ -49,35 +49,35 @@ TEST_F(DeviceErrors, ARefusedModbusConnectionIsTheLastError) {
     ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
     const int port = ntohs(address.sin_port);
     ::close(fd);
-    devices::DeviceManager& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->manager();
     const QString id =
         manager.addDevice(QStringLiteral("modbus"), devices::DeviceKind::DriveCurrent, QStringLiteral("Spindle drive"),
                           {{QStringLiteral("transport"), QStringLiteral("tcp")},
                            {QStringLiteral("host"), QStringLiteral("127.0.0.1")},
                            {QStringLiteral("tcpPort"), port}});
-    manager.device(id)->open();
+    manager.open(id);
     auto window = openWindow();
     window->showPage(PageId::Devices);
     select(*window, id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Error; }, 15000))
-        << manager.device(id)->health().message;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, 15000))
+        << manager.view(id)->health.message;
     QApplication::processEvents();
     auto* lastError = window->findChild<QLabel*>(QStringLiteral("LastError"));
     ASSERT_NE(lastError, nullptr);
     EXPECT_NE(lastError->text(), QStringLiteral("none"));
-    EXPECT_EQ(lastError->text(), QString::fromStdString(manager.device(id)->health().message));
+    EXPECT_EQ(lastError->text(), QString::fromStdString(manager.view(id)->health.message));
     EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("terminal_devices_modbus_refused")));
 }
 
 TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
-    devices::DeviceManager& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->manager();
     const QString id = manager.devicesOfKind(devices::DeviceKind::Gauge).value(0);
     ASSERT_FALSE(id.isEmpty()) << "the first start's simulated gauge";
     auto window = openWindow();
     window->showPage(PageId::Devices);
     auto* page = static_cast<DevicesPage*>(window->page(PageId::Devices));
     select(*window, id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Ready; }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, 5000));
     window->findChild<QPushButton*>(QStringLiteral("testConnection"))->click();
     auto* result = window->findChild<QLabel*>(QStringLiteral("TestResult"));
     ASSERT_NE(result, nullptr);
@@ -88,7 +88,7 @@ TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
         if (box->text() == QStringLiteral("Unplugged")) unplug = box;
     ASSERT_NE(unplug, nullptr);
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Error; }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, 5000));
     QApplication::processEvents();
     for (const QString& text : visibleTexts(page))
         EXPECT_FALSE(text.startsWith(QStringLiteral("Connected"))) << text.toStdString();

@@ -12,7 +12,7 @@
 
 #include "terminal_window.h"
 #include "ui/pages/run_page.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 
 namespace tt::ui {
 namespace {
@@ -56,9 +56,9 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
     // 6 s of wall time = 36 min at x360, ten times the old 3 s time-out: sampled every 20 ms.
     QStringList disagreements;
     auto sample = [&](const char* when) {
-        const LoopSnapshot s = page->session().snapshot();
+        const runtime::LoopSnapshot s = page->session().snapshot();
         QApplication::processEvents();  // the snapshot's signal reaches the page
-        const LoopSnapshot now = page->session().snapshot();
+        const runtime::LoopSnapshot now = page->session().snapshot();
         if (now.state != s.state) return;  // changed between the two reads: sample again
         const AppState::Loop loop = expectedLoop(now.state);
         const QString name = AppState::loopName(loop);

@@ -11,7 +11,7 @@
 #include "ui/kiosk.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/tools_page.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 #include "ui/tools/tool_table_model.h"
 
 namespace tt::ui {

@@ -12,8 +12,8 @@
 #include "screenshots.h"
 #include "terminal_window.h"
 #include "ui/pages/run_page.h"
-#include "ui/run/run_session.h"
-#include "ui/run/run_settings.h"
+#include "runtime/run/run_session.h"
+#include "runtime/run/run_request.h"
 #include "ui/run/shaft_run_panel.h"
 #include "ui/run/verdict_counter.h"
 

@@ -13,14 +13,14 @@
 #include <QTest>
 #include <functional>
 
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
-#include "ui/run/run_session.h"
+#include "runtime/run/run_session.h"
 
 namespace tt::ui {
 namespace {
@@ -41,7 +41,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
 
