@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -25,33 +27,59 @@ RationalTransfer controllerTransfer(double gainS, double ti, double td, double t
     return {multiplyPolynomials({gainS * ti, gainS}, {td, 1.0}), multiplyPolynomials({ti, 0.0}, {tf, 1.0})};
 }
 
-/// The gain K_p for the targets, from the loop with K_p = 1.
-double gainForTargets(const RationalTransfer& unitLoop, const FeedFeedbackTargets& t) {
+/// The frequencies of a log grid over kMinRadPerS .. kMaxRadPerS.
+std::vector<double> frequencyGrid() {
     const int points = static_cast<int>(kGridPerDecade * std::log10(kMaxRadPerS / kMinRadPerS)) + 1;
-    double previousW = kMinRadPerS;
-    std::complex<double> previous = unitLoop.at(previousW);
-    double phaseDeg = std::arg(previous) * 180.0 / std::numbers::pi;  // unwrapped along the grid
-    std::optional<double> forPhase;
-    const double wanted = -180.0 + t.phaseMarginDeg;
-    for (int k = 1; k < points && !forPhase; ++k) {
-        const double w = kMinRadPerS * std::pow(kMaxRadPerS / kMinRadPerS, double(k) / (points - 1));
-        const std::complex<double> l = unitLoop.at(w);
+    std::vector<double> w(static_cast<std::size_t>(points));
+    for (int k = 0; k < points; ++k)
+        w[static_cast<std::size_t>(k)] = kMinRadPerS * std::pow(kMaxRadPerS / kMinRadPerS, double(k) / (points - 1));
+    return w;
+}
+
+/// The gain at which the loop's phase (unwrapped from the lowest frequency) first reaches the target margin.
+std::optional<double> gainForPhaseMargin(const RationalTransfer& unitLoop, const std::vector<double>& w, double pmDeg) {
+    std::complex<double> previous = unitLoop.at(w.front());
+    double phaseDeg = std::arg(previous) * 180.0 / std::numbers::pi;
+    const double wanted = -180.0 + pmDeg;
+    for (std::size_t k = 1; k < w.size(); ++k) {
+        const std::complex<double> l = unitLoop.at(w[k]);
         const double step = std::arg(l / previous) * 180.0 / std::numbers::pi;
         if (phaseDeg + step <= wanted) {
-            // Linear interpolation of the phase between the two grid points.
-            const double f = (phaseDeg - wanted) / (-step);
-            const double wc = previousW * std::pow(w / previousW, f);
-            forPhase = 1.0 / std::abs(unitLoop.at(wc));
+            const double f = (phaseDeg - wanted) / (-step);  // the phase interpolated between the grid points
+            return 1.0 / std::abs(unitLoop.at(w[k - 1] * std::pow(w[k] / w[k - 1], f)));
         }
         phaseDeg += step;
         previous = l;
-        previousW = w;
     }
+    return std::nullopt;
+}
+
+/// The smallest gain that puts the loop on -1: 1 / |L| at each crossing of the negative real axis.
+std::optional<double> criticalGain(const RationalTransfer& unitLoop, const std::vector<double>& w) {
+    std::optional<double> out;
+    for (std::size_t k = 1; k < w.size(); ++k) {
+        const double a = unitLoop.at(w[k - 1]).imag();
+        const double b = unitLoop.at(w[k]).imag();
+        if ((a < 0.0) == (b < 0.0)) continue;
+        double lo = w[k - 1];
+        double hi = w[k];
+        for (int it = 0; it < 60; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            ((unitLoop.at(mid).imag() < 0.0) == (a < 0.0) ? lo : hi) = mid;
+        }
+        const std::complex<double> l = unitLoop.at(0.5 * (lo + hi));
+        if (l.real() < 0.0 && (!out || 1.0 / std::abs(l) < *out)) out = 1.0 / std::abs(l);
+    }
+    return out;
+}
+
+/// The gain K_p for the targets, from the loop with K_p = 1.
+double gainForTargets(const RationalTransfer& unitLoop, const FeedFeedbackTargets& t) {
+    const std::vector<double> w = frequencyGrid();
+    const std::optional<double> forPhase = gainForPhaseMargin(unitLoop, w, t.phaseMarginDeg);
     if (!forPhase) throw std::invalid_argument("feedback design: the loop's phase never reaches the target margin");
-    const ContinuousMargins unit = continuousMargins(unitLoop, kMinRadPerS, kMaxRadPerS);
-    double gain = *forPhase;
-    if (unit.gainMargin) gain = std::min(gain, *unit.gainMargin / t.minGainMargin);
-    return gain;
+    const std::optional<double> critical = criticalGain(unitLoop, w);
+    return critical ? std::min(*forPhase, *critical / t.minGainMargin) : *forPhase;
 }
 
 }  // namespace
