@@ -74,7 +74,9 @@ FeedState HydraulicFeedModel::derivative(const FeedState& x, double loadN) const
     const double flow = d.pumpFlowM3PerS + regulatorFlow(x.spoolM);
     double acceleration =
         cylinderAcceleration(x.feedMPerS, flow, leakage(loadN), d.cylinderTimeConstantS, d.cylinderGainPerM2);
-    if (x.feedMPerS <= 0.0) acceleration = std::max(acceleration, 0.0);  // the stop: stalled, never backwards
+    // The stop: at zero feed the carriage stalls, never runs backwards; an integration step that overshot
+    // below zero is pulled back with the cylinder's own time constant.
+    if (x.feedMPerS <= 0.0) acceleration = std::max(acceleration, -x.feedMPerS / d.cylinderTimeConstantS);
     FeedState dx{magnetCurrentRate(x.currentA, voltage, d.coilInductanceH, p.coilResistanceOhm),
                  x.spoolVelocityMPerS,
                  spoolAcceleration(x.spoolM, x.spoolVelocityMPerS, force, p.spoolTimeConstantS, p.spoolDampingRatio,
