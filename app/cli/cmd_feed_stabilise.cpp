@@ -153,10 +153,11 @@ void addOptions(CommandParser& parser) {
                      QStringLiteral("Step responses for a sweep of xi or of the gain (with the regulator), or of the "
                                     "load (a step to each load with every regulator)."),
                      QStringLiteral("xi|gain|load"));
-    parser.addOption(QStringLiteral("sweep-values"),
-                     QStringLiteral("The sweep's values, comma separated (default: xi 0.2 .. 2; gain 0 .. 2 x design "
-                                    "for the feed-forward, factors 0.25 .. 6 on K_p for the feedback; load 0.5 .. 6 N)."),
-                     QStringLiteral("A,B,..."));
+    parser.addOption(
+        QStringLiteral("sweep-values"),
+        QStringLiteral("The sweep's values, comma separated (default: xi 0.2 .. 2; gain 0 .. 2 x design "
+                       "for the feed-forward, factors 0.25 .. 6 on K_p for the feedback; load 0.5 .. 6 N)."),
+        QStringLiteral("A,B,..."));
     parser.addOption(QStringLiteral("duration"), QStringLiteral("Simulated time, s (default: the preset's)."),
                      QStringLiteral("S"));
     parser.addOption(QStringLiteral("csv"),
@@ -212,13 +213,14 @@ int runFeedStabilise(const QStringList& arguments) {
                     {QStringLiteral("feedforward"), QStringLiteral("feedback"), QStringLiteral("off")})
             .toStdString());
     if (parser.isSet(QStringLiteral("sweep"))) {
-        const QString sweep =
-            parser.choice(QStringLiteral("sweep"), {QStringLiteral("xi"), QStringLiteral("gain"), QStringLiteral("load")});
+        const QString sweep = parser.choice(QStringLiteral("sweep"),
+                                            {QStringLiteral("xi"), QStringLiteral("gain"), QStringLiteral("load")});
         r.loadSweep = sweep == QStringLiteral("load");
         if (!r.loadSweep) r.sweepKind = core::feedSweepKindFromString(sweep.toStdString());
     }
     r.scenario = scenarioFrom(parser, r.preset);
-    r.feedbackDesign = asUsage(QStringLiteral("parameters"), [&] { return core::designFeedFeedback(r.scenario.params); });
+    r.feedbackDesign =
+        asUsage(QStringLiteral("parameters"), [&] { return core::designFeedFeedback(r.scenario.params); });
     r.off = core::runFeedScenario(r.scenario, core::FeedRegulator::Off);
     r.feedForward = core::runFeedScenario(r.scenario, core::FeedRegulator::FeedForward);
     r.feedback = core::runFeedScenario(r.scenario, core::FeedRegulator::Feedback);
@@ -236,9 +238,9 @@ int runFeedStabilise(const QStringList& arguments) {
 
 Command makeFeedStabiliseCommand() {
     return {QStringLiteral("feed-stabilise"),
-            QStringLiteral(
-                "hydraulic feed stabilisation under a changing cutting force (paper 003): feedback, the paper's feed-forward "
-                "or none; sweeps of xi, gain and load"),
+            QStringLiteral("hydraulic feed stabilisation under a changing cutting force (paper 003): feedback, the "
+                           "paper's feed-forward "
+                           "or none; sweeps of xi, gain and load"),
             runFeedStabilise};
 }
 

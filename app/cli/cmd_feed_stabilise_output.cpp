@@ -209,17 +209,19 @@ QJsonObject loadSweepJson(const FeedReport& r) {
 QString feedWarningText(const core::FeedWarning& w, double setFeedMPerS, double bandPct) {
     const QString span = QStringLiteral("from %1 s to %2 s (%3 s in all)").arg(g(w.fromS), g(w.toS), g(w.durationS, 3));
     switch (w.kind) {
-    case core::FeedWarningKind::CarriageStalled:
-        return QStringLiteral("the carriage stalled on its stop %1: the flow could not make up the load's leakage")
-            .arg(span);
-    case core::FeedWarningKind::SlotFullyOpen:
-        return QStringLiteral("the slot was fully open (the spool on its stop) %1: the regulator could give no more flow")
-            .arg(span);
-    case core::FeedWarningKind::SlotShut:
-        return QStringLiteral("the feedback asked for less than a shut slot %1: it could take no flow away").arg(span);
-    case core::FeedWarningKind::FeedOffSet:
-        return QStringLiteral("the feed ends %1 % from the set feed %2 m/s, outside the band of +-%3 %")
-            .arg(QString::number(w.value, 'f', 2), g(setFeedMPerS), g(bandPct));
+        case core::FeedWarningKind::CarriageStalled:
+            return QStringLiteral("the carriage stalled on its stop %1: the flow could not make up the load's leakage")
+                .arg(span);
+        case core::FeedWarningKind::SlotFullyOpen:
+            return QStringLiteral(
+                       "the slot was fully open (the spool on its stop) %1: the regulator could give no more flow")
+                .arg(span);
+        case core::FeedWarningKind::SlotShut:
+            return QStringLiteral("the feedback asked for less than a shut slot %1: it could take no flow away")
+                .arg(span);
+        case core::FeedWarningKind::FeedOffSet:
+            return QStringLiteral("the feed ends %1 % from the set feed %2 m/s, outside the band of +-%3 %")
+                .arg(QString::number(w.value, 'f', 2), g(setFeedMPerS), g(bandPct));
     }
     return {};
 }

@@ -21,7 +21,7 @@ struct FeedReport {
     core::FeedRun feedback;
     core::FeedFeedbackDesign feedbackDesign;
     std::optional<core::FeedStability> stability;  ///< the feed-forward's gain analysis (--regulator feedforward)
-    QString stabilityNote;  ///< why there is no such analysis
+    QString stabilityNote;                         ///< why there is no such analysis
     std::optional<core::FeedBoundaryCheck> check;
     std::vector<core::FeedSensitivity> sensitivity;
     std::optional<core::FeedSweepKind> sweepKind;

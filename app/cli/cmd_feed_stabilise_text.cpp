@@ -16,12 +16,12 @@ QString g(double v, int precision = 4) {
 
 QString label(core::FeedRegulator r) {
     switch (r) {
-    case core::FeedRegulator::Off:
-        return QStringLiteral("without the regulator");
-    case core::FeedRegulator::FeedForward:
-        return QStringLiteral("feed-forward (paper's)");
-    case core::FeedRegulator::Feedback:
-        return QStringLiteral("feedback");
+        case core::FeedRegulator::Off:
+            return QStringLiteral("without the regulator");
+        case core::FeedRegulator::FeedForward:
+            return QStringLiteral("feed-forward (paper's)");
+        case core::FeedRegulator::Feedback:
+            return QStringLiteral("feedback");
     }
     return {};
 }
@@ -47,13 +47,14 @@ void printRuns(const FeedReport& r) {
     for (core::FeedRegulator reg :
          {core::FeedRegulator::Off, core::FeedRegulator::FeedForward, core::FeedRegulator::Feedback})
         printLine(metricsLine(label(reg) + (reg == r.regulator ? QStringLiteral(" *") : QString()), r.run(reg)));
-    printLine(QStringLiteral("(* = --regulator; settling: into 5 % of the largest deviation, the paper's t_c = 3T; + = "
-                             "not settled in the run)"));
+    printLine(
+        QStringLiteral("(* = --regulator; settling: into 5 % of the largest deviation, the paper's t_c = 3T; + = "
+                       "not settled in the run)"));
     const core::FeedRun& chosen = r.chosen();
     printLine(QStringLiteral("Held (%1): largest deviation %2 % at %3 s, leaving out 3 T_c = %4 s after each load "
                              "change: %5 the band of +-%6 %")
-                  .arg(label(r.regulator), QString::number(chosen.hold.largestDeviationPct, 'f', 2),
-                       g(chosen.hold.atS), g(chosen.hold.excludedS, 3),
+                  .arg(label(r.regulator), QString::number(chosen.hold.largestDeviationPct, 'f', 2), g(chosen.hold.atS),
+                       g(chosen.hold.excludedS, 3),
                        chosen.hold.withinBand ? QStringLiteral("within") : QStringLiteral("OUTSIDE"),
                        g(chosen.hold.bandPct)));
     for (const core::FeedWarning& w : chosen.warnings)
@@ -115,10 +116,11 @@ void printStability(const FeedReport& r) {
         return;
     }
     printLine(QStringLiteral("No gain destabilises the chain%1")
-                  .arg(st.fullOpeningGain ? QStringLiteral("; above K_a = %1 V/V (%2 x the design gain) the slot "
-                                                           "opens fully")
-                                                .arg(g(*st.fullOpeningGain, 5), g(*st.fullOpeningGain / st.designGain, 4))
-                                          : QString()));
+                  .arg(st.fullOpeningGain
+                           ? QStringLiteral("; above K_a = %1 V/V (%2 x the design gain) the slot "
+                                            "opens fully")
+                                 .arg(g(*st.fullOpeningGain, 5), g(*st.fullOpeningGain / st.designGain, 4))
+                           : QString()));
 }
 
 void printSensitivity(const FeedReport& r) {
@@ -141,11 +143,12 @@ void printSensitivity(const FeedReport& r) {
 void printSweep(const FeedReport& r) {
     const QString name = QString::fromLatin1(core::toString(*r.sweepKind));
     printLine(QString());
-    printLine(QStringLiteral("Sweep of %1 (%2%3):")
-                  .arg(name, label(r.compared()),
-                       r.compared() == core::FeedRegulator::Feedback && *r.sweepKind == core::FeedSweepKind::AmplifierGain
-                           ? QStringLiteral("; the gain is a factor on the designed K_p")
-                           : QString()));
+    printLine(
+        QStringLiteral("Sweep of %1 (%2%3):")
+            .arg(name, label(r.compared()),
+                 r.compared() == core::FeedRegulator::Feedback && *r.sweepKind == core::FeedSweepKind::AmplifierGain
+                     ? QStringLiteral("; the gain is a factor on the designed K_p")
+                     : QString()));
     printLine(QStringLiteral("%1 %2 %3 %4 %5 %6")
                   .arg(name, 9)
                   .arg(QStringLiteral("feed, m/s"), 12)
@@ -163,13 +166,13 @@ void printSweep(const FeedReport& r) {
                       .arg(QString::number(p.run.feed.overshootPct, 'f', 2), 12)
                       .arg(QString::number(p.run.opening.overshootPct, 'f', 2), 18)
                       .arg(p.oscillates ? QStringLiteral("yes") : QStringLiteral("no"), 10)
-                      .arg(p.feedback ? QStringLiteral("  margins %1 / %2 deg")
-                                            .arg(p.feedback->margins.gainMargin ? g(*p.feedback->margins.gainMargin, 3)
-                                                                                : QStringLiteral("inf"),
-                                                 p.feedback->margins.phaseMarginDeg
-                                                     ? g(*p.feedback->margins.phaseMarginDeg, 3)
-                                                     : QStringLiteral("inf"))
-                                      : QString())
+                      .arg(p.feedback
+                               ? QStringLiteral("  margins %1 / %2 deg")
+                                     .arg(p.feedback->margins.gainMargin ? g(*p.feedback->margins.gainMargin, 3)
+                                                                         : QStringLiteral("inf"),
+                                          p.feedback->margins.phaseMarginDeg ? g(*p.feedback->margins.phaseMarginDeg, 3)
+                                                                             : QStringLiteral("inf"))
+                               : QString())
                       .arg(p.stable ? (p.run.slotFullyOpen ? QStringLiteral("  slot fully open") : QString())
                                     : QStringLiteral("  unstable")));
 }

@@ -29,11 +29,11 @@ std::vector<std::complex<double>> polynomialRoots(const std::vector<double>& coe
 /// the phase margin is 180 deg + arg L where |L| crosses 1, the delay margin is the phase margin over
 /// its crossover frequency. A margin without a crossing is empty (the loop tolerates any such change).
 struct ContinuousMargins {
-    std::optional<double> gainMargin;            ///< the loop gain may grow this many times (smallest > 1)
-    std::optional<double> phaseCrossoverRadPerS;  ///< where the phase is -180 deg (of that gain margin), rad/s
-    std::optional<double> phaseMarginDeg;        ///< smallest over the gain crossovers, deg
-    std::optional<double> gainCrossoverRadPerS;  ///< where |L| = 1 (of that phase margin), rad/s
-    std::optional<double> delayMarginS;          ///< extra pure delay the loop tolerates, s
+    std::optional<double> gainMargin;                   ///< the loop gain may grow this many times (smallest > 1)
+    std::optional<double> phaseCrossoverRadPerS;        ///< where the phase is -180 deg (of that gain margin), rad/s
+    std::optional<double> phaseMarginDeg;               ///< smallest over the gain crossovers, deg
+    std::optional<double> gainCrossoverRadPerS;         ///< where |L| = 1 (of that phase margin), rad/s
+    std::optional<double> delayMarginS;                 ///< extra pure delay the loop tolerates, s
     std::vector<std::complex<double>> closedLoopPoles;  ///< roots of den + num, 1/s
     bool closedLoopStable = false;                      ///< every closed-loop pole in the left half-plane
 

@@ -132,9 +132,11 @@ void FeedChartTabs::plotSweep() {
     const bool xi = !m_sweepResult || m_sweepResult->job == FeedStudyResult::Job::SweepXi;
     const bool feedback = m_sweepResult && m_sweepResult->regulator == core::FeedRegulator::Feedback;
     m_sweep->setTitle(xi ? tr("Feed after the load step for each ξ") : tr("Feed after the load step for each gain"));
-    m_table->setHorizontalHeaderLabels({xi ? tr("ξ") : feedback ? tr("gain ×\nK_p") : tr("gain K_a"),
-                                        tr("feed,\nmm/s"), tr("settling,\ns"),
-                                        tr("overshoot,\n%"), tr("spool\novershoot, %"), tr("regulates")});
+    m_table->setHorizontalHeaderLabels({xi         ? tr("ξ")
+                                        : feedback ? tr("gain ×\nK_p")
+                                                   : tr("gain K_a"),
+                                        tr("feed,\nmm/s"), tr("settling,\ns"), tr("overshoot,\n%"),
+                                        tr("spool\novershoot, %"), tr("regulates")});
     if (!m_sweepResult) return;
     m_sweep->clear();
     const std::vector<core::FeedSweepPoint>& points = m_sweepResult->sweep;

@@ -25,8 +25,7 @@ bool FeedStudyWorker::start(FeedStudyResult::Job job, const core::FeedScenario& 
             QMetaObject::invokeMethod(
                 this, [this, done, total] { emit this->progress(done, total); }, Qt::QueuedConnection);
         };
-        auto result =
-            std::make_shared<FeedStudyResult>(
+        auto result = std::make_shared<FeedStudyResult>(
             compute(job, scenario, regulator, progress, [cancel] { return cancel->load(); }));
         QMetaObject::invokeMethod(
             this,

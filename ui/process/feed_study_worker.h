@@ -19,13 +19,13 @@ struct FeedStudyResult {
     Job job = Job::Simulate;
     core::FeedScenario scenario;
     core::FeedRegulator regulator = core::FeedRegulator::Feedback;  ///< the regulator of `with` and of the sweeps
-    core::FeedRun with;                            ///< Simulate: with the regulator
-    core::FeedRun without;                         ///< Simulate: regulator off
-    std::optional<core::FeedStability> stability;  ///< Simulate, feed-forward, with a load at the end
-    std::optional<core::FeedFeedbackDesign> feedback;  ///< Simulate, feedback: its design and margins
-    std::optional<core::FeedBoundaryCheck> check;  ///< Simulate, when there is a gain limit
-    std::vector<core::FeedSweepPoint> sweep;       ///< SweepXi, SweepGain
-    QString problem;                               ///< the engine refused (a parameter or the load), in its words
+    core::FeedRun with;                                             ///< Simulate: with the regulator
+    core::FeedRun without;                                          ///< Simulate: regulator off
+    std::optional<core::FeedStability> stability;                   ///< Simulate, feed-forward, with a load at the end
+    std::optional<core::FeedFeedbackDesign> feedback;               ///< Simulate, feedback: its design and margins
+    std::optional<core::FeedBoundaryCheck> check;                   ///< Simulate, when there is a gain limit
+    std::vector<core::FeedSweepPoint> sweep;                        ///< SweepXi, SweepGain
+    QString problem;           ///< the engine refused (a parameter or the load), in its words
     QString stabilityProblem;  ///< Simulate: why there is no stability analysis (no design point for the load)
     bool cancelled = false;
 };

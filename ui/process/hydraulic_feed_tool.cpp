@@ -388,10 +388,10 @@ void HydraulicFeedTool::showSummary() {
 QString HydraulicFeedTool::regulatorSummary(const FeedStudyResult& r) const {
     if (r.feedback) {
         const core::ContinuousMargins& m = r.feedback->margins;
-        const QString gain = m.gainMargin ? tr("%1 (%2 dB) at %3 rad/s")
-                                                .arg(g(*m.gainMargin, 3), g(*m.gainMarginDb(), 3),
-                                                     g(*m.phaseCrossoverRadPerS, 3))
-                                          : tr("unlimited");
+        const QString gain =
+            m.gainMargin ? tr("%1 (%2 dB) at %3 rad/s")
+                               .arg(g(*m.gainMargin, 3), g(*m.gainMarginDb(), 3), g(*m.phaseCrossoverRadPerS, 3))
+                         : tr("unlimited");
         const QString phase = m.phaseMarginDeg
                                   ? tr("%1° at %2 rad/s").arg(g(*m.phaseMarginDeg, 3), g(*m.gainCrossoverRadPerS, 3))
                                   : tr("unlimited");
@@ -414,21 +414,22 @@ QString HydraulicFeedTool::warningsText(const FeedStudyResult& r) const {
     QStringList out;
     for (const core::FeedWarning& w : r.with.warnings) {
         switch (w.kind) {
-        case core::FeedWarningKind::CarriageStalled:
-            out << tr("The carriage stalled from %1 s to %2 s: the flow cannot make up the load's leakage.")
-                       .arg(g(w.fromS, 3), g(w.toS, 3));
-            break;
-        case core::FeedWarningKind::SlotFullyOpen:
-            out << tr("The slot was fully open from %1 s to %2 s: the regulator could give no more flow.")
-                       .arg(g(w.fromS, 3), g(w.toS, 3));
-            break;
-        case core::FeedWarningKind::SlotShut:
-            out << tr("The feedback asked for less than a shut slot from %1 s to %2 s.").arg(g(w.fromS, 3), g(w.toS, 3));
-            break;
-        case core::FeedWarningKind::FeedOffSet:
-            out << tr("The feed ends %1 % off the set feed (band ±%2 %).")
-                       .arg(QString::number(w.value, 'f', 1), g(r.scenario.run.bandPct));
-            break;
+            case core::FeedWarningKind::CarriageStalled:
+                out << tr("The carriage stalled from %1 s to %2 s: the flow cannot make up the load's leakage.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::SlotFullyOpen:
+                out << tr("The slot was fully open from %1 s to %2 s: the regulator could give no more flow.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::SlotShut:
+                out << tr("The feedback asked for less than a shut slot from %1 s to %2 s.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::FeedOffSet:
+                out << tr("The feed ends %1 % off the set feed (band ±%2 %).")
+                           .arg(QString::number(w.value, 'f', 1), g(r.scenario.run.bandPct));
+                break;
         }
     }
     return out.join(QLatin1Char(' '));

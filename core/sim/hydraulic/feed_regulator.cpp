@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <vector>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace tt::core {
 
@@ -86,12 +86,12 @@ double gainForTargets(const RationalTransfer& unitLoop, const FeedFeedbackTarget
 
 const char* toString(FeedRegulator regulator) {
     switch (regulator) {
-    case FeedRegulator::Off:
-        return "off";
-    case FeedRegulator::FeedForward:
-        return "feedforward";
-    case FeedRegulator::Feedback:
-        return "feedback";
+        case FeedRegulator::Off:
+            return "off";
+        case FeedRegulator::FeedForward:
+            return "feedforward";
+        case FeedRegulator::Feedback:
+            return "feedback";
     }
     return "off";
 }
@@ -105,9 +105,9 @@ FeedRegulator feedRegulatorFromString(const std::string& text) {
 RationalTransfer feedPlantTransfer(const HydraulicFeedParams& p) {
     const HydraulicFeedDerived d = deriveFeedQuantities(p);
     const double tz = p.spoolTimeConstantS;
-    const std::vector<double> den =
-        multiplyPolynomials(multiplyPolynomials({d.magnetTimeConstantS, 1.0}, {tz * tz, 2.0 * p.spoolDampingRatio * tz, 1.0}),
-                            {d.cylinderTimeConstantS, 1.0});
+    const std::vector<double> den = multiplyPolynomials(
+        multiplyPolynomials({d.magnetTimeConstantS, 1.0}, {tz * tz, 2.0 * p.spoolDampingRatio * tz, 1.0}),
+        {d.cylinderTimeConstantS, 1.0});
     return {{d.slotGainM2PerS * d.cylinderGainPerM2}, den};
 }
 

@@ -91,14 +91,14 @@ std::vector<FeedWarning> warningsOf(const FeedRun& run, const HydraulicFeedModel
     const double shutBelow = -0.01 * model.params().maxOpeningM;  // 1 % of the opening: not a rounding
     auto holds = [&](FeedWarningKind kind, const FeedSample& s) {
         switch (kind) {
-        case FeedWarningKind::CarriageStalled:
-            return s.stalled;
-        case FeedWarningKind::SlotFullyOpen:
-            return s.openingM >= full;
-        case FeedWarningKind::SlotShut:
-            return s.demandM < shutBelow;
-        case FeedWarningKind::FeedOffSet:
-            return false;
+            case FeedWarningKind::CarriageStalled:
+                return s.stalled;
+            case FeedWarningKind::SlotFullyOpen:
+                return s.openingM >= full;
+            case FeedWarningKind::SlotShut:
+                return s.demandM < shutBelow;
+            case FeedWarningKind::FeedOffSet:
+                return false;
         }
         return false;
     };
@@ -123,18 +123,39 @@ std::vector<FeedWarning> warningsOf(const FeedRun& run, const HydraulicFeedModel
     return out;
 }
 
+/// The metrics, the hold and the warnings of a simulated run.
+void finishRun(FeedRun& run, const HydraulicFeedModel& model, const FeedLoadProfile& load,
+               const FeedRunOptions& options) {
+    std::vector<double> t;
+    std::vector<double> feed;
+    std::vector<double> opening;
+    for (const FeedSample& s : run.samples) {
+        t.push_back(s.timeS);
+        feed.push_back(s.feedMPerS);
+        opening.push_back(s.openingM);
+    }
+    const double event = std::min(load.lastEventS(), t.size() >= 2 ? t[t.size() - 2] : 0.0);
+    run.feed = stepMetrics(t, feed, event);
+    run.opening = stepMetrics(t, opening, event);
+    run.slotFullyOpen = run.samples.back().openingM >= model.params().maxOpeningM * (1.0 - 1e-9);
+    run.setFeedMPerS = model.params().setFeedMPerS;
+    run.deviationPct = 100.0 * (run.feed.finalValue - run.setFeedMPerS) / run.setFeedMPerS;
+    run.hold = holdOf(run.samples, load, options, run.setFeedMPerS, 3.0 * model.derived().cylinderTimeConstantS);
+    run.warnings = warningsOf(run, model, options.bandPct);
+}
+
 }  // namespace
 
 const char* toString(FeedWarningKind kind) {
     switch (kind) {
-    case FeedWarningKind::CarriageStalled:
-        return "carriage_stalled";
-    case FeedWarningKind::SlotFullyOpen:
-        return "slot_fully_open";
-    case FeedWarningKind::SlotShut:
-        return "slot_shut";
-    case FeedWarningKind::FeedOffSet:
-        return "feed_off_set";
+        case FeedWarningKind::CarriageStalled:
+            return "carriage_stalled";
+        case FeedWarningKind::SlotFullyOpen:
+            return "slot_fully_open";
+        case FeedWarningKind::SlotShut:
+            return "slot_shut";
+        case FeedWarningKind::FeedOffSet:
+            return "feed_off_set";
     }
     return "feed_off_set";
 }
@@ -186,22 +207,7 @@ FeedRun simulateFeed(const HydraulicFeedModel& model, const FeedLoadProfile& loa
         x = integrateDormandPrince(rhs, x, times, observe, scale);
     }
 
-    std::vector<double> t;
-    std::vector<double> feed;
-    std::vector<double> opening;
-    for (const FeedSample& s : run.samples) {
-        t.push_back(s.timeS);
-        feed.push_back(s.feedMPerS);
-        opening.push_back(s.openingM);
-    }
-    const double event = std::min(load.lastEventS(), t.size() >= 2 ? t[t.size() - 2] : 0.0);
-    run.feed = stepMetrics(t, feed, event);
-    run.opening = stepMetrics(t, opening, event);
-    run.slotFullyOpen = run.samples.back().openingM >= model.params().maxOpeningM * (1.0 - 1e-9);
-    run.setFeedMPerS = model.params().setFeedMPerS;
-    run.deviationPct = 100.0 * (run.feed.finalValue - run.setFeedMPerS) / run.setFeedMPerS;
-    run.hold = holdOf(run.samples, load, options, run.setFeedMPerS, 3.0 * model.derived().cylinderTimeConstantS);
-    run.warnings = warningsOf(run, model, options.bandPct);
+    finishRun(run, model, load, options);
     return run;
 }
 

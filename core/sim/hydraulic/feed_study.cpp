@@ -81,7 +81,8 @@ std::vector<FeedSweepPoint> sweepFeed(const FeedScenario& scenario, FeedSweepKin
                                       const std::vector<double>& values, FeedRegulator regulator,
                                       const FeedProgress& progress, const FeedCancelled& cancelled) {
     if (regulator == FeedRegulator::Off)
-        throw std::invalid_argument("a sweep of xi or of the gain needs a regulator (feedforward or feedback), not off");
+        throw std::invalid_argument(
+            "a sweep of xi or of the gain needs a regulator (feedforward or feedback), not off");
     if (values.empty() || values.size() > kMaxSweepValues)
         throw std::invalid_argument("a sweep takes 1 .. 50 values, not " + number(static_cast<double>(values.size())));
     const bool gainFactor = regulator == FeedRegulator::Feedback && kind == FeedSweepKind::AmplifierGain;
@@ -127,7 +128,8 @@ std::vector<double> defaultLoadSweepValues() {
 std::vector<FeedLoadPoint> sweepLoad(const FeedScenario& scenario, const std::vector<double>& loadsN,
                                      const FeedProgress& progress, const FeedCancelled& cancelled) {
     if (loadsN.empty() || loadsN.size() > kMaxSweepValues)
-        throw std::invalid_argument("a load sweep takes 1 .. 50 loads, not " + number(static_cast<double>(loadsN.size())));
+        throw std::invalid_argument("a load sweep takes 1 .. 50 loads, not " +
+                                    number(static_cast<double>(loadsN.size())));
     const double stepS = scenario.load.empty() ? 0.02 : scenario.load.lastEventS();
     std::vector<FeedLoadPoint> out;
     for (double loadN : loadsN) {

@@ -41,8 +41,8 @@ FeedSweepKind feedSweepKindFromString(const std::string& text);
 
 /// One member of a sweep: the feed's step response with the regulator on at one value.
 struct FeedSweepPoint {
-    double value = 0.0;       ///< xi; or the amplifier gain K_a in V/V (feed-forward), the factor on K_p (feedback)
-    FeedRun run;              ///< with the sweep's regulator
+    double value = 0.0;  ///< xi; or the amplifier gain K_a in V/V (feed-forward), the factor on K_p (feedback)
+    FeedRun run;         ///< with the sweep's regulator
     std::optional<FeedFeedbackDesign> feedback;  ///< the feedback's design at this value (its margins)
     bool stable = false;      ///< the chain linearised at its steady state under the final load has every eigenvalue
                               ///< in the left half-plane, and the gain is below the stability boundary

@@ -77,8 +77,7 @@ FeedState HydraulicFeedModel::derivative(const FeedState& x, double loadN) const
     // The stop: at zero feed the carriage stalls, never runs backwards; an integration step that overshot
     // below zero is pulled back with the cylinder's own time constant.
     if (x.feedMPerS <= 0.0) acceleration = std::max(acceleration, -x.feedMPerS / d.cylinderTimeConstantS);
-    FeedState dx{magnetCurrentRate(x.currentA, voltage, d.coilInductanceH, p.coilResistanceOhm),
-                 x.spoolVelocityMPerS,
+    FeedState dx{magnetCurrentRate(x.currentA, voltage, d.coilInductanceH, p.coilResistanceOhm), x.spoolVelocityMPerS,
                  spoolAcceleration(x.spoolM, x.spoolVelocityMPerS, force, p.spoolTimeConstantS, p.spoolDampingRatio,
                                    p.spoolGainMPerN),
                  acceleration};
@@ -122,8 +121,8 @@ FeedEquilibrium HydraulicFeedModel::feedbackEquilibrium(double loadN) const {
     e.stalled = e.slotFullyOpen && balance < 0.0;
     const double error = m_params.setFeedMPerS - x.feedMPerS;
     // On the stop, the back-calculation holds the demand above the full opening by K_p T_t e / T_i.
-    const double demand = e.slotFullyOpen ? m_params.maxOpeningM + c.gainS * c.trackingTimeS * error / c.integralTimeS
-                                          : e.openingM;
+    const double demand =
+        e.slotFullyOpen ? m_params.maxOpeningM + c.gainS * c.trackingTimeS * error / c.integralTimeS : e.openingM;
     x.integralM = c.integralTimeS * (demand / c.gainS - error);
     x.leadM = demand;
     x.currentA = characteriserVoltage(e.openingM) / m_params.coilResistanceOhm;

@@ -20,9 +20,9 @@ struct FeedState {
 
 /// What the feedback regulator asks for at a state.
 struct FeedbackSignals {
-    double demandM = 0.0;     ///< m*, the opening the PID demands (before its limits), m
-    double appliedM = 0.0;    ///< m* clamped to 0 .. the full opening, m
-    double voltageV = 0.0;    ///< the characteriser's output driving the coil, V
+    double demandM = 0.0;   ///< m*, the opening the PID demands (before its limits), m
+    double appliedM = 0.0;  ///< m* clamped to 0 .. the full opening, m
+    double voltageV = 0.0;  ///< the characteriser's output driving the coil, V
 };
 
 /// A steady state of the chain under a constant load.

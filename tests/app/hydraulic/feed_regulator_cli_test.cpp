@@ -16,7 +16,7 @@ namespace {
 using tt::test::CliResult;
 using tt::test::runTrueturn;
 
-constexpr double kBandPct = 3.0;   // the tolerance asked of the regulator
+constexpr double kBandPct = 3.0;     // the tolerance asked of the regulator
 constexpr double kThreeTcS = 0.054;  // 3 T_c, T_c = 0.018 s (paper 003, eq. 20)
 
 QJsonObject feedStabilise(QStringList args) {
@@ -42,9 +42,8 @@ QStringList warningKinds(const QJsonObject& o) {
 class FeedRegulatorCommand : public tt::test::CliTest {};
 
 TEST_F(FeedRegulatorCommand, LoadSweepWithTheFeedbackHoldsEveryLoad) {
-    const QJsonObject j =
-        feedStabilise({QStringLiteral("--sweep"), QStringLiteral("load"), QStringLiteral("--regulator"),
-                       QStringLiteral("feedback")});
+    const QJsonObject j = feedStabilise(
+        {QStringLiteral("--sweep"), QStringLiteral("load"), QStringLiteral("--regulator"), QStringLiteral("feedback")});
     EXPECT_EQ(j.value(QStringLiteral("sweep_of")).toString(), QStringLiteral("load"));
     const QJsonObject sweep = j.value(QStringLiteral("load_sweep")).toObject();
     EXPECT_TRUE(sweep.value(QStringLiteral("all_within_band")).toBool());
@@ -70,9 +69,9 @@ TEST_F(FeedRegulatorCommand, LoadSweepWithTheFeedbackHoldsEveryLoad) {
 }
 
 TEST_F(FeedRegulatorCommand, RampAndStepSequenceStayInTheBand) {
-    const QJsonObject ramp = feedStabilise({QStringLiteral("--load-step"), QStringLiteral("1@0.02"),
-                                            QStringLiteral("--load-ramp"), QStringLiteral("6@0.1+0.2"),
-                                            QStringLiteral("--duration"), QStringLiteral("0.45")});
+    const QJsonObject ramp =
+        feedStabilise({QStringLiteral("--load-step"), QStringLiteral("1@0.02"), QStringLiteral("--load-ramp"),
+                       QStringLiteral("6@0.1+0.2"), QStringLiteral("--duration"), QStringLiteral("0.45")});
     EXPECT_EQ(ramp.value(QStringLiteral("regulator")).toString(), QStringLiteral("feedback"));  // the default
     const QJsonObject hold = ramp.value(QStringLiteral("hold")).toObject();
     EXPECT_TRUE(hold.value(QStringLiteral("within_band")).toBool());
@@ -85,10 +84,11 @@ TEST_F(FeedRegulatorCommand, RampAndStepSequenceStayInTheBand) {
     EXPECT_FALSE(ff.value(QStringLiteral("hold")).toObject().value(QStringLiteral("within_band")).toBool());
     EXPECT_TRUE(warningKinds(ff).contains(QStringLiteral("feed_off_set")));
 
-    const QJsonObject steps = feedStabilise(
-        {QStringLiteral("--load-step"), QStringLiteral("1@0.02"), QStringLiteral("--load-step"), QStringLiteral("3@0.1"),
-         QStringLiteral("--load-step"), QStringLiteral("6@0.18"), QStringLiteral("--load-step"), QStringLiteral("2@0.26"),
-         QStringLiteral("--load-step"), QStringLiteral("0.5@0.34"), QStringLiteral("--duration"), QStringLiteral("0.45")});
+    const QJsonObject steps =
+        feedStabilise({QStringLiteral("--load-step"), QStringLiteral("1@0.02"), QStringLiteral("--load-step"),
+                       QStringLiteral("3@0.1"), QStringLiteral("--load-step"), QStringLiteral("6@0.18"),
+                       QStringLiteral("--load-step"), QStringLiteral("2@0.26"), QStringLiteral("--load-step"),
+                       QStringLiteral("0.5@0.34"), QStringLiteral("--duration"), QStringLiteral("0.45")});
     EXPECT_TRUE(steps.value(QStringLiteral("hold")).toObject().value(QStringLiteral("within_band")).toBool());
     EXPECT_LE(std::abs(number(steps, "deviation_pct")), kBandPct);
 }
@@ -106,23 +106,26 @@ TEST_F(FeedRegulatorCommand, ReportsTheMarginsInJsonAndText) {
     EXPECT_TRUE(m.value(QStringLiteral("closed_loop_stable")).toBool());
     EXPECT_EQ(m.value(QStringLiteral("closed_loop_poles_per_s")).toArray().size(), 6);
     const QJsonObject design = j.value(QStringLiteral("feedback_design")).toObject();
-    EXPECT_EQ(design.value(QStringLiteral("plant")).toObject().value(QStringLiteral("denominator")).toArray().size(), 5);
+    EXPECT_EQ(design.value(QStringLiteral("plant")).toObject().value(QStringLiteral("denominator")).toArray().size(),
+              5);
     // The paper's headline still holds with the feedback at the paper's load.
     EXPECT_NEAR(number(j, "steady_feed_m_s"), 1.0e-3, 1e-6);
     EXPECT_LE(number(j, "settling_s"), kThreeTcS);
     EXPECT_TRUE(j.value(QStringLiteral("stability")).isNull());  // the feed-forward's analysis is not asked for
 
-    const CliResult text = runTrueturn({QStringLiteral("feed-stabilise"), QStringLiteral("--sweep"), QStringLiteral("load")});
+    const CliResult text =
+        runTrueturn({QStringLiteral("feed-stabilise"), QStringLiteral("--sweep"), QStringLiteral("load")});
     ASSERT_EQ(text.exitCode, 0) << qPrintable(text.err);
-    EXPECT_TRUE(text.out.contains(QStringLiteral("Margins of the linearised loop (eqs. 17 and 22): gain 4.714 (13.5 dB)")))
+    EXPECT_TRUE(
+        text.out.contains(QStringLiteral("Margins of the linearised loop (eqs. 17 and 22): gain 4.714 (13.5 dB)")))
         << qPrintable(text.out);
     EXPECT_TRUE(text.out.contains(QStringLiteral("Load sweep:")));
     EXPECT_TRUE(text.out.contains(QStringLiteral("feedback *")));
 }
 
 TEST_F(FeedRegulatorCommand, WarnsOfTheStallAndTheMissedFeed) {
-    const QJsonObject j = feedStabilise(
-        {QStringLiteral("--regulator"), QStringLiteral("off"), QStringLiteral("--load-step"), QStringLiteral("6@0.02")});
+    const QJsonObject j = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("off"),
+                                         QStringLiteral("--load-step"), QStringLiteral("6@0.02")});
     EXPECT_EQ(number(j, "steady_feed_m_s"), 0.0);
     const QStringList kinds = warningKinds(j);
     EXPECT_EQ(kinds, (QStringList{QStringLiteral("carriage_stalled"), QStringLiteral("feed_off_set")}));

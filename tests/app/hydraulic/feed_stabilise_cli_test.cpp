@@ -63,8 +63,8 @@ TEST_F(FeedStabiliseCommand, ReproducesThePaperFeedsWithAndWithoutTheRegulator) 
 }
 
 TEST_F(FeedStabiliseCommand, XiSweepOscillatesBelowOneOnly) {
-    const QJsonObject j = feedStabilise(
-        {QStringLiteral("--regulator"), QStringLiteral("feedforward"), QStringLiteral("--sweep"), QStringLiteral("xi")});
+    const QJsonObject j = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"),
+                                         QStringLiteral("--sweep"), QStringLiteral("xi")});
     EXPECT_EQ(j.value(QStringLiteral("sweep_of")).toString(), QStringLiteral("xi"));
     const QJsonArray sweep = j.value(QStringLiteral("sweep")).toArray();
     ASSERT_EQ(sweep.size(), 8);
@@ -81,8 +81,8 @@ TEST_F(FeedStabiliseCommand, XiSweepOscillatesBelowOneOnly) {
 TEST_F(FeedStabiliseCommand, GainLimitOfTheChipLoopIsConfirmedBySimulation) {
     const QJsonObject j =
         feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"), QStringLiteral("--preset"),
-                       QStringLiteral("hydraulic-feed-chip"), QStringLiteral("--sweep"),
-                       QStringLiteral("gain"), QStringLiteral("--sweep-values"), QStringLiteral("70,137.6,160")});
+                       QStringLiteral("hydraulic-feed-chip"), QStringLiteral("--sweep"), QStringLiteral("gain"),
+                       QStringLiteral("--sweep-values"), QStringLiteral("70,137.6,160")});
     const QJsonObject stability = j.value(QStringLiteral("stability")).toObject();
     // u = 1 - b + b (K/K*)^2 u^1.2 folds at K/K* = 1.02219 (tests/core/hydraulic).
     EXPECT_NEAR(number(stability, "gain_limit") / number(stability, "design_gain"), 1.02219, 1e-4);
@@ -102,8 +102,8 @@ TEST_F(FeedStabiliseCommand, WritesTheCurvesAsCsvAndPrintsText) {
     const QString csv = path(QStringLiteral("feed.csv"));
     const CliResult r =
         runTrueturn({QStringLiteral("feed-stabilise"), QStringLiteral("--regulator"), QStringLiteral("feedforward"),
-                     QStringLiteral("--load-step"), QStringLiteral("3.23@0.02"),
-                     QStringLiteral("--load-ramp"), QStringLiteral("1@0.2+0.05"), QStringLiteral("--csv"), csv});
+                     QStringLiteral("--load-step"), QStringLiteral("3.23@0.02"), QStringLiteral("--load-ramp"),
+                     QStringLiteral("1@0.2+0.05"), QStringLiteral("--csv"), csv});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     EXPECT_TRUE(r.out.contains(QStringLiteral("without the regulator")));
     EXPECT_TRUE(r.out.contains(QStringLiteral("No gain destabilises the chain")));
@@ -120,8 +120,8 @@ TEST_F(FeedStabiliseCommand, WritesTheCurvesAsCsvAndPrintsText) {
 // A load the slot cannot make up even fully open: the runs are reported, the stability analysis says why
 // it is missing.
 TEST_F(FeedStabiliseCommand, LoadBeyondTheSlotIsReportedNotRefused) {
-    const QJsonObject j = feedStabilise(
-        {QStringLiteral("--regulator"), QStringLiteral("feedforward"), QStringLiteral("--load-step"), QStringLiteral("500@0.02")});
+    const QJsonObject j = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"),
+                                         QStringLiteral("--load-step"), QStringLiteral("500@0.02")});
     EXPECT_TRUE(j.value(QStringLiteral("stability")).isNull());
     EXPECT_TRUE(
         j.value(QStringLiteral("stability_note")).toString().contains(QStringLiteral("more than the full opening")));
@@ -138,9 +138,9 @@ TEST_F(FeedStabiliseCommand, RefusesBadInput) {
                   QStringLiteral("--xi: 20 is outside 0.05 .. 10"));
     expectRefused({cmd, QStringLiteral("--regulator"), QStringLiteral("maybe")}, QStringLiteral("--regulator"));
     expectRefused({cmd, QStringLiteral("--regulator"), QStringLiteral("on")}, QStringLiteral("--regulator"));
-    expectRefused({cmd, QStringLiteral("--regulator"), QStringLiteral("off"), QStringLiteral("--sweep"),
-                   QStringLiteral("xi")},
-                  QStringLiteral("needs a regulator"));
+    expectRefused(
+        {cmd, QStringLiteral("--regulator"), QStringLiteral("off"), QStringLiteral("--sweep"), QStringLiteral("xi")},
+        QStringLiteral("needs a regulator"));
     expectRefused({cmd, QStringLiteral("--sweep"), QStringLiteral("load"), QStringLiteral("--sweep-values"),
                    QStringLiteral("1,-2")},
                   QStringLiteral("load force -2 N is outside 0 .. 10000 N"));

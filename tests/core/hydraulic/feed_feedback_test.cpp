@@ -118,8 +118,10 @@ TEST(FeedFeedback, GainMarginIsTheFullModelsBoundary) {
     FeedRunOptions o;
     o.durationS = 0.6;
     o.sampleS = 2e-4;
-    const FeedRun below = simulateFeed(HydraulicFeedModel(p, FeedRegulator::Feedback, scaledFeedback(d, 0.9 * *d.margins.gainMargin)), load, o);
-    const FeedRun above = simulateFeed(HydraulicFeedModel(p, FeedRegulator::Feedback, scaledFeedback(d, 1.1 * *d.margins.gainMargin)), load, o);
+    const FeedRun below = simulateFeed(
+        HydraulicFeedModel(p, FeedRegulator::Feedback, scaledFeedback(d, 0.9 * *d.margins.gainMargin)), load, o);
+    const FeedRun above = simulateFeed(
+        HydraulicFeedModel(p, FeedRegulator::Feedback, scaledFeedback(d, 1.1 * *d.margins.gainMargin)), load, o);
     EXPECT_LT(swing(below, 0.5, 0.6), 0.05 * swing(below, 0.2, 0.3));
     EXPECT_GT(swing(above, 0.5, 0.6), 0.5 * swing(above, 0.2, 0.3));
     EXPECT_GT(swing(above, 0.5, 0.6), 0.01 * p.setFeedMPerS);
@@ -196,8 +198,8 @@ TEST(FeedFeedback, HoldsTheSetFeedUnderAChangingLoad) {
     EXPECT_FALSE(runFeedScenario(ramp, FeedRegulator::FeedForward).hold.withinBand);
 
     FeedScenario steps;
-    for (const auto& [t, f] : std::vector<std::pair<double, double>>{{0.02, 1.0}, {0.1, 3.0}, {0.18, 6.0}, {0.26, 2.0},
-                                                                    {0.34, 0.5}})
+    for (const auto& [t, f] :
+         std::vector<std::pair<double, double>>{{0.02, 1.0}, {0.1, 3.0}, {0.18, 6.0}, {0.26, 2.0}, {0.34, 0.5}})
         steps.load.addStep(t, f);
     steps.run.durationS = 0.45;
     const FeedRun q = runFeedScenario(steps, FeedRegulator::Feedback);

@@ -102,7 +102,8 @@ TEST(FeedSweep, GainsBeyondTheBoundaryRunAway) {
 }
 
 TEST(FeedSweep, CanBeCancelled) {
-    EXPECT_THROW(sweepFeed(paperScenario(), FeedSweepKind::DampingRatio, {0.5, 1.0}, FeedRegulator::FeedForward, {}, [] { return true; }),
+    EXPECT_THROW(sweepFeed(paperScenario(), FeedSweepKind::DampingRatio, {0.5, 1.0}, FeedRegulator::FeedForward, {},
+                           [] { return true; }),
                  FeedSimulationCancelled);
 }
 
