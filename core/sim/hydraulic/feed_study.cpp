@@ -188,7 +188,10 @@ std::vector<FeedSensitivity> feedSensitivity(const HydraulicFeedParams& params, 
     bool ignored = false;
     const double nominalOn = steadyFeed(params, true, ignored);
     const double nominalOff = steadyFeed(params, false, ignored);
-    auto percent = [](double value, double nominal) { return 100.0 * (value - nominal) / std::abs(nominal); };
+    // Of the nominal feed; of the set feed when the nominal carriage stands (stalled on its stop).
+    auto percent = [&](double value, double nominal) {
+        return 100.0 * (value - nominal) / (nominal != 0.0 ? std::abs(nominal) : params.setFeedMPerS);
+    };
     std::vector<FeedSensitivity> out;
     for (const FeedParameterInfo& info : feedParameters()) {
         const double nominal = params.*(info.member);

@@ -105,7 +105,8 @@ struct FeedSensitivity {
     std::string key;   ///< "spool.gain_m_per_n"
     std::string name;  ///< "spool gain K_z"
     double nominal = 0.0;
-    double onMinusPct = 0.0;   ///< regulator on, parameter - 10 %: change of the steady feed, %
+    double onMinusPct = 0.0;   ///< regulator on, parameter - 10 %: change of the steady feed, % (of the set feed
+                               ///< when the nominal carriage stalls)
     double onPlusPct = 0.0;    ///< regulator on, + 10 %
     double offMinusPct = 0.0;  ///< regulator off, - 10 %
     double offPlusPct = 0.0;   ///< regulator off, + 10 %

@@ -140,7 +140,9 @@ TEST(FeedFeedback, SteadyStatesAndTheStop) {
         EXPECT_NEAR(dx.feedMPerS, 0.0, 1e-10) << load;
         EXPECT_NEAR(dx.integralM, 0.0, 1e-12) << load;
         EXPECT_NEAR(dx.leadM, 0.0, 1e-9) << load;
-        if (load <= 6.0) EXPECT_NEAR(e.state.feedMPerS, 1e-3, 1e-15) << load;
+        if (load <= 6.0) {
+            EXPECT_NEAR(e.state.feedMPerS, 1e-3, 1e-15) << load;
+        }
     }
     EXPECT_TRUE(model.equilibrium(13.0).slotFullyOpen);
     EXPECT_FALSE(model.equilibrium(13.0).stalled);
