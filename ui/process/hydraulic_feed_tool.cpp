@@ -132,8 +132,6 @@ void HydraulicFeedTool::buildLayout() {
     scenario->addWidget(m_durationLabel, 1, 0, Qt::AlignRight);
     scenario->addWidget(m_duration, 1, 1);
     scenario->addWidget(m_reset, 1, 2, 1, 2);
-    scenario->addWidget(m_regulatorLabel, 2, 0, Qt::AlignRight);
-    scenario->addWidget(m_regulator, 2, 1, 1, 3);
 
     m_summary->setWordWrap(true);
     m_summary->setStyleSheet(QStringLiteral("font-size: 12pt; color: #1f2a36;"));
@@ -160,8 +158,13 @@ void HydraulicFeedTool::buildLayout() {
     for (QPushButton* b : {m_simulate, m_sweepXi, m_sweepGain, m_cancel})
         actions->addWidget(b);
     actions->addStretch(1);
+    // The regulator above the actions it applies to (the left column is full at 800 px).
+    auto* regulatorRow = new QHBoxLayout;
+    regulatorRow->addWidget(m_regulatorLabel);
+    regulatorRow->addWidget(m_regulator, 1);
     auto* right = new QVBoxLayout;
     right->setContentsMargins(0, 0, 0, 0);
+    right->addLayout(regulatorRow);
     right->addLayout(actions);
     right->addWidget(m_charts, 1);
     right->addWidget(m_summary);
@@ -376,10 +379,17 @@ void HydraulicFeedTool::showSummary() {
         tr("Steady feed %1 mm/s with %7, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s "
            "without; overshoot %6 %.")
             .arg(QString::number(r.with.feed.finalValue * 1e3, 'f', 4),
-                 QString::number(r.without.feed.finalValue * 1e3, 'f', 4),
+                 QString::number(std::abs(r.without.feed.finalValue) < 1e-12 ? 0.0 : r.without.feed.finalValue * 1e3,
+                                 'f', 4),
                  QString::number(r.scenario.params.setFeedMPerS * 1e3, 'f', 3),
                  QString::number(r.with.feed.settlingS, 'f', 3), QString::number(r.without.feed.settlingS, 'f', 3),
                  QString::number(r.with.feed.overshootPct, 'f', 1), name);
+    const bool stalls =
+        std::any_of(r.without.warnings.begin(), r.without.warnings.end(),
+                    [](const core::FeedWarning& w) { return w.kind == core::FeedWarningKind::CarriageStalled; });
+    if (stalls)
+        text += QLatin1Char(' ') +
+                tr("Without the regulator the carriage stalls: the pump's flow cannot make up the leakage.");
     const QString regulatorText = regulatorSummary(r);
     if (!regulatorText.isEmpty()) text += QLatin1Char('\n') + regulatorText;
     m_summary->setText(text);
