@@ -174,7 +174,7 @@ void analyse(FeedReport& r) {
     }
     r.sensitivity = core::feedSensitivity(r.scenario.params, load, 0.1, r.compared());
     if (r.regulator != core::FeedRegulator::FeedForward) {
-        r.stabilityNote = QStringLiteral("it is the paper's feed-forward's: run with --regulator feedforward");
+        r.stabilityNote = QStringLiteral("only with --regulator feedforward (it analyses the paper's regulator)");
         return;
     }
     try {

@@ -14,6 +14,17 @@ QString g(double v, int precision = 4) {
     return QString::number(v, 'g', precision);
 }
 
+/// A feed, m/s: the integrator's 1e-19 of a stalled carriage printed as 0.
+QString feed(double v) {
+    return g(std::abs(v) < 1e-12 ? 0.0 : v);
+}
+
+/// A percentage with 2 decimals, without "-0.00".
+QString pct(double v) {
+    const double rounded = std::round(v * 100.0) / 100.0;
+    return QString::number(rounded == 0.0 ? 0.0 : rounded, 'f', 2);
+}
+
 QString label(core::FeedRegulator r) {
     switch (r) {
         case core::FeedRegulator::Off:
@@ -29,8 +40,8 @@ QString label(core::FeedRegulator r) {
 QString metricsLine(const QString& what, const core::FeedRun& run) {
     return QStringLiteral("%1 %2 %3 %4 %5 %6")
         .arg(what, -26)
-        .arg(g(run.feed.finalValue), 12)
-        .arg(QString::number(run.deviationPct, 'f', 2), 9)
+        .arg(feed(run.feed.finalValue), 12)
+        .arg(pct(run.deviationPct), 9)
         .arg(QString::number(run.feed.settlingS, 'f', 4) + (run.feed.settled ? QString() : QStringLiteral("+")), 11)
         .arg(QString::number(run.feed.overshootPct, 'f', 2), 12)
         .arg(g(run.feed.peakDeviation, 3), 14);
@@ -199,11 +210,11 @@ void printLoadSweep(const FeedReport& r) {
             warnings << QString::fromLatin1(core::toString(w.kind));
         printLine(QStringLiteral("%1 %2 %3 %4 %5 %6  %7 %8 %9")
                       .arg(g(p.loadN), 8)
-                      .arg(g(p.off.feed.finalValue), 12)
-                      .arg(g(p.feedForward.feed.finalValue), 12)
-                      .arg(QString::number(p.feedForward.deviationPct, 'f', 2), 8)
-                      .arg(g(p.feedback.feed.finalValue), 12)
-                      .arg(QString::number(p.feedback.deviationPct, 'f', 2), 8)
+                      .arg(feed(p.off.feed.finalValue), 12)
+                      .arg(feed(p.feedForward.feed.finalValue), 12)
+                      .arg(pct(p.feedForward.deviationPct), 8)
+                      .arg(feed(p.feedback.feed.finalValue), 12)
+                      .arg(pct(p.feedback.deviationPct), 8)
                       .arg(QString::number(run.feed.settlingS, 'f', 4))
                       .arg(std::abs(run.deviationPct) <= band ? QStringLiteral("yes") : QStringLiteral("NO"))
                       .arg(warnings.join(QStringLiteral(", "))));
