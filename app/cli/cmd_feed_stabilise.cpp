@@ -1,15 +1,12 @@
-#include <QJsonArray>
-#include <QJsonObject>
 #include <QRegularExpression>
 #include <QString>
 #include <optional>
 #include <stdexcept>
 
+#include "app/cli/cmd_feed_stabilise_output.h"
 #include "app/cli/command.h"
-#include "app/cli/command_files.h"
 #include "app/cli/command_parser.h"
 #include "config/hydraulic_feed_config.h"
-#include "config/hydraulic_feed_csv.h"
 #include "core/sim/hydraulic/feed_study.h"
 
 namespace tt::cli {
@@ -113,269 +110,26 @@ core::FeedScenario scenarioFrom(const CommandParser& parser, const QString& pres
     return s;
 }
 
-std::vector<double> sweepValues(const CommandParser& parser, core::FeedSweepKind kind, const core::FeedScenario& s) {
-    if (!parser.isSet(QStringLiteral("sweep-values")))
-        return asUsage(QStringLiteral("--sweep"), [&] { return core::defaultSweepValues(kind, s); });
+std::vector<double> sweepValues(const CommandParser& parser, const FeedReport& r) {
+    if (!parser.isSet(QStringLiteral("sweep-values"))) {
+        if (r.loadSweep) return core::defaultLoadSweepValues();
+        return asUsage(QStringLiteral("--sweep"),
+                       [&] { return core::defaultSweepValues(*r.sweepKind, r.scenario, r.compared()); });
+    }
     std::vector<double> values;
     for (const QString& v : parser.value(QStringLiteral("sweep-values")).split(QLatin1Char(',')))
         values.push_back(parseNumber(QStringLiteral("--sweep-values"), v, QStringLiteral("a sweep value")));
     return values;
 }
 
-QJsonObject metricsJson(const core::FeedRun& run) {
-    return {{QStringLiteral("steady_feed_m_s"), run.feed.finalValue},
-            {QStringLiteral("settling_s"), run.feed.settlingS},
-            {QStringLiteral("overshoot_pct"), run.feed.overshootPct},
-            {QStringLiteral("peak_deviation_m_s"), run.feed.peakDeviation},
-            {QStringLiteral("spool_overshoot_pct"), run.opening.overshootPct},
-            {QStringLiteral("settled"), run.feed.settled},
-            {QStringLiteral("slot_fully_open"), run.slotFullyOpen}};
-}
-
-QJsonObject derivedJson(const core::FeedScenario& s) {
-    const core::HydraulicFeedDerived d = core::deriveFeedQuantities(s.params);
-    const double load = s.finalLoadN();
-    return {{QStringLiteral("piston_area_m2"), d.pistonAreaM2},
-            {QStringLiteral("cylinder_gain_per_m2"), d.cylinderGainPerM2},
-            {QStringLiteral("cylinder_time_constant_s"), d.cylinderTimeConstantS},
-            {QStringLiteral("pump_flow_m3_s"), d.pumpFlowM3PerS},
-            {QStringLiteral("leakage_m3_s"), d.leakagePerNewtonM3PerS * load},
-            {QStringLiteral("slot_gain_m2_s"), d.slotGainM2PerS},
-            {QStringLiteral("coil_inductance_h"), d.coilInductanceH},
-            {QStringLiteral("magnet_time_constant_s"), d.magnetTimeConstantS},
-            {QStringLiteral("armature_gain_n_per_a2"), d.armatureGainNPerA2},
-            {QStringLiteral("matched_lap_m"), d.biasSpoolM}};
-}
-
-QJsonValue optional(const std::optional<double>& v) {
-    return v ? QJsonValue(*v) : QJsonValue(QJsonValue::Null);
-}
-
-QJsonObject stabilityJson(const core::FeedStability& st, const std::optional<core::FeedBoundaryCheck>& check) {
-    QJsonArray eigenvalues;
-    for (Eigen::Index k = 0; k < st.atGain.eigenvalues.size(); ++k)
-        eigenvalues.append(QJsonObject{{QStringLiteral("re"), st.atGain.eigenvalues(k).real()},
-                                       {QStringLiteral("im"), st.atGain.eigenvalues(k).imag()}});
-    QJsonObject out{{QStringLiteral("eigenvalues_per_s"), eigenvalues},
-                    {QStringLiteral("stable"), st.atGain.stable()},
-                    {QStringLiteral("loop_gain"), st.atGain.loopGain},
-                    {QStringLiteral("design_gain"), st.designGain},
-                    {QStringLiteral("gain_limit"), optional(st.gainLimit)},
-                    {QStringLiteral("full_opening_gain"), optional(st.fullOpeningGain)}};
-    if (check)
-        out.insert(QStringLiteral("simulation_check"),
-                   QJsonObject{{QStringLiteral("below_gain"), check->belowGain},
-                               {QStringLiteral("predicted_feed_m_s"), check->predictedFeedMPerS},
-                               {QStringLiteral("below_feed_m_s"), check->below.feed.finalValue},
-                               {QStringLiteral("below_settles"), check->belowSettles},
-                               {QStringLiteral("above_gain"), check->aboveGain},
-                               {QStringLiteral("above_feed_m_s"), check->above.feed.finalValue},
-                               {QStringLiteral("above_runs_away"), check->aboveRunsAway}});
-    return out;
-}
-
-QJsonArray sensitivityJson(const std::vector<core::FeedSensitivity>& rows) {
-    QJsonArray out;
-    for (const core::FeedSensitivity& r : rows)
-        out.append(QJsonObject{{QStringLiteral("parameter"), QString::fromStdString(r.key)},
-                               {QStringLiteral("name"), QString::fromStdString(r.name)},
-                               {QStringLiteral("nominal"), r.nominal},
-                               {QStringLiteral("regulated_minus_pct"), r.onMinusPct},
-                               {QStringLiteral("regulated_plus_pct"), r.onPlusPct},
-                               {QStringLiteral("unregulated_minus_pct"), r.offMinusPct},
-                               {QStringLiteral("unregulated_plus_pct"), r.offPlusPct},
-                               {QStringLiteral("slot_fully_open"), r.fullyOpen}});
-    return out;
-}
-
-QJsonArray sweepJson(core::FeedSweepKind kind, const std::vector<core::FeedSweepPoint>& points) {
-    QJsonArray out;
-    for (const core::FeedSweepPoint& p : points) {
-        QJsonObject row = metricsJson(p.run);
-        row.insert(QString::fromLatin1(core::toString(kind)), p.value);
-        row.insert(QStringLiteral("oscillates"), p.oscillates);
-        row.insert(QStringLiteral("stable"), p.stable);
-        out.append(row);
-    }
-    return out;
-}
-
-/// Everything the command computes.
-struct FeedReport {
-    QString preset;
-    core::FeedScenario scenario;
-    bool regulatorOn = true;
-    core::FeedRun with;
-    core::FeedRun without;
-    std::optional<core::FeedStability> stability;
-    QString stabilityNote;  ///< why there is no stability analysis (no load, or more leakage than the slot passes)
-    std::optional<core::FeedBoundaryCheck> check;
-    std::vector<core::FeedSensitivity> sensitivity;
-    std::optional<core::FeedSweepKind> sweepKind;
-    std::vector<core::FeedSweepPoint> sweep;
-
-    const core::FeedRun& chosen() const { return regulatorOn ? with : without; }
-};
-
-QJsonObject toJson(const FeedReport& r) {
-    QJsonObject out = metricsJson(r.chosen());
-    out.insert(QStringLiteral("preset"), r.preset);
-    out.insert(QStringLiteral("regulator"), r.regulatorOn ? QStringLiteral("on") : QStringLiteral("off"));
-    out.insert(QStringLiteral("start"), r.scenario.run.fromRest ? QStringLiteral("rest") : QStringLiteral("running"));
-    out.insert(QStringLiteral("load_n"), r.scenario.finalLoadN());
-    out.insert(QStringLiteral("with_regulator"), metricsJson(r.with));
-    out.insert(QStringLiteral("without_regulator"), metricsJson(r.without));
-    out.insert(QStringLiteral("parameters"), config::hydraulicFeedParamsToJson(r.scenario.params));
-    out.insert(QStringLiteral("derived"), derivedJson(r.scenario));
-    out.insert(QStringLiteral("stability"),
-               r.stability ? QJsonValue(stabilityJson(*r.stability, r.check)) : QJsonValue(QJsonValue::Null));
-    if (!r.stabilityNote.isEmpty()) out.insert(QStringLiteral("stability_note"), r.stabilityNote);
-    out.insert(QStringLiteral("sensitivity"), sensitivityJson(r.sensitivity));
-    if (r.sweepKind) {
-        out.insert(QStringLiteral("sweep_of"), QString::fromLatin1(core::toString(*r.sweepKind)));
-        out.insert(QStringLiteral("sweep"), sweepJson(*r.sweepKind, r.sweep));
-    }
-    return out;
-}
-
-QString g(double v, int precision = 4) {
-    return QString::number(v, 'g', precision);
-}
-
-QString metricsLine(const QString& what, const core::FeedRun& run) {
-    return QStringLiteral("%1 %2 %3 %4 %5")
-        .arg(what, -24)
-        .arg(g(run.feed.finalValue), 12)
-        .arg(QString::number(run.feed.settlingS, 'f', 4) + (run.feed.settled ? QString() : QStringLiteral("+")), 11)
-        .arg(QString::number(run.feed.overshootPct, 'f', 2), 12)
-        .arg(g(run.feed.peakDeviation, 3), 14);
-}
-
-void printStability(const FeedReport& r) {
-    if (!r.stability) {
-        printLine(QStringLiteral("Stability: not analysed, %1.").arg(r.stabilityNote));
-        return;
-    }
-    const core::FeedStability& st = *r.stability;
-    QStringList poles;
-    for (Eigen::Index k = 0; k < st.atGain.eigenvalues.size(); ++k) {
-        const std::complex<double> e = st.atGain.eigenvalues(k);
-        poles << (std::abs(e.imag()) < 1e-9
-                      ? g(e.real(), 4)
-                      : QStringLiteral("%1%2%3i").arg(g(e.real(), 4),
-                                                      e.imag() < 0 ? QStringLiteral("-") : QStringLiteral("+"),
-                                                      g(std::abs(e.imag()), 4)));
-    }
-    printLine(QStringLiteral("Linearised at the steady state: eigenvalues %1 1/s; loop gain through the cut %2")
-                  .arg(poles.join(QStringLiteral(", ")), g(st.atGain.loopGain, 3)));
-    printLine(QStringLiteral("Design gain (slot opens by just the leakage): %1 V/V; this gain %2 V/V")
-                  .arg(g(st.designGain, 5), g(r.scenario.params.amplifierGain, 5)));
-    if (st.gainLimit) {
-        printLine(QStringLiteral("Stability boundary of the gain: K_a = %1 V/V (%2 x the design gain)")
-                      .arg(g(*st.gainLimit, 5), g(*st.gainLimit / st.designGain, 4)));
-        if (r.check)
-            printLine(
-                QStringLiteral(
-                    "  simulated: at %1 the feed settles at %2 m/s (predicted %3): %4; at %5 it ends at %6 m/s: %7")
-                    .arg(g(r.check->belowGain, 5), g(r.check->below.feed.finalValue), g(r.check->predictedFeedMPerS))
-                    .arg(r.check->belowSettles ? QStringLiteral("confirmed") : QStringLiteral("NOT confirmed"))
-                    .arg(g(r.check->aboveGain, 5), g(r.check->above.feed.finalValue))
-                    .arg(r.check->aboveRunsAway ? QStringLiteral("runs away to the fully open slot")
-                                                : QStringLiteral("NOT running away")));
-    } else {
-        printLine(QStringLiteral("No gain destabilises the chain%1")
-                      .arg(st.fullOpeningGain
-                               ? QStringLiteral("; above K_a = %1 V/V (%2 x the design gain) the slot "
-                                                "opens fully")
-                                     .arg(g(*st.fullOpeningGain, 5), g(*st.fullOpeningGain / st.designGain, 4))
-                               : QString()));
-    }
-}
-
-void printText(const FeedReport& r) {
-    const core::HydraulicFeedDerived d = core::deriveFeedQuantities(r.scenario.params);
-    printLine(
-        QStringLiteral("Hydraulic feed stabilisation (paper 003), preset %1: load %2 N, set feed %3 m/s, start %4")
-            .arg(r.preset, g(r.scenario.finalLoadN()), g(r.scenario.params.setFeedMPerS))
-            .arg(r.scenario.run.fromRest ? QStringLiteral("from rest") : QStringLiteral("running")));
-    printLine(QStringLiteral("Cylinder F = %1 m², k0 = %2 1/m², T_c = %3 s, leakage %4 m³/s; T_k = %5 s, K_e = %6 N/A²")
-                  .arg(g(d.pistonAreaM2), g(d.cylinderGainPerM2, 5), g(d.cylinderTimeConstantS, 3),
-                       g(d.leakagePerNewtonM3PerS * r.scenario.finalLoadN()), g(d.magnetTimeConstantS, 3),
-                       g(d.armatureGainNPerA2, 5)));
-    printLine(QString());
-    printLine(QStringLiteral("%1 %2 %3 %4 %5")
-                  .arg(QString(), -24)
-                  .arg(QStringLiteral("feed, m/s"), 12)
-                  .arg(QStringLiteral("settling, s"), 11)
-                  .arg(QStringLiteral("overshoot, %"), 12)
-                  .arg(QStringLiteral("peak dev., m/s"), 14));
-    printLine(metricsLine(QStringLiteral("without the regulator"), r.without));
-    printLine(metricsLine(QStringLiteral("with the regulator"), r.with));
-    printLine(QStringLiteral(
-        "(settling: into 5 % of the largest deviation, the paper's t_c = 3T; + = not settled in the run)"));
-    printLine(QString());
-    printStability(r);
-    if (!r.sensitivity.empty()) {
-        printLine(QString());
-        printLine(QStringLiteral("Steady feed change for -10 % / +10 % of a parameter (regulated | unregulated):"));
-        for (std::size_t k = 0; k < std::min<std::size_t>(6, r.sensitivity.size()); ++k) {
-            const core::FeedSensitivity& s = r.sensitivity[k];
-            printLine(QStringLiteral("  %1 %2 % %3 %   | %4 % %5 %%6")
-                          .arg(QString::fromStdString(s.name), -36)
-                          .arg(QString::number(s.onMinusPct, 'f', 2), 8)
-                          .arg(QString::number(s.onPlusPct, 'f', 2), 8)
-                          .arg(QString::number(s.offMinusPct, 'f', 2), 8)
-                          .arg(QString::number(s.offPlusPct, 'f', 2), 8)
-                          .arg(s.fullyOpen ? QStringLiteral("  (slot fully open)") : QString()));
-        }
-    }
-    if (r.sweepKind) {
-        printLine(QString());
-        printLine(QStringLiteral("Sweep of %1 (regulator on):").arg(QString::fromLatin1(core::toString(*r.sweepKind))));
-        printLine(QStringLiteral("%1 %2 %3 %4 %5 %6")
-                      .arg(QString::fromLatin1(core::toString(*r.sweepKind)), 9)
-                      .arg(QStringLiteral("feed, m/s"), 12)
-                      .arg(QStringLiteral("settling, s"), 11)
-                      .arg(QStringLiteral("overshoot, %"), 12)
-                      .arg(QStringLiteral("spool overshoot, %"), 18)
-                      .arg(QStringLiteral("oscillates"), 10));
-        for (const core::FeedSweepPoint& p : r.sweep)
-            printLine(QStringLiteral("%1 %2 %3 %4 %5 %6%7")
-                          .arg(g(p.value, 5), 9)
-                          .arg(g(p.run.feed.finalValue), 12)
-                          .arg(QString::number(p.run.feed.settlingS, 'f', 4) +
-                                   (p.run.feed.settled ? QString() : QStringLiteral("+")),
-                               11)
-                          .arg(QString::number(p.run.feed.overshootPct, 'f', 2), 12)
-                          .arg(QString::number(p.run.opening.overshootPct, 'f', 2), 18)
-                          .arg(p.oscillates ? QStringLiteral("yes") : QStringLiteral("no"), 10)
-                          .arg(p.stable ? (p.run.slotFullyOpen ? QStringLiteral("  slot fully open") : QString())
-                                        : QStringLiteral("  unstable: runs away")));
-    }
-}
-
-void writeCsv(const QString& path, const FeedReport& r) {
-    QStringList labels;
-    std::vector<const core::FeedRun*> runs;
-    if (r.sweepKind) {
-        for (const core::FeedSweepPoint& p : r.sweep) {
-            labels << QStringLiteral("%1=%2").arg(QString::fromLatin1(core::toString(*r.sweepKind)), g(p.value, 6));
-            runs.push_back(&p.run);
-        }
-    } else {
-        labels << QStringLiteral("with regulator") << QStringLiteral("without regulator");
-        runs = {&r.with, &r.without};
-    }
-    writeOutputFile(path, config::feedRunsCsv(labels, runs));
-}
-
 void addOptions(CommandParser& parser) {
     parser.addOption(QStringLiteral("preset"), QStringLiteral("Scenario preset or JSON file. Default: hydraulic-feed."),
                      QStringLiteral("NAME|FILE.json"), kDefaultPreset);
-    parser.addOption(
-        QStringLiteral("regulator"),
-        QStringLiteral("Which run the top-level figures describe (both are always simulated). Default: on."),
-        QStringLiteral("on|off"), QStringLiteral("on"));
+    parser.addOption(QStringLiteral("regulator"),
+                     QStringLiteral("Which run the top-level figures describe (all three are simulated): the feedback "
+                                    "of the measured feed, the paper's feed-forward of the measured force, or none. "
+                                    "Default: feedback."),
+                     QStringLiteral("feedforward|feedback|off"), QStringLiteral("feedback"));
     parser.addOption(QStringLiteral("load-step"),
                      QStringLiteral("The load becomes FORCE newtons at TIME seconds; repeat for more steps. Replaces "
                                     "the preset's load (with --load-ramp)."),
@@ -395,11 +149,14 @@ void addOptions(CommandParser& parser) {
     parser.addOption(QStringLiteral("match"),
                      QStringLiteral("Redesign after --set: the spool lap matching the bias, the gain making up the "
                                     "final load's leakage (--gain still wins)."));
-    parser.addOption(QStringLiteral("sweep"), QStringLiteral("Step responses for a sweep of xi or of the gain."),
-                     QStringLiteral("xi|gain"));
+    parser.addOption(QStringLiteral("sweep"),
+                     QStringLiteral("Step responses for a sweep of xi or of the gain (with the regulator), or of the "
+                                    "load (a step to each load with every regulator)."),
+                     QStringLiteral("xi|gain|load"));
     parser.addOption(
         QStringLiteral("sweep-values"),
-        QStringLiteral("The sweep's values, comma separated (default: xi 0.2 .. 2, gain 0 .. 2 x design)."),
+        QStringLiteral("The sweep's values, comma separated (default: xi 0.2 .. 2; gain 0 .. 2 x design "
+                       "for the feed-forward, factors 0.25 .. 6 on K_p for the feedback; load 0.5 .. 6 N)."),
         QStringLiteral("A,B,..."));
     parser.addOption(QStringLiteral("duration"), QStringLiteral("Simulated time, s (default: the preset's)."),
                      QStringLiteral("S"));
@@ -408,49 +165,72 @@ void addOptions(CommandParser& parser) {
                      QStringLiteral("FILE.csv"));
 }
 
+/// The feed-forward's gain analysis (only for --regulator feedforward: the paper's regulator), the sensitivity.
+void analyse(FeedReport& r) {
+    const double load = r.scenario.finalLoadN();
+    if (!(load > 0.0)) {
+        r.stabilityNote = QStringLiteral("the scenario ends without load: nothing to regulate");
+        return;
+    }
+    r.sensitivity = core::feedSensitivity(r.scenario.params, load, 0.1, r.compared());
+    if (r.regulator != core::FeedRegulator::FeedForward) {
+        r.stabilityNote = QStringLiteral("only with --regulator feedforward (it analyses the paper's regulator)");
+        return;
+    }
+    try {
+        r.stability = core::analyseStability(r.scenario.params, load);
+    } catch (const std::invalid_argument& e) {
+        r.stabilityNote = QString::fromStdString(e.what());  // no design point: the slot cannot make it up
+    }
+    if (r.stability && r.stability->gainLimit) r.check = core::crossCheckGainLimit(r.scenario, *r.stability->gainLimit);
+}
+
+void runSweep(const CommandParser& parser, FeedReport& r) {
+    const std::vector<double> values = sweepValues(parser, r);
+    if (r.loadSweep)
+        r.loads = asUsage(QStringLiteral("--sweep-values"), [&] { return core::sweepLoad(r.scenario, values); });
+    else
+        r.sweep = asUsage(QStringLiteral("--sweep"),
+                          [&] { return core::sweepFeed(r.scenario, *r.sweepKind, values, r.compared()); });
+}
+
 int runFeedStabilise(const QStringList& arguments) {
     CommandParser parser(
         QStringLiteral("feed-stabilise"),
         QStringLiteral("Simulates the hydraulic feed drive of a finishing lathe with its feed stabiliser (paper 003): "
                        "sensor -> amplifier -> electromagnet -> spool flow regulator -> cylinder, integrated with an "
-                       "adaptive Dormand-Prince stepper. Reports the steady feed, settling time and overshoot with "
-                       "and without the regulator, the linearised chain's eigenvalues and the gain's stability "
-                       "boundary, the parameters' sensitivity, and sweeps of xi or of the gain."));
+                       "adaptive Dormand-Prince stepper, without a regulator, with the paper's feed-forward and with "
+                       "the feedback of the measured feed. Reports the steady feed, settling, how well the set feed "
+                       "was held and the warnings, the feedback's margins, the feed-forward's stability boundary, the "
+                       "parameters' sensitivity, and sweeps of xi, the gain or the load."));
     addOptions(parser);
     parser.parse(arguments);
     FeedReport r;
     r.preset = parser.value(QStringLiteral("preset"));
-    r.regulatorOn = parser.choice(QStringLiteral("regulator"), {QStringLiteral("on"), QStringLiteral("off")}) ==
-                    QStringLiteral("on");
-    if (parser.isSet(QStringLiteral("sweep")))
-        r.sweepKind = core::feedSweepKindFromString(
-            parser.choice(QStringLiteral("sweep"), {QStringLiteral("xi"), QStringLiteral("gain")}).toStdString());
+    r.regulator = core::feedRegulatorFromString(
+        parser
+            .choice(QStringLiteral("regulator"),
+                    {QStringLiteral("feedforward"), QStringLiteral("feedback"), QStringLiteral("off")})
+            .toStdString());
+    if (parser.isSet(QStringLiteral("sweep"))) {
+        const QString sweep = parser.choice(QStringLiteral("sweep"),
+                                            {QStringLiteral("xi"), QStringLiteral("gain"), QStringLiteral("load")});
+        r.loadSweep = sweep == QStringLiteral("load");
+        if (!r.loadSweep) r.sweepKind = core::feedSweepKindFromString(sweep.toStdString());
+    }
     r.scenario = scenarioFrom(parser, r.preset);
-    r.with = core::runFeedScenario(r.scenario, true);
-    r.without = core::runFeedScenario(r.scenario, false);
-    const double load = r.scenario.finalLoadN();
-    if (load > 0.0) {
-        try {
-            r.stability = core::analyseStability(r.scenario.params, load);
-        } catch (const std::invalid_argument& e) {
-            r.stabilityNote = QString::fromStdString(e.what());  // no design point: the slot cannot make it up
-        }
-        if (r.stability && r.stability->gainLimit)
-            r.check = core::crossCheckGainLimit(r.scenario, *r.stability->gainLimit);
-        r.sensitivity = core::feedSensitivity(r.scenario.params, load);
-    } else {
-        r.stabilityNote = QStringLiteral("the scenario ends without load: nothing to regulate");
-    }
-    if (r.sweepKind) {
-        const std::vector<double> values = sweepValues(parser, *r.sweepKind, r.scenario);
-        r.sweep = asUsage(QStringLiteral("--sweep-values"),
-                          [&] { return core::sweepFeed(r.scenario, *r.sweepKind, values); });
-    }
-    if (parser.isSet(QStringLiteral("csv"))) writeCsv(parser.required(QStringLiteral("csv")), r);
+    r.feedbackDesign =
+        asUsage(QStringLiteral("parameters"), [&] { return core::designFeedFeedback(r.scenario.params); });
+    r.off = core::runFeedScenario(r.scenario, core::FeedRegulator::Off);
+    r.feedForward = core::runFeedScenario(r.scenario, core::FeedRegulator::FeedForward);
+    r.feedback = core::runFeedScenario(r.scenario, core::FeedRegulator::Feedback);
+    analyse(r);
+    if (r.sweepKind || r.loadSweep) runSweep(parser, r);
+    if (parser.isSet(QStringLiteral("csv"))) writeFeedCsv(parser.required(QStringLiteral("csv")), r);
     if (parser.json())
-        printJson(toJson(r));
+        printJson(feedReportJson(r));
     else
-        printText(r);
+        printFeedReport(r);
     return kExitOk;
 }
 
@@ -458,8 +238,9 @@ int runFeedStabilise(const QStringList& arguments) {
 
 Command makeFeedStabiliseCommand() {
     return {QStringLiteral("feed-stabilise"),
-            QStringLiteral(
-                "hydraulic feed stabilisation under a changing cutting force (paper 003), sweeps of xi and gain"),
+            QStringLiteral("hydraulic feed stabilisation under a changing cutting force (paper 003): feedback, the "
+                           "paper's feed-forward "
+                           "or none; sweeps of xi, gain and load"),
             runFeedStabilise};
 }
 

@@ -3351,6 +3351,15 @@ overshoot, %</source>
         <source>yes</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>gain ×
+K_p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no: unstable</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::FeedParameterForm</name>
@@ -4018,10 +4027,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Steady feed %1 mm/s with the regulator, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4079,6 +4084,74 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
             <numerusform>%n run beyond the stability boundary.</numerusform>
             <numerusform>%n runs beyond the stability boundary.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Regulator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feedback of the feed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed-forward of the force (paper)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the feedback</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the feed-forward</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Steady feed %1 mm/s with %7, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2 dB) at %3 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1° at %2 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Margins of the feedback loop: gain %1, phase %2; closed loop %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UNSTABLE</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The carriage stalled from %1 s to %2 s: the flow cannot make up the load&apos;s leakage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The slot was fully open from %1 s to %2 s: the regulator could give no more flow.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The feedback asked for less than a shut slot from %1 s to %2 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The feed ends %1 % off the set feed (band ±%2 %).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Without the regulator the carriage stalls: the pump&apos;s flow cannot make up the leakage.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -3366,6 +3366,16 @@ overshoot, %</source>
         <source>yes</source>
         <translation>да</translation>
     </message>
+    <message>
+        <source>gain ×
+K_p</source>
+        <translation>усиление ×
+K_p</translation>
+    </message>
+    <message>
+        <source>no: unstable</source>
+        <translation>нет: неустойчив</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::FeedParameterForm</name>
@@ -4042,10 +4052,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Выберите блок на схеме, чтобы изменить его параметры, затем «Моделировать».</translation>
     </message>
     <message>
-        <source>Steady feed %1 mm/s with the regulator, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
-        <translation>Установившаяся подача %1 мм/с с регулятором, %2 мм/с без него (задано %3). Время установления (5 %): %4 с с регулятором, %5 с без; перерегулирование %6 %.</translation>
-    </message>
-    <message>
         <source>Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.</source>
         <translation>Граница устойчивости: K_a = %1 (%2 × расчётного %3); моделирование при ±5 %: %4.</translation>
     </message>
@@ -4104,6 +4110,74 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
             <numerusform>%n расчёта за границей устойчивости.</numerusform>
             <numerusform>%n расчётов за границей устойчивости.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Regulator</source>
+        <translation>Регулятор</translation>
+    </message>
+    <message>
+        <source>Feedback of the feed</source>
+        <translation>Обратная связь по подаче</translation>
+    </message>
+    <message>
+        <source>Feed-forward of the force (paper)</source>
+        <translation>Упреждение по силе (статья)</translation>
+    </message>
+    <message>
+        <source>the feedback</source>
+        <translation>обратной связью</translation>
+    </message>
+    <message>
+        <source>the feed-forward</source>
+        <translation>упреждением</translation>
+    </message>
+    <message>
+        <source>Steady feed %1 mm/s with %7, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s without; overshoot %6 %.</source>
+        <translation>Установившаяся подача %1 мм/с с %7, %2 мм/с без регулятора (задано %3). Время установления (5 %): %4 с с регулятором, %5 с без; перерегулирование %6 %.</translation>
+    </message>
+    <message>
+        <source>%1 (%2 dB) at %3 rad/s</source>
+        <translation>%1 (%2 дБ) на %3 рад/с</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>не ограничен</translation>
+    </message>
+    <message>
+        <source>%1° at %2 rad/s</source>
+        <translation>%1° на %2 рад/с</translation>
+    </message>
+    <message>
+        <source>Margins of the feedback loop: gain %1, phase %2; closed loop %3.</source>
+        <translation>Запасы контура обратной связи: по усилению %1, по фазе %2; замкнутый контур %3.</translation>
+    </message>
+    <message>
+        <source>stable</source>
+        <translation>устойчив</translation>
+    </message>
+    <message>
+        <source>UNSTABLE</source>
+        <translation>НЕУСТОЙЧИВ</translation>
+    </message>
+    <message>
+        <source>The carriage stalled from %1 s to %2 s: the flow cannot make up the load&apos;s leakage.</source>
+        <translation>Суппорт стоял с %1 с до %2 с: расход не покрывает утечку от нагрузки.</translation>
+    </message>
+    <message>
+        <source>The slot was fully open from %1 s to %2 s: the regulator could give no more flow.</source>
+        <translation>Щель была открыта полностью с %1 с до %2 с: регулятор не мог дать больше расхода.</translation>
+    </message>
+    <message>
+        <source>The feedback asked for less than a shut slot from %1 s to %2 s.</source>
+        <translation>Обратная связь требовала закрыть щель сильнее полного закрытия с %1 с до %2 с.</translation>
+    </message>
+    <message>
+        <source>The feed ends %1 % off the set feed (band ±%2 %).</source>
+        <translation>Подача в конце отличается от заданной на %1 % (допуск ±%2 %).</translation>
+    </message>
+    <message>
+        <source>Without the regulator the carriage stalls: the pump&apos;s flow cannot make up the leakage.</source>
+        <translation>Без регулятора суппорт стоит: расход насоса не покрывает утечку.</translation>
     </message>
 </context>
 <context>

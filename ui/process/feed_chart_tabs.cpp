@@ -123,14 +123,20 @@ void FeedChartTabs::plotRuns() {
 QString FeedChartTabs::sweepValueText(double value) const {
     if (m_sweepResult && m_sweepResult->job == FeedStudyResult::Job::SweepXi)
         return QStringLiteral("ξ = %1").arg(QString::number(value, 'g', 3));
+    if (m_sweepResult && m_sweepResult->regulator == core::FeedRegulator::Feedback)
+        return QStringLiteral("%1 × K_p").arg(QString::number(value, 'g', 3));
     return QStringLiteral("Kₐ = %1").arg(QString::number(value, 'g', 4));
 }
 
 void FeedChartTabs::plotSweep() {
     const bool xi = !m_sweepResult || m_sweepResult->job == FeedStudyResult::Job::SweepXi;
+    const bool feedback = m_sweepResult && m_sweepResult->regulator == core::FeedRegulator::Feedback;
     m_sweep->setTitle(xi ? tr("Feed after the load step for each ξ") : tr("Feed after the load step for each gain"));
-    m_table->setHorizontalHeaderLabels({xi ? tr("ξ") : tr("gain K_a"), tr("feed,\nmm/s"), tr("settling,\ns"),
-                                        tr("overshoot,\n%"), tr("spool\novershoot, %"), tr("regulates")});
+    m_table->setHorizontalHeaderLabels({xi         ? tr("ξ")
+                                        : feedback ? tr("gain ×\nK_p")
+                                                   : tr("gain K_a"),
+                                        tr("feed,\nmm/s"), tr("settling,\ns"), tr("overshoot,\n%"),
+                                        tr("spool\novershoot, %"), tr("regulates")});
     if (!m_sweepResult) return;
     m_sweep->clear();
     const std::vector<core::FeedSweepPoint>& points = m_sweepResult->sweep;
@@ -146,7 +152,7 @@ void FeedChartTabs::plotSweep() {
             QString::number(p.run.feed.settlingS, 'f', 4) + (p.run.feed.settled ? QString() : QStringLiteral("+")),
             QString::number(p.run.feed.overshootPct, 'f', 2),
             QString::number(p.run.opening.overshootPct, 'f', 2),
-            !p.stable             ? tr("no: runs away")
+            !p.stable             ? (feedback ? tr("no: unstable") : tr("no: runs away"))
             : p.run.slotFullyOpen ? tr("slot fully open")
                                   : tr("yes")};
         for (int c = 0; c < cells.size(); ++c) {

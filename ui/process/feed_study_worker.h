@@ -18,12 +18,14 @@ struct FeedStudyResult {
     enum class Job { Simulate, SweepXi, SweepGain };
     Job job = Job::Simulate;
     core::FeedScenario scenario;
-    core::FeedRun with;                            ///< Simulate: regulator on
-    core::FeedRun without;                         ///< Simulate: regulator off
-    std::optional<core::FeedStability> stability;  ///< Simulate, with a load at the end
-    std::optional<core::FeedBoundaryCheck> check;  ///< Simulate, when there is a gain limit
-    std::vector<core::FeedSweepPoint> sweep;       ///< SweepXi, SweepGain
-    QString problem;                               ///< the engine refused (a parameter or the load), in its words
+    core::FeedRegulator regulator = core::FeedRegulator::Feedback;  ///< the regulator of `with` and of the sweeps
+    core::FeedRun with;                                             ///< Simulate: with the regulator
+    core::FeedRun without;                                          ///< Simulate: regulator off
+    std::optional<core::FeedStability> stability;                   ///< Simulate, feed-forward, with a load at the end
+    std::optional<core::FeedFeedbackDesign> feedback;               ///< Simulate, feedback: its design and margins
+    std::optional<core::FeedBoundaryCheck> check;                   ///< Simulate, when there is a gain limit
+    std::vector<core::FeedSweepPoint> sweep;                        ///< SweepXi, SweepGain
+    QString problem;           ///< the engine refused (a parameter or the load), in its words
     QString stabilityProblem;  ///< Simulate: why there is no stability analysis (no design point for the load)
     bool cancelled = false;
 };
@@ -37,8 +39,8 @@ public:
     /// Cancels a running job and waits for its thread.
     ~FeedStudyWorker() override;
 
-    /// Starts `job` on `scenario`; false when a job is still running.
-    bool start(FeedStudyResult::Job job, const core::FeedScenario& scenario);
+    /// Starts `job` on `scenario` with `regulator` (feed-forward or feedback); false when a job is still running.
+    bool start(FeedStudyResult::Job job, const core::FeedScenario& scenario, core::FeedRegulator regulator);
     /// Asks the running job to stop at its next sample.
     void cancel();
     bool busy() const { return m_thread != nullptr; }
@@ -51,7 +53,9 @@ signals:
 
 private:
     static FeedStudyResult compute(FeedStudyResult::Job job, const core::FeedScenario& scenario,
-                                   const core::FeedProgress& progress, const core::FeedCancelled& cancelled);
+                                   core::FeedRegulator regulator, const core::FeedProgress& progress,
+                                   const core::FeedCancelled& cancelled);
+    static void simulate(FeedStudyResult& r, const core::FeedProgress& progress, const core::FeedCancelled& cancelled);
 
     QThread* m_thread = nullptr;
     std::shared_ptr<std::atomic<bool>> m_cancel;

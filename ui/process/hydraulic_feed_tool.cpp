@@ -1,5 +1,6 @@
 #include "ui/process/hydraulic_feed_tool.h"
 
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QGridLayout>
@@ -42,6 +43,8 @@ HydraulicFeedTool::HydraulicFeedTool(AppContext& context, QWidget* parent)
       m_stepTime(new QDoubleSpinBox(this)),
       m_durationLabel(new QLabel(this)),
       m_duration(new QDoubleSpinBox(this)),
+      m_regulatorLabel(new QLabel(this)),
+      m_regulator(new QComboBox(this)),
       m_reset(new QPushButton(this)),
       m_simulate(new QPushButton(this)),
       m_sweepXi(new QPushButton(this)),
@@ -99,6 +102,10 @@ void HydraulicFeedTool::buildLayout() {
     m_stepTime->setObjectName(QStringLiteral("feedStepTime"));
     m_duration->setObjectName(QStringLiteral("feedDuration"));
     m_diagram->setObjectName(QStringLiteral("feedDiagram"));
+    m_regulator->setObjectName(QStringLiteral("feedRegulator"));
+    m_regulator->addItem(QString(), static_cast<int>(core::FeedRegulator::Feedback));
+    m_regulator->addItem(QString(), static_cast<int>(core::FeedRegulator::FeedForward));
+    m_regulator->setMinimumHeight(32);
     m_simulate->setProperty("role", QStringLiteral("primary"));
 
     // Limits: the engine's (core::FeedLoadProfile, core::FeedRunOptions).
@@ -151,8 +158,13 @@ void HydraulicFeedTool::buildLayout() {
     for (QPushButton* b : {m_simulate, m_sweepXi, m_sweepGain, m_cancel})
         actions->addWidget(b);
     actions->addStretch(1);
+    // The regulator above the actions it applies to (the left column is full at 800 px).
+    auto* regulatorRow = new QHBoxLayout;
+    regulatorRow->addWidget(m_regulatorLabel);
+    regulatorRow->addWidget(m_regulator, 1);
     auto* right = new QVBoxLayout;
     right->setContentsMargins(0, 0, 0, 0);
+    right->addLayout(regulatorRow);
     right->addLayout(actions);
     right->addWidget(m_charts, 1);
     right->addWidget(m_summary);
@@ -215,6 +227,9 @@ void HydraulicFeedTool::retranslate() {
     m_durationLabel->setText(tr("Simulate"));
     m_duration->setSuffix(tr(" s"));
     m_reset->setText(tr("Preset values"));
+    m_regulatorLabel->setText(tr("Regulator"));
+    m_regulator->setItemText(0, tr("Feedback of the feed"));
+    m_regulator->setItemText(1, tr("Feed-forward of the force (paper)"));
     m_simulate->setText(tr("Simulate"));
     m_sweepXi->setText(tr("Sweep ξ"));
     m_sweepGain->setText(tr("Sweep gain"));
@@ -260,11 +275,12 @@ bool HydraulicFeedTool::startJob(FeedStudyResult::Job job) {
     if (m_worker->busy()) return false;
     const std::optional<core::FeedScenario> scenario = scenarioFromForm();
     if (!scenario) return false;
-    if (job == FeedStudyResult::Job::SweepGain && !(scenario->finalLoadN() > 0.0)) {
+    if (job == FeedStudyResult::Job::SweepGain && regulator() == core::FeedRegulator::FeedForward &&
+        !(scenario->finalLoadN() > 0.0)) {
         setStatus(tr("A gain sweep needs a load: the gains are multiples of the one that makes up its leakage."), true);
         return false;
     }
-    if (!m_worker->start(job, *scenario)) return false;
+    if (!m_worker->start(job, *scenario, regulator())) return false;
     m_progress->setRange(0, 0);  // busy until the first run reports
     setStatus(job == FeedStudyResult::Job::Simulate  ? tr("Simulating with and without the regulator…")
               : job == FeedStudyResult::Job::SweepXi ? tr("Sweeping ξ…")
@@ -272,6 +288,14 @@ bool HydraulicFeedTool::startJob(FeedStudyResult::Job job) {
               false);
     updateEnabled();
     return true;
+}
+
+core::FeedRegulator HydraulicFeedTool::regulator() const {
+    return static_cast<core::FeedRegulator>(m_regulator->currentData().toInt());
+}
+
+void HydraulicFeedTool::setRegulator(core::FeedRegulator regulator) {
+    m_regulator->setCurrentIndex(m_regulator->findData(static_cast<int>(regulator)));
 }
 
 void HydraulicFeedTool::cancel() {
@@ -292,7 +316,9 @@ void HydraulicFeedTool::finishJob(const std::shared_ptr<const FeedStudyResult>& 
     } else if (result->job == FeedStudyResult::Job::Simulate) {
         m_run = result;
         m_charts->showRuns(*result);
-        setStatus(result->stabilityProblem, !result->stabilityProblem.isEmpty());
+        const QString warnings = warningsText(*result);
+        setStatus(warnings.isEmpty() ? result->stabilityProblem : warnings,
+                  !warnings.isEmpty() || !result->stabilityProblem.isEmpty());
     } else {
         m_sweep = result;
         m_charts->showSweep(*result);
@@ -348,30 +374,75 @@ void HydraulicFeedTool::showSummary() {
         return;
     }
     const FeedStudyResult& r = *m_run;
+    const QString name = r.regulator == core::FeedRegulator::Feedback ? tr("the feedback") : tr("the feed-forward");
     QString text =
-        tr("Steady feed %1 mm/s with the regulator, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s "
+        tr("Steady feed %1 mm/s with %7, %2 mm/s without (set %3). Settling (5 %): %4 s with, %5 s "
            "without; overshoot %6 %.")
             .arg(QString::number(r.with.feed.finalValue * 1e3, 'f', 4),
-                 QString::number(r.without.feed.finalValue * 1e3, 'f', 4),
+                 QString::number(std::abs(r.without.feed.finalValue) < 1e-12 ? 0.0 : r.without.feed.finalValue * 1e3,
+                                 'f', 4),
                  QString::number(r.scenario.params.setFeedMPerS * 1e3, 'f', 3),
                  QString::number(r.with.feed.settlingS, 'f', 3), QString::number(r.without.feed.settlingS, 'f', 3),
-                 QString::number(r.with.feed.overshootPct, 'f', 1));
-    if (r.stability) {
-        const core::FeedStability& st = *r.stability;
-        text += QLatin1Char('\n');
-        if (st.gainLimit)
-            text += tr("Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.")
-                        .arg(g(*st.gainLimit, 5), g(*st.gainLimit / st.designGain, 4), g(st.designGain, 5))
-                        .arg(r.check && r.check->belowSettles && r.check->aboveRunsAway ? tr("confirmed")
-                                                                                        : tr("not confirmed"));
-        else if (st.fullOpeningGain)
-            text += tr("No gain destabilises the chain; the slot opens fully above K_a = %1 (%2 × the design gain "
-                       "%3).")
-                        .arg(g(*st.fullOpeningGain, 5), g(*st.fullOpeningGain / st.designGain, 4), g(st.designGain, 5));
-        else
-            text += tr("No gain up to 1e5 destabilises the chain (design gain %1).").arg(g(st.designGain, 5));
-    }
+                 QString::number(r.with.feed.overshootPct, 'f', 1), name);
+    const bool stalls =
+        std::any_of(r.without.warnings.begin(), r.without.warnings.end(),
+                    [](const core::FeedWarning& w) { return w.kind == core::FeedWarningKind::CarriageStalled; });
+    if (stalls)
+        text += QLatin1Char(' ') +
+                tr("Without the regulator the carriage stalls: the pump's flow cannot make up the leakage.");
+    const QString regulatorText = regulatorSummary(r);
+    if (!regulatorText.isEmpty()) text += QLatin1Char('\n') + regulatorText;
     m_summary->setText(text);
+}
+
+QString HydraulicFeedTool::regulatorSummary(const FeedStudyResult& r) const {
+    if (r.feedback) {
+        const core::ContinuousMargins& m = r.feedback->margins;
+        const QString gain =
+            m.gainMargin ? tr("%1 (%2 dB) at %3 rad/s")
+                               .arg(g(*m.gainMargin, 3), g(*m.gainMarginDb(), 3), g(*m.phaseCrossoverRadPerS, 3))
+                         : tr("unlimited");
+        const QString phase = m.phaseMarginDeg
+                                  ? tr("%1° at %2 rad/s").arg(g(*m.phaseMarginDeg, 3), g(*m.gainCrossoverRadPerS, 3))
+                                  : tr("unlimited");
+        return tr("Margins of the feedback loop: gain %1, phase %2; closed loop %3.")
+            .arg(gain, phase, m.closedLoopStable ? tr("stable") : tr("UNSTABLE"));
+    }
+    if (!r.stability) return {};
+    const core::FeedStability& st = *r.stability;
+    if (st.gainLimit)
+        return tr("Stability boundary: K_a = %1 (%2 × the design gain %3); simulated at ±5 %: %4.")
+            .arg(g(*st.gainLimit, 5), g(*st.gainLimit / st.designGain, 4), g(st.designGain, 5))
+            .arg(r.check && r.check->belowSettles && r.check->aboveRunsAway ? tr("confirmed") : tr("not confirmed"));
+    if (st.fullOpeningGain)
+        return tr("No gain destabilises the chain; the slot opens fully above K_a = %1 (%2 × the design gain %3).")
+            .arg(g(*st.fullOpeningGain, 5), g(*st.fullOpeningGain / st.designGain, 4), g(st.designGain, 5));
+    return tr("No gain up to 1e5 destabilises the chain (design gain %1).").arg(g(st.designGain, 5));
+}
+
+QString HydraulicFeedTool::warningsText(const FeedStudyResult& r) const {
+    QStringList out;
+    for (const core::FeedWarning& w : r.with.warnings) {
+        switch (w.kind) {
+            case core::FeedWarningKind::CarriageStalled:
+                out << tr("The carriage stalled from %1 s to %2 s: the flow cannot make up the load's leakage.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::SlotFullyOpen:
+                out << tr("The slot was fully open from %1 s to %2 s: the regulator could give no more flow.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::SlotShut:
+                out << tr("The feedback asked for less than a shut slot from %1 s to %2 s.")
+                           .arg(g(w.fromS, 3), g(w.toS, 3));
+                break;
+            case core::FeedWarningKind::FeedOffSet:
+                out << tr("The feed ends %1 % off the set feed (band ±%2 %).")
+                           .arg(QString::number(w.value, 'f', 1), g(r.scenario.run.bandPct));
+                break;
+        }
+    }
+    return out.join(QLatin1Char(' '));
 }
 
 void HydraulicFeedTool::updateEnabled() {

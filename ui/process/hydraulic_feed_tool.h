@@ -7,6 +7,7 @@
 #include "ui/process/feed_study_worker.h"
 #include "ui/process/process_tool.h"
 
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
@@ -24,9 +25,11 @@ class FeedParameterForm;
 
 /// Hydraulic feed stabilisation (paper 003) as a tab of the Process page, for the machine's designer
 /// choosing the regulator and the commissioning engineer checking a retrofit: the block diagram of the
-/// chain with every parameter editable, the feed, the slot's opening and the magnet current after a load
-/// step with and without the regulator, sweeps of xi and of the gain as families of curves with their
-/// settling times and overshoots, the stability boundary of the gain, and export of the curves (PNG, CSV).
+/// chain with every parameter editable, the regulator (feedback of the measured feed, or the paper's
+/// feed-forward of the measured force), the feed, the slot's opening and the magnet current after a load
+/// step with and without the regulator, the feedback's gain and phase margins, the warnings of the run
+/// (stall, saturated slot, feed off the set feed), sweeps of xi and of the gain as families of curves with
+/// their settling times and overshoots, the feed-forward's stability boundary, and export (PNG, CSV).
 /// The simulations run in a worker thread with progress and cancel.
 class HydraulicFeedTool : public ProcessTool {
     Q_OBJECT
@@ -51,6 +54,10 @@ public:
     /// Writes the curves shown (both runs, or the sweep's family) as CSV; false when cancelled or failed.
     bool exportCsv();
 
+    /// The regulator chosen (feedback by default).
+    core::FeedRegulator regulator() const;
+    void setRegulator(core::FeedRegulator regulator);
+
     /// For tests and screenshots.
     FeedBlockDiagram* diagram() const { return m_diagram; }
     FeedParameterForm* form() const { return m_form; }
@@ -67,6 +74,10 @@ private:
     void finishJob(const std::shared_ptr<const FeedStudyResult>& result);
     void designGain();
     void showSummary();
+    /// The run's regulator part of the summary: margins (feedback) or the gain's boundary (feed-forward).
+    QString regulatorSummary(const FeedStudyResult& r) const;
+    /// The warnings of the regulated run, one sentence each.
+    QString warningsText(const FeedStudyResult& r) const;
     /// What the last sweep showed, for the sweep's tabs.
     QString sweepSummary() const;
     /// The diagram's texts, which follow the parameters (the loop is drawn when y > 0).
@@ -90,6 +101,8 @@ private:
     QDoubleSpinBox* m_stepTime;
     QLabel* m_durationLabel;
     QDoubleSpinBox* m_duration;
+    QLabel* m_regulatorLabel;
+    QComboBox* m_regulator;
     QPushButton* m_reset;
     QPushButton* m_simulate;
     QPushButton* m_sweepXi;

@@ -52,6 +52,10 @@ FeedRun runFeedScenario(const FeedScenario& scenario, bool regulatorOn, const Fe
     return simulateFeed(HydraulicFeedModel(scenario.params, regulatorOn), scenario.load, scenario.run, cancelled);
 }
 
+FeedRun runFeedScenario(const FeedScenario& scenario, FeedRegulator regulator, const FeedCancelled& cancelled) {
+    return simulateFeed(HydraulicFeedModel(scenario.params, regulator), scenario.load, scenario.run, cancelled);
+}
+
 const char* toString(FeedSweepKind kind) {
     return kind == FeedSweepKind::DampingRatio ? "xi" : "gain";
 }
@@ -62,8 +66,9 @@ FeedSweepKind feedSweepKindFromString(const std::string& text) {
     throw std::invalid_argument("sweep '" + text + "': must be xi or gain");
 }
 
-std::vector<double> defaultSweepValues(FeedSweepKind kind, const FeedScenario& scenario) {
+std::vector<double> defaultSweepValues(FeedSweepKind kind, const FeedScenario& scenario, FeedRegulator regulator) {
     if (kind == FeedSweepKind::DampingRatio) return {0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.5, 2.0};
+    if (regulator == FeedRegulator::Feedback) return {0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0};
     const double load = designLoad(scenario);
     const double design = load > 0.0 ? designAmplifierGain(scenario.params, load) : scenario.params.amplifierGain;
     std::vector<double> out;
@@ -73,28 +78,70 @@ std::vector<double> defaultSweepValues(FeedSweepKind kind, const FeedScenario& s
 }
 
 std::vector<FeedSweepPoint> sweepFeed(const FeedScenario& scenario, FeedSweepKind kind,
-                                      const std::vector<double>& values, const FeedProgress& progress,
-                                      const FeedCancelled& cancelled) {
+                                      const std::vector<double>& values, FeedRegulator regulator,
+                                      const FeedProgress& progress, const FeedCancelled& cancelled) {
+    if (regulator == FeedRegulator::Off)
+        throw std::invalid_argument(
+            "a sweep of xi or of the gain needs a regulator (feedforward or feedback), not off");
     if (values.empty() || values.size() > kMaxSweepValues)
         throw std::invalid_argument("a sweep takes 1 .. 50 values, not " + number(static_cast<double>(values.size())));
+    const bool gainFactor = regulator == FeedRegulator::Feedback && kind == FeedSweepKind::AmplifierGain;
     const FeedParameterInfo& info = sweptInfo(kind);
-    for (double v : values)
-        if (!std::isfinite(v) || v < info.minValue || v > info.maxValue)
-            throw std::invalid_argument(std::string(info.name) + " = " + number(v) + " in the sweep is outside " +
-                                        number(info.minValue) + " .. " + number(info.maxValue));
+    for (double v : values) {
+        const double lo = gainFactor ? 0.01 : info.minValue;
+        const double hi = gainFactor ? 100.0 : info.maxValue;
+        if (!std::isfinite(v) || v < lo || v > hi)
+            throw std::invalid_argument(std::string(gainFactor ? "feedback gain factor" : info.name) + " = " +
+                                        number(v) + " in the sweep is outside " + number(lo) + " .. " + number(hi));
+    }
     const double load = scenario.finalLoadN();
     std::vector<FeedSweepPoint> out;
     for (double v : values) {
         FeedScenario s = scenario;
-        sweptParameter(s.params, kind) = v;
+        if (!gainFactor) sweptParameter(s.params, kind) = v;
         FeedSweepPoint point;
         point.value = v;
-        point.run = runFeedScenario(s, true, cancelled);
-        const FeedLinearisation lin = linearise(HydraulicFeedModel(s.params, true), load);
-        point.stable = stableAt(s.params, load, lin);
+        if (regulator == FeedRegulator::Feedback) {
+            point.feedback = designFeedFeedback(s.params);
+            if (gainFactor) point.feedback = scaledFeedback(*point.feedback, v);
+            point.run = simulateFeed(HydraulicFeedModel(s.params, regulator, point.feedback), s.load, s.run, cancelled);
+            point.stable = point.feedback->margins.closedLoopStable;
+        } else {
+            point.run = runFeedScenario(s, true, cancelled);
+            point.stable = stableAt(s.params, load, linearise(HydraulicFeedModel(s.params, true), load));
+        }
         point.oscillates = point.run.opening.overshootPct > kOscillationPct;
         out.push_back(std::move(point));
         if (progress) progress(static_cast<int>(out.size()), static_cast<int>(values.size()));
+    }
+    return out;
+}
+
+const FeedRun& FeedLoadPoint::of(FeedRegulator regulator) const {
+    return regulator == FeedRegulator::Off ? off : regulator == FeedRegulator::FeedForward ? feedForward : feedback;
+}
+
+std::vector<double> defaultLoadSweepValues() {
+    return {0.5, 1.0, 2.0, 3.0, 3.23, 4.0, 5.0, 6.0};
+}
+
+std::vector<FeedLoadPoint> sweepLoad(const FeedScenario& scenario, const std::vector<double>& loadsN,
+                                     const FeedProgress& progress, const FeedCancelled& cancelled) {
+    if (loadsN.empty() || loadsN.size() > kMaxSweepValues)
+        throw std::invalid_argument("a load sweep takes 1 .. 50 loads, not " +
+                                    number(static_cast<double>(loadsN.size())));
+    const double stepS = scenario.load.empty() ? 0.02 : scenario.load.lastEventS();
+    std::vector<FeedLoadPoint> out;
+    for (double loadN : loadsN) {
+        FeedScenario s = scenario;
+        s.load = FeedLoadProfile::step(stepS, loadN);  // checks the load's limits
+        FeedLoadPoint point;
+        point.loadN = loadN;
+        point.off = runFeedScenario(s, FeedRegulator::Off, cancelled);
+        point.feedForward = runFeedScenario(s, FeedRegulator::FeedForward, cancelled);
+        point.feedback = runFeedScenario(s, FeedRegulator::Feedback, cancelled);
+        out.push_back(std::move(point));
+        if (progress) progress(static_cast<int>(out.size()), static_cast<int>(loadsN.size()));
     }
     return out;
 }
@@ -127,19 +174,24 @@ FeedBoundaryCheck crossCheckGainLimit(const FeedScenario& scenario, double gainL
     return c;
 }
 
-std::vector<FeedSensitivity> feedSensitivity(const HydraulicFeedParams& params, double loadN, double change) {
+std::vector<FeedSensitivity> feedSensitivity(const HydraulicFeedParams& params, double loadN, double change,
+                                             FeedRegulator regulator) {
     if (!(change > 0.0 && change <= 0.5))
         throw std::invalid_argument("sensitivity step " + number(change) + " is outside 0 .. 0.5");
     validate(params);
+    const FeedRegulator regulated = regulator == FeedRegulator::Off ? FeedRegulator::FeedForward : regulator;
     auto steadyFeed = [&](const HydraulicFeedParams& p, bool on, bool& fullyOpen) {
-        const FeedEquilibrium e = HydraulicFeedModel(p, on).equilibrium(loadN);
+        const FeedEquilibrium e = HydraulicFeedModel(p, on ? regulated : FeedRegulator::Off).equilibrium(loadN);
         fullyOpen = fullyOpen || e.slotFullyOpen;
         return e.state.feedMPerS;
     };
     bool ignored = false;
     const double nominalOn = steadyFeed(params, true, ignored);
     const double nominalOff = steadyFeed(params, false, ignored);
-    auto percent = [](double value, double nominal) { return 100.0 * (value - nominal) / std::abs(nominal); };
+    // Of the nominal feed; of the set feed when the nominal carriage stands (stalled on its stop).
+    auto percent = [&](double value, double nominal) {
+        return 100.0 * (value - nominal) / (nominal != 0.0 ? std::abs(nominal) : params.setFeedMPerS);
+    };
     std::vector<FeedSensitivity> out;
     for (const FeedParameterInfo& info : feedParameters()) {
         const double nominal = params.*(info.member);

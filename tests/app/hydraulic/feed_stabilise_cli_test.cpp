@@ -1,7 +1,7 @@
 // `trueturn feed-stabilise` on the real binary (issue 16): the paper 003 headline feeds on the preset
-// hydraulic-feed (2.8e-4 m/s +-10 % without the regulator, 1e-3 m/s +-10 % with it), the JSON fields the
-// issue names, the xi and gain sweeps, the stability boundary with its simulated check, the CSV, and
-// refusals of bad input.
+// hydraulic-feed with the paper's regulator (2.8e-4 m/s +-10 % without the regulator, 1e-3 m/s +-10 % with
+// it), the JSON fields the issue names, the xi and gain sweeps, the stability boundary with its simulated
+// check, the CSV, and refusals of bad input. The feedback regulator and the load sweep: feed_regulator_cli_test.
 #include <gtest/gtest.h>
 
 #include <QFile>
@@ -32,9 +32,9 @@ double number(const QJsonObject& o, const char* key) {
 class FeedStabiliseCommand : public tt::test::CliTest {};
 
 TEST_F(FeedStabiliseCommand, ReproducesThePaperFeedsWithAndWithoutTheRegulator) {
-    const QJsonObject on = feedStabilise({});
+    const QJsonObject on = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward")});
     EXPECT_EQ(on.value(QStringLiteral("preset")).toString(), QStringLiteral("hydraulic-feed"));
-    EXPECT_EQ(on.value(QStringLiteral("regulator")).toString(), QStringLiteral("on"));
+    EXPECT_EQ(on.value(QStringLiteral("regulator")).toString(), QStringLiteral("feedforward"));
     EXPECT_NEAR(number(on, "load_n"), 3.23, 1e-12);
     // Paper 003: V = 1e-3 m/s with the regulator, 2.8e-4 m/s without (+-10 %, issue 16).
     EXPECT_NEAR(number(on, "steady_feed_m_s"), 1.0e-3, 0.1e-3);
@@ -63,7 +63,8 @@ TEST_F(FeedStabiliseCommand, ReproducesThePaperFeedsWithAndWithoutTheRegulator) 
 }
 
 TEST_F(FeedStabiliseCommand, XiSweepOscillatesBelowOneOnly) {
-    const QJsonObject j = feedStabilise({QStringLiteral("--sweep"), QStringLiteral("xi")});
+    const QJsonObject j = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"),
+                                         QStringLiteral("--sweep"), QStringLiteral("xi")});
     EXPECT_EQ(j.value(QStringLiteral("sweep_of")).toString(), QStringLiteral("xi"));
     const QJsonArray sweep = j.value(QStringLiteral("sweep")).toArray();
     ASSERT_EQ(sweep.size(), 8);
@@ -79,8 +80,9 @@ TEST_F(FeedStabiliseCommand, XiSweepOscillatesBelowOneOnly) {
 
 TEST_F(FeedStabiliseCommand, GainLimitOfTheChipLoopIsConfirmedBySimulation) {
     const QJsonObject j =
-        feedStabilise({QStringLiteral("--preset"), QStringLiteral("hydraulic-feed-chip"), QStringLiteral("--sweep"),
-                       QStringLiteral("gain"), QStringLiteral("--sweep-values"), QStringLiteral("70,137.6,160")});
+        feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"), QStringLiteral("--preset"),
+                       QStringLiteral("hydraulic-feed-chip"), QStringLiteral("--sweep"), QStringLiteral("gain"),
+                       QStringLiteral("--sweep-values"), QStringLiteral("70,137.6,160")});
     const QJsonObject stability = j.value(QStringLiteral("stability")).toObject();
     // u = 1 - b + b (K/K*)^2 u^1.2 folds at K/K* = 1.02219 (tests/core/hydraulic).
     EXPECT_NEAR(number(stability, "gain_limit") / number(stability, "design_gain"), 1.02219, 1e-4);
@@ -99,8 +101,9 @@ TEST_F(FeedStabiliseCommand, GainLimitOfTheChipLoopIsConfirmedBySimulation) {
 TEST_F(FeedStabiliseCommand, WritesTheCurvesAsCsvAndPrintsText) {
     const QString csv = path(QStringLiteral("feed.csv"));
     const CliResult r =
-        runTrueturn({QStringLiteral("feed-stabilise"), QStringLiteral("--load-step"), QStringLiteral("3.23@0.02"),
-                     QStringLiteral("--load-ramp"), QStringLiteral("1@0.2+0.05"), QStringLiteral("--csv"), csv});
+        runTrueturn({QStringLiteral("feed-stabilise"), QStringLiteral("--regulator"), QStringLiteral("feedforward"),
+                     QStringLiteral("--load-step"), QStringLiteral("3.23@0.02"), QStringLiteral("--load-ramp"),
+                     QStringLiteral("1@0.2+0.05"), QStringLiteral("--csv"), csv});
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     EXPECT_TRUE(r.out.contains(QStringLiteral("without the regulator")));
     EXPECT_TRUE(r.out.contains(QStringLiteral("No gain destabilises the chain")));
@@ -117,7 +120,8 @@ TEST_F(FeedStabiliseCommand, WritesTheCurvesAsCsvAndPrintsText) {
 // A load the slot cannot make up even fully open: the runs are reported, the stability analysis says why
 // it is missing.
 TEST_F(FeedStabiliseCommand, LoadBeyondTheSlotIsReportedNotRefused) {
-    const QJsonObject j = feedStabilise({QStringLiteral("--load-step"), QStringLiteral("500@0.02")});
+    const QJsonObject j = feedStabilise({QStringLiteral("--regulator"), QStringLiteral("feedforward"),
+                                         QStringLiteral("--load-step"), QStringLiteral("500@0.02")});
     EXPECT_TRUE(j.value(QStringLiteral("stability")).isNull());
     EXPECT_TRUE(
         j.value(QStringLiteral("stability_note")).toString().contains(QStringLiteral("more than the full opening")));
@@ -133,6 +137,10 @@ TEST_F(FeedStabiliseCommand, RefusesBadInput) {
     expectRefused({cmd, QStringLiteral("--xi"), QStringLiteral("20")},
                   QStringLiteral("--xi: 20 is outside 0.05 .. 10"));
     expectRefused({cmd, QStringLiteral("--regulator"), QStringLiteral("maybe")}, QStringLiteral("--regulator"));
+    expectRefused({cmd, QStringLiteral("--regulator"), QStringLiteral("on")}, QStringLiteral("--regulator"));
+    expectRefused({cmd, QStringLiteral("--sweep"), QStringLiteral("load"), QStringLiteral("--sweep-values"),
+                   QStringLiteral("1,-2")},
+                  QStringLiteral("load force -2 N is outside 0 .. 10000 N"));
     expectRefused({cmd, QStringLiteral("--load-step"), QStringLiteral("3.23")}, QStringLiteral("FORCE_N@TIME_S"));
     expectRefused({cmd, QStringLiteral("--load-step"), QStringLiteral("3.23@90")},
                   QStringLiteral("load time 90 s is outside 0 .. 60 s"));

@@ -27,7 +27,7 @@ TEST(FeedSweep, DampingRatioBelowOneOscillatesAndAboveDoesNot) {
     EXPECT_EQ(values, (std::vector<double>{0.2, 0.4, 0.6, 0.8, 1.0, 1.2, 1.5, 2.0}));
     int reported = 0;
     const std::vector<FeedSweepPoint> points =
-        sweepFeed(scenario, FeedSweepKind::DampingRatio, values, [&](int done, int total) {
+        sweepFeed(scenario, FeedSweepKind::DampingRatio, values, FeedRegulator::FeedForward, [&](int done, int total) {
             EXPECT_EQ(done, reported + 1);
             EXPECT_EQ(total, 8);
             reported = done;
@@ -102,7 +102,8 @@ TEST(FeedSweep, GainsBeyondTheBoundaryRunAway) {
 }
 
 TEST(FeedSweep, CanBeCancelled) {
-    EXPECT_THROW(sweepFeed(paperScenario(), FeedSweepKind::DampingRatio, {0.5, 1.0}, {}, [] { return true; }),
+    EXPECT_THROW(sweepFeed(paperScenario(), FeedSweepKind::DampingRatio, {0.5, 1.0}, FeedRegulator::FeedForward, {},
+                           [] { return true; }),
                  FeedSimulationCancelled);
 }
 

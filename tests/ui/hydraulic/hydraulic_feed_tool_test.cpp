@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QJsonObject>
@@ -95,11 +96,16 @@ TEST_F(HydraulicFeedToolTest, SimulatesThePaperLoadWithAndWithoutTheRegulator) {
     EXPECT_EQ(field("cylinder.piston_diameter_m")->suffix(), QStringLiteral(" mm"));
     EXPECT_DOUBLE_EQ(field("spool.damping_ratio")->value(), 1.2);
     EXPECT_DOUBLE_EQ(field("amplifier.gain")->value(), 137.6);
+    // The paper's regulator: the feed-forward of the measured force.
+    auto* regulator = tool->findChild<QComboBox*>(QStringLiteral("feedRegulator"));
+    ASSERT_NE(regulator, nullptr);
+    EXPECT_EQ(tool->regulator(), core::FeedRegulator::Feedback);  // the default
+    regulator->setCurrentIndex(regulator->findData(static_cast<int>(core::FeedRegulator::FeedForward)));
     click("feedSimulate");
     EXPECT_TRUE(tool->busy());
     waitIdle();
     EXPECT_TRUE(
-        tool->summary().contains(QStringLiteral("Steady feed 1.0000 mm/s with the regulator, 0.2822 mm/s without")))
+        tool->summary().contains(QStringLiteral("Steady feed 1.0000 mm/s with the feed-forward, 0.2822 mm/s without")))
         << tool->summary().toStdString();
     EXPECT_TRUE(tool->summary().contains(QStringLiteral("No gain destabilises the chain")));
     EXPECT_EQ(tool->charts()->feedChart()->pointCount(QStringLiteral("with")), 801);
@@ -116,7 +122,41 @@ TEST_F(HydraulicFeedToolTest, SimulatesThePaperLoadWithAndWithoutTheRegulator) {
     EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_regulator")));
 }
 
+// The feedback of the feed (the default): its margins in the summary (scipy's figures for the same loop:
+// gain margin 4.714 = 13.47 dB at 550.5 rad/s, phase margin 50.0 deg at 182.4 rad/s), and at 6 N, where the
+// paper's feed-forward ends at +114 %, the set feed held without a warning.
+TEST_F(HydraulicFeedToolTest, FeedbackShowsItsMarginsAndHoldsOffTheDesignLoad) {
+    tool->findChild<QDoubleSpinBox*>(QStringLiteral("feedLoad"))->setValue(6.0);
+    click("feedSimulate");
+    waitIdle();
+    EXPECT_TRUE(tool->summary().contains(QStringLiteral("Steady feed 1.0000 mm/s with the feedback")))
+        << tool->summary().toStdString();
+    EXPECT_TRUE(tool->summary().contains(
+        QStringLiteral("Margins of the feedback loop: gain 4.71 (13.5 dB) at 550 rad/s, phase 50° at 182 rad/s; "
+                       "closed loop stable.")))
+        << tool->summary().toStdString();
+    EXPECT_TRUE(tool->status().isEmpty()) << tool->status().toStdString();
+    EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_feedback_6n")));
+    // The feed-forward at the same load: off by 114 %, in red.
+    tool->setRegulator(core::FeedRegulator::FeedForward);
+    click("feedSimulate");
+    waitIdle();
+    EXPECT_TRUE(tool->status().contains(QStringLiteral("The feed ends 114.4 % off the set feed")))
+        << tool->status().toStdString();
+    EXPECT_TRUE(test::saveScreenshot(*window, QStringLiteral("hydraulic_feed_feedforward_6n")));
+    // The gain sweep of the feedback: factors on K_p, unstable beyond the gain margin.
+    tool->setRegulator(core::FeedRegulator::Feedback);
+    click("feedSweepGain");
+    waitIdle();
+    QTableWidget* table = tool->charts()->sweepTable();
+    ASSERT_EQ(table->rowCount(), 8);
+    EXPECT_EQ(table->item(7, 0)->text(), QStringLiteral("6"));
+    EXPECT_EQ(table->item(7, 5)->text(), QStringLiteral("no: unstable"));
+    EXPECT_EQ(table->item(6, 5)->text(), QStringLiteral("yes"));
+}
+
 TEST_F(HydraulicFeedToolTest, XiSweepAsAFamilyOfCurvesWithItsTableAndExports) {
+    tool->setRegulator(core::FeedRegulator::FeedForward);
     click("feedSweepXi");
     waitIdle();
     QTableWidget* table = tool->charts()->sweepTable();
@@ -148,6 +188,7 @@ TEST_F(HydraulicFeedToolTest, XiSweepAsAFamilyOfCurvesWithItsTableAndExports) {
 
 // The preset hydraulic-feed-chip's loop (y = 0.6): the summary gives the boundary, confirmed by simulation.
 TEST_F(HydraulicFeedToolTest, ChipLoopShowsTheStabilityBoundary) {
+    tool->setRegulator(core::FeedRegulator::FeedForward);
     QTest::mouseClick(tool->diagram(), Qt::LeftButton, {},
                       tool->diagram()->blockRect(FeedBlock::Sensor).center().toPoint());
     field("sensor.feed_exponent")->setValue(0.6);
