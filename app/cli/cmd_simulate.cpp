@@ -18,6 +18,7 @@
 #include "app/cli/command_parser.h"
 #include "app/cli/run_interrupt.h"
 #include "app/cli/simulate_checks.h"
+#include "app/cli/simulate_output.h"
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
 #include "core/control/run_to_run_plant.h"
@@ -97,13 +98,11 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
     QJsonObject out{{QStringLiteral("controller"), QString::fromStdString(core::controllerKindName(r.controller))},
                     {QStringLiteral("delay"), r.delay},
                     {QStringLiteral("parts"), static_cast<qint64>(r.parts)},
+                    {QStringLiteral("warmup_parts"), static_cast<qint64>(r.warmupParts)},
                     {QStringLiteral("points"), points},
                     {QStringLiteral("k_eff"), config::finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
-    out.insert(QStringLiteral("verdicts"),
-               QJsonObject{{QStringLiteral("good"), static_cast<qint64>(r.verdicts.good)},
-                           {QStringLiteral("rework"), static_cast<qint64>(r.verdicts.rework)},
-                           {QStringLiteral("scrap"), static_cast<qint64>(r.verdicts.scrap)}});
+    out.insert(QStringLiteral("verdicts"), verdictsJson(r));
     out.insert(QStringLiteral("tolerance_alarms"), static_cast<qint64>(r.toleranceAlarms));
     if (profile) {
         QJsonArray rows;
@@ -151,11 +150,7 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
     if (!std::isfinite(r.kEff)) printLine(kEffUndefinedNote());
-    printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
-                  .arg(r.verdicts.good)
-                  .arg(r.verdicts.rework)
-                  .arg(r.verdicts.scrap)
-                  .arg(r.toleranceAlarms));
+    printLine(verdictsText(r));
     if (!profile) return;
     printLine(
         QStringLiteral("Profile of parts %1 .. %2 (true diameter error):").arg(r.profileFromPart).arg(r.profileToPart));
@@ -309,11 +304,7 @@ void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const conf
                                   {QStringLiteral("held"), a.notice.cause == "hold"},
                                   {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}});
     out.insert(QStringLiteral("alarms"), alarms);
-    out.insert(QStringLiteral("corrections"),
-               QJsonObject{{QStringLiteral("max_abs_mm"), r.maxCorrectionMm},
-                           {QStringLiteral("max_step_mm"), r.maxCorrectionStepMm},
-                           {QStringLiteral("limit_abs_mm"), scenario.control.limits.maxAbsMm},
-                           {QStringLiteral("limit_step_mm"), scenario.control.limits.maxStepMm}});
+    out.insert(QStringLiteral("corrections"), correctionsJson(r, scenario.control.limits));
 }
 
 /// The step residual and the model alarms in the text output.
@@ -342,11 +333,15 @@ int run(const QStringList& arguments) {
                      QStringLiteral("name"), QStringLiteral("paper-2012"));
     parser.addOption(QStringLiteral("delay"),
                      QStringLiteral("Transport delay z in parts, 1..8 (default: the preset's)."), QStringLiteral("z"));
-    parser.addOption(QStringLiteral("parts"),
-                     QStringLiteral("Parts counted in the statistics, 100..10000000 (default 20000)."),
-                     QStringLiteral("n"), QStringLiteral("20000"));
+    parser.addOption(
+        QStringLiteral("parts"),
+        QStringLiteral("Parts counted in the statistics (k_eff, variances), 100..10000000 (default 20000); "
+                       "the warm-up parts are machined before them."),
+        QStringLiteral("n"), QStringLiteral("20000"));
     parser.addOption(QStringLiteral("warmup"),
-                     QStringLiteral("Parts machined first and not counted, 0..1000000 (default 100)."),
+                     QStringLiteral("Parts machined first, 0..1000000 (default 100): measured, stored and judged like "
+                                    "every part (the verdicts count them, their share apart) but not counted in the "
+                                    "statistics. --parts 150 machines 250 parts."),
                      QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));
@@ -382,7 +377,12 @@ int run(const QStringList& arguments) {
                                     "(1: the lathe's own pace; 360: a 6-minute part per second)."),
                      QStringLiteral("x"), QStringLiteral("0"));
     addRobustOptions(parser);
+    parser.addOption(QStringLiteral("dump-preset"),
+                     QStringLiteral("Print the set-up that would run (the preset merged over its based_on chain) "
+                                    "as JSON, and run nothing."));
     parser.parse(splitResumeRun(arguments));
+    if (parser.isSet(QStringLiteral("dump-preset")) && parser.isSet(QStringLiteral("db")))
+        throw UsageError("--dump-preset: prints the set-up and runs nothing; leave --db out");
 
     const bool resume = parser.isSet(QStringLiteral("resume"));
     const std::optional<QString> database =
@@ -448,6 +448,10 @@ int run(const QStringList& arguments) {
     config::LoopScenario scenario = config::loadLoopScenario(choice.preset, choice.delay);
     if (choice.ewmaAuto) scenario.control.ewmaWeightAuto = true;
     if (!resume) applyRobustOptions(parser, scenario);
+    if (parser.isSet(QStringLiteral("dump-preset"))) {
+        printJson(presetDump(scenario));
+        return kExitOk;
+    }
     core::LatheStudyOptions options;
     options.controller = choice.controller;
     options.ewmaWeight = choice.ewmaWeight;

@@ -18,6 +18,7 @@
 #include "core/storage/history_store.h"
 #include "run_window.h"
 #include "screenshots.h"
+#include "tests/support/patient_wait.h"
 #include "ui/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
@@ -65,7 +66,7 @@ protected:
                 engine->step();
                 return engine->partsFinished() >= kPartsBeforeCut;
             },
-            60000));
+            test::kPatientWaitMs));
     }
 };
 
@@ -105,7 +106,8 @@ TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEver
     });
     prompt.answers.push_back(Prompt::Answer::Yes);
     ASSERT_TRUE(offerInterruptedRun(context, window));
-    ASSERT_TRUE(waitFor([&] { return context.data().history()->runs().front().status == "complete"; }, 120000))
+    ASSERT_TRUE(
+        waitFor([&] { return context.data().history()->runs().front().status == "complete"; }, test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     ASSERT_FALSE(startedParts.empty());
     EXPECT_EQ(*startedParts.begin(), next) << "the first part machined after the resume";
@@ -147,15 +149,15 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
                     QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"), QStringLiteral("--parts"),
                     QStringLiteral("400"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--seed"),
                     QStringLiteral("3"), QStringLiteral("--speed"), QStringLiteral("3600")});
-    ASSERT_TRUE(simulate.waitForStarted(10000));
+    ASSERT_TRUE(simulate.waitForStarted(test::kPatientWaitMs));
     ASSERT_TRUE(waitFor(
         [&] {
             const std::optional<InterruptedRun> run = findInterruptedRun(context);
             return run && run->point.lastPartNumber >= 5;
         },
-        60000));
+        test::kPatientWaitMs));
     simulate.terminate();
-    ASSERT_TRUE(simulate.waitForFinished(30000));
+    ASSERT_TRUE(simulate.waitForFinished(test::kPatientWaitMs));
     EXPECT_EQ(simulate.exitCode(), 130) << simulate.readAllStandardError().toStdString();
 
     const std::optional<InterruptedRun> found = findInterruptedRun(context);
@@ -176,10 +178,11 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
     EXPECT_TRUE(prompt.lastText.endsWith(
         QStringLiteral("of 400 parts done) was interrupted. Continue it from part %1?").arg(next)))
         << prompt.lastText.toStdString();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 5; }, 60000))
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 5; }, test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     page->session().stop();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 30000));
+    ASSERT_TRUE(
+        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, test::kPatientWaitMs));
     ASSERT_FALSE(startedParts.empty());
     EXPECT_EQ(*startedParts.begin(), next);
     EXPECT_EQ(context.data().history()->runs().size(), 1u) << "the same run, no new one";
