@@ -34,9 +34,9 @@ protected:
 };
 
 TEST_F(DamagedHistory, AHistoryCutShortIsRefusedAndNothingIsCreatedBesideIt) {
-    const QString whole = history(QStringLiteral("whole.sqlite"), 2000);
+    const QString whole = history(QStringLiteral("whole.sqlite"), 600);
     const QByteArray content = bytes(whole);
-    ASSERT_GT(content.size(), 100000);
+    ASSERT_GT(content.size(), 50000);
     ASSERT_EQ(files(), QStringList{QStringLiteral("whole.sqlite")}) << "a clean close leaves no side file";
     for (const double share : {0.5, 0.1, 0.02}) {
         const QString name = QStringLiteral("cut-%1.sqlite").arg(share);
