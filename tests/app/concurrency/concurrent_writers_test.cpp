@@ -42,7 +42,7 @@ void runWriters(const QString& dbOption, const storage::DatabaseConfig& config) 
         writers.push_back(std::move(p));
     }
     for (auto& p : writers)
-        p->waitForFinished(test::kPatientWaitMs);
+        p->waitForFinished(tt::test::kPatientWaitMs);
     std::vector<qint64> runIds;
     for (auto& p : writers) {
         ASSERT_EQ(p->state(), QProcess::NotRunning);

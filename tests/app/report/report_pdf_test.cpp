@@ -32,7 +32,7 @@ QString poppler(const QString& tool, const QStringList& args) {
     if (program.isEmpty()) return {};
     QProcess p;
     p.start(program, args);
-    EXPECT_TRUE(p.waitForFinished(test::kPatientWaitMs));
+    EXPECT_TRUE(p.waitForFinished(tt::test::kPatientWaitMs));
     EXPECT_EQ(p.exitCode(), 0) << qPrintable(QString::fromUtf8(p.readAllStandardError()));
     return QString::fromUtf8(p.readAllStandardOutput());
 }

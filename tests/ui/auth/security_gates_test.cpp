@@ -19,9 +19,11 @@
 #include "core/storage/database.h"
 #include "core/storage/user_store.h"
 #include "devices/api/device_manager.h"
+#include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
+#include "ui/auth/audit_dialog.h"
 #include "ui/auth/login_dialog.h"
 #include "ui/auth/user_session.h"
 #include "ui/controller/tuning_worker.h"
@@ -67,7 +69,7 @@ protected:
                 const TuningResult* shown = page.shownResult();
                 return shown && shown->generation == page.worker().latestGeneration();
             },
-            test::kPatientWaitMs);
+            tt::test::kPatientWaitMs);
     }
 
     /// The controller's audit rows, read as the quality engineer's report would (a store of its own).
@@ -142,6 +144,32 @@ TEST_F(SecurityGatesTest, AnEngineersApplyWritesOneAuditRowPerChangedValueWithOl
         EXPECT_EQ(r.change.subject, QStringLiteral("controller"));
     }
     EXPECT_TRUE(chainIntact());
+
+    // The Audit dialog shows the chain's state: intact, then the row someone edited with a database tool.
+    {
+        AuditDialog dialog(context);
+        EXPECT_TRUE(dialog.chainIntact()) << dialog.chainText().toStdString();
+        EXPECT_TRUE(dialog.chainText().startsWith(QStringLiteral("Hash chain intact")))
+            << dialog.chainText().toStdString();
+    }
+    const qint64 edited = rows[1].id;
+    {
+        storage::Database db(storage::DatabaseConfig::sqlite(databasePath()));
+        db.exec(QStringLiteral("UPDATE audit SET new_value = '5' WHERE id = ?"), {edited});
+    }
+    AuditDialog dialog(context);
+    dialog.show();
+    EXPECT_FALSE(dialog.chainIntact());
+    EXPECT_TRUE(dialog.chainText().contains(QStringLiteral("row %1 edited").arg(edited)))
+        << dialog.chainText().toStdString();
+    EXPECT_TRUE(test::saveScreenshot(dialog, QStringLiteral("audit_chain_broken_en")));
+    language.apply(QStringLiteral("ru"));
+    AuditDialog russian(context);
+    russian.show();
+    EXPECT_TRUE(russian.chainText().contains(QStringLiteral("строка %1 изменена").arg(edited)))
+        << russian.chainText().toStdString();
+    EXPECT_TRUE(test::saveScreenshot(russian, QStringLiteral("audit_chain_broken_ru")));
+    language.apply(QStringLiteral("en"));
 }
 
 /// Runs `handle` on the log-in dialog once it is shown modally (LoginDialog::exec), from the event loop.

@@ -67,7 +67,7 @@ protected:
         return panel.maxRateBox()->value() * panel.plcCycleBox()->value() / 1000.0;
     }
     /// Waits (the GUI thread's events running) until the run has done `cycles` PLC cycles.
-    static bool waitForCycles(const BoringPanel& panel, int cycles, int timeoutMs = test::kPatientWaitMs) {
+    static bool waitForCycles(const BoringPanel& panel, int cycles, int timeoutMs = tt::test::kPatientWaitMs) {
         return QTest::qWaitFor([&] { return panel.stats().cycles >= cycles; }, timeoutMs);
     }
     static void runFaster(BoringPanel& panel) { panel.speedBox()->setCurrentIndex(panel.speedBox()->findData(50)); }
@@ -119,7 +119,7 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
             return panel.boreChart()->pointCount(QStringLiteral("with")) > 50 &&
                    panel.offsetChart()->pointCount(QStringLiteral("offset")) > 800;
         },
-        test::kPatientWaitMs));
+        tt::test::kPatientWaitMs));
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_2_compensating")));
 
     // The read-out goes silent (the device's fault switch, from the panel): the offset is held, and
@@ -127,7 +127,8 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     ASSERT_TRUE(panel.silentBox()->isVisible());
     panel.silentBox()->setChecked(true);
     EXPECT_TRUE(manager.device(drive)->faultSwitches()->silent);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     EXPECT_FALSE(panel.detail().isEmpty());  // the device's own words, for the engineer
     const double held = panel.stats().offsetMm;
@@ -136,12 +137,13 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_3_silent_holds")));
     panel.silentBox()->setChecked(false);
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Compensating"); }, test::kPatientWaitMs))
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Compensating"); }, tt::test::kPatientWaitMs))
         << panel.reason().toStdString();
 
     // The part program says taper: the force from current is refused at once, the offset held.
     panel.segmentBox()->setCurrentIndex(panel.segmentBox()->findData(static_cast<int>(core::SegmentKind::Taper)));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("Taper"))) << panel.reason().toStdString();
     const double beforeTaper = panel.stats().offsetMm;
     ASSERT_TRUE(waitForCycles(panel, panel.stats().cycles + 50));
@@ -176,7 +178,8 @@ TEST_F(BoringPanelTest, TheMandrelsOwnPassCompensatesAndASilentMandrelHolds) {
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_4_probe")));
     // A silent mandrel (its fault switch on the Devices page) holds the offset too.
     manager.device(probe)->faultSwitches()->silent = true;
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("probe mandrel"))) << panel.reason().toStdString();
     const double held = panel.stats().offsetMm;
     ASSERT_TRUE(waitForCycles(panel, panel.stats().cycles + 100));
@@ -195,7 +198,8 @@ TEST_F(BoringPanelTest, ADitherWindowTooShortForThePlcCycleIsRefusedInPlainWords
     runFaster(panel);
     ASSERT_TRUE(panel.start());
     ASSERT_TRUE(waitForCycles(panel, 100));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("too short"))) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, 0.0);
     panel.stop();
@@ -222,7 +226,8 @@ TEST_F(BoringPanelTest, ASourceWithoutAPassOfItsOwnNeedsAToolAndACncOutput) {
     const QString output = addSimulator(devices::DeviceKind::CorrectionOutput, QStringLiteral("PLC"));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("drive current read-out is silent or disconnected")))
         << panel.reason().toStdString();
     panel.stop();
@@ -245,7 +250,7 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     // The simulated drive: friction 2 A, cutting 0.6 A, so P = 150 N/A * 0.6 A = 90 N; the tool
     // (3EI/l³ = 2 932 N/mm) bends 0.031 mm; the offset climbs towards +0.031 mm at 0.005 mm/s.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().offsetMm > 0.004; }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().offsetMm > 0.004; }, tt::test::kPatientWaitMs))
         << panel.reason().toStdString();
     ASSERT_TRUE(panel.stats().forceN.has_value());
     EXPECT_NEAR(*panel.stats().forceN, 90.0, 5.0);
@@ -259,7 +264,8 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
 
     // The drive read-out goes silent (fault switch): the offset stays where it is.
     manager.device(drive)->faultSwitches()->silent = true;
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, test::kPatientWaitMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     QTest::qWait(100);  // the last offset before the hold reaches the CNC
     const double held = *plc->plcOffsetMm();
@@ -274,7 +280,7 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     manager.device(drive)->faultSwitches()->silent = false;
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, tt::test::kPatientWaitMs))
         << panel.reason().toStdString();
     EXPECT_GE(*plc->plcOffsetMm(), held - 1e-9);
     EXPECT_LE(panel.stats().largestStepMm, stepLimitMm(panel) + 1e-9);
@@ -301,10 +307,11 @@ TEST_F(BoringPanelTest, AProbeDeviceDrivesTheOffsetAndRemovingADeviceStopsTheRun
     ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:probe").arg(probe)));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     EXPECT_TRUE(panel.planeBox()->isVisible());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(probe)->health().ready(); }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(probe)->health().ready(); }, tt::test::kPatientWaitMs));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     // +0.020 mm deflection: the offset goes to −0.020 mm at 0.05 mm/s (0.4 s).
-    ASSERT_TRUE(QTest::qWaitFor([&] { return std::abs(panel.stats().offsetMm + 0.020) < 1e-6; }, test::kPatientWaitMs))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return std::abs(panel.stats().offsetMm + 0.020) < 1e-6; }, tt::test::kPatientWaitMs))
         << panel.stats().offsetMm << " " << panel.reason().toStdString();
     manager.removeDevice(probe);
     EXPECT_FALSE(panel.running());

@@ -90,7 +90,7 @@ TEST_F(CompensationThread, ABusyWindowDoesNotDelayAnyPlcCycle) {
     }
     const Clock::time_point blockEnd = Clock::now();
     EXPECT_EQ(guiTicks, ticksBefore);  // the GUI thread really was blocked
-    EXPECT_TRUE(QTest::qWaitFor([&] { return guiTicks > ticksBefore; }, test::kPatientWaitMs));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return guiTicks > ticksBefore; }, tt::test::kPatientWaitMs));
     panel.stop();
 
     const std::vector<Clock::time_point> starts = panel.session().cycleStarts();
@@ -112,7 +112,7 @@ TEST_F(CompensationThread, AStoppedRunsCyclesNoLongerArrive) {
     ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:current").arg(drive)));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().cycles > 10; }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().cycles > 10; }, tt::test::kPatientWaitMs));
     panel.stop();
     const int cycles = panel.stats().cycles;
     const std::size_t scheduled = panel.session().cycleStarts().size();

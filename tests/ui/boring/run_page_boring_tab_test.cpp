@@ -54,7 +54,7 @@ TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatorsOwnPassInTheMainWindow) {
     panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
     // 30 s of the pass: the tool 25 mm into the bore.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, tt::test::kPatientWaitMs))
         << panel->stats().cycles;
     EXPECT_EQ(panel->headline(), QStringLiteral("Compensating"));
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("boring_run_page_tab")));

@@ -423,12 +423,12 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
     std::unique_ptr<devices::Device> device =
         plugin.create(devices::DeviceKind::Probe, {}, devices::DeviceContext{&clock});
     device->open();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return device->health().ready(); }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return device->health().ready(); }, tt::test::kPatientWaitMs))
         << device->health().message;
     DeviceCalibrationProbe probe(*device, QStringLiteral("Mandrel on the simulator"), 12);
     ASSERT_TRUE(probe.canUpload());
     EXPECT_TRUE(probe.hasJack());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.port().takeSample().has_value(); }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.port().takeSample().has_value(); }, tt::test::kPatientWaitMs));
     // A 12-bit table (8 226 bytes), opaque to the device.
     std::vector<core::CalibrationPoint> points;
     for (int i = 0; i <= 20; ++i) {
@@ -442,7 +442,7 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
     const std::uint32_t crc = core::tableUploadCrc(image);
     probe.startUpload(image, 4, crc);
     ASSERT_TRUE(QTest::qWaitFor([&] { return probe.uploadStatus().phase == core::UploadLinkStatus::Phase::Done; },
-                                test::kPatientWaitMs))
+                                tt::test::kPatientWaitMs))
         << probe.uploadStatus().message;
     probe.requestReadback();
     ASSERT_TRUE(probe.readback().has_value());

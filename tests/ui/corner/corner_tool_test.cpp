@@ -35,7 +35,7 @@ constexpr int kHeight = 600;
 class CornerToolTest : public ::testing::Test {
 protected:
     /// Waits for the running job to end (training 40 moves: under a second on one core).
-    static bool waitForJob(CornerTool& tool, int timeoutMs = test::kPatientWaitMs) {
+    static bool waitForJob(CornerTool& tool, int timeoutMs = tt::test::kPatientWaitMs) {
         return QTest::qWaitFor([&] { return !tool.busy(); }, timeoutMs);
     }
 

@@ -114,8 +114,8 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     typeInto(child<QLineEdit>(p, QStringLiteral("deviceName")), QStringLiteral("Micrometer at the lathe"));
     EXPECT_TRUE(apply->isEnabled());
     child<QPushButton>(p, QStringLiteral("testConnection"))->click();
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); },
+                                tt::test::kPatientWaitMs))
         << result->text().toStdString();
     EXPECT_EQ(result->text(), QStringLiteral("Connected — 26.812 mm"));
     EXPECT_EQ(micrometer.readingsSent(), 1);
@@ -126,18 +126,18 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     const QString id = manager.deviceIds().front();
     devices::Device* gauge = manager.device(id);
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, test::kPatientWaitMs))
+        QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs))
         << gauge->health().message;
     EXPECT_EQ(manager.entry(id)->name, QStringLiteral("Micrometer at the lathe"));
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 1 ready"));
     gauge->diameterGauge()->requestReading();
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return gauge->liveValue() == QStringLiteral("26.812 mm"); }, test::kPatientWaitMs));
+        QTest::qWaitFor([&] { return gauge->liveValue() == QStringLiteral("26.812 mm"); }, tt::test::kPatientWaitMs));
     // The page refreshes its counters twice a second.
     EXPECT_TRUE(QTest::qWaitFor(
         [&] { return child<QLabel>(p, QStringLiteral("LiveValue"))->text() == QStringLiteral("26.812 mm"); },
-        test::kPatientWaitMs))
+        tt::test::kPatientWaitMs))
         << child<QLabel>(p, QStringLiteral("LiveValue"))->text().toStdString();
     {
         QSettings settings;
@@ -150,7 +150,7 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     // Unplugged: the device, the list and the status bar show the error.
     pty.releaseSlave();
     pty.unplug();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(state.deviceSummary().startsWith(QStringLiteral("Micrometer at the lathe: the gauge on")))
         << state.deviceSummary().toStdString();
     QTest::qWait(600);
@@ -166,7 +166,7 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     ASSERT_EQ(manager.deviceIds().size(), 1);
     devices::Device* probe = manager.device(manager.deviceIds().front());
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return probe->health().state == core::DeviceState::Ready; }, test::kPatientWaitMs));
+        QTest::qWaitFor([&] { return probe->health().state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs));
 
     // Unapplied edits are undone by Revert.
     QWidget* rate = p.form().editor(QStringLiteral("rateHz"));
@@ -183,11 +183,11 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     ASSERT_NE(unplug, nullptr);
     ASSERT_TRUE(unplug->isVisible());
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, tt::test::kPatientWaitMs));
     QTest::qWait(600);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("devices_simulator_unplugged")));
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Ok; }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Ok; }, tt::test::kPatientWaitMs));
 
     // Remove asks first.
     prompt.answers.push_back(Prompt::Answer::No);
@@ -209,7 +209,7 @@ TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
     ASSERT_EQ(manager.deviceIds().size(), 1);
     devices::Device* gauge = manager.device(manager.deviceIds().front());
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, test::kPatientWaitMs));
+        QTest::qWaitFor([&] { return gauge->health().state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs));
     auto* result = child<QLabel>(p, QStringLiteral("TestResult"));
     auto* test = child<QPushButton>(p, QStringLiteral("testConnection"));
 
@@ -228,7 +228,7 @@ TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
     state.setLoop(AppState::Loop::Idle, QString());
     test->click();
     EXPECT_FALSE(result->text().contains(QStringLiteral("Stop the run first")));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return test->isEnabled(); }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return test->isEnabled(); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(result->text().startsWith(QStringLiteral("Connected"))) << result->text().toStdString();
 }
 

@@ -49,7 +49,7 @@ protected:
 
     /// Waits for the worker thread's job (the GUI stays responsive meanwhile).
     void waitIdle() {
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !tool->busy(); }, test::kPatientWaitMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !tool->busy(); }, tt::test::kPatientWaitMs));
     }
 
     void click(const char* name) {

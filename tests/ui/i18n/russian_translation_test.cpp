@@ -286,7 +286,7 @@ TEST_F(RussianWindow, EveryPageAndBothRunTabsAreRussianAndNothingIsCutOff) {
             return manager.device(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->health().message ==
                    "симулятор микрометра готов";
         },
-        test::kPatientWaitMs));
+        tt::test::kPatientWaitMs));
 
     const QSet<QString> english = englishTexts();
     QStringList problems;

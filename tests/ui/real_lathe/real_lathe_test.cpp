@@ -56,7 +56,7 @@ constexpr double kNominalMm = 27.0;   // paper-2012-group1 (and the G-code outpu
 constexpr double kToolSetMm = 0.030;  // the test lathe's tool is set 0.030 mm large on diameter
 const std::vector<double> kPointsMm{0.0, 27.5, 162.5, 262.5, 325.0};  // the preset's control points
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs = test::kPatientWaitMs) {
+bool waitFor(const std::function<bool()>& done, int timeoutMs = tt::test::kPatientWaitMs) {
     QElapsedTimer timer;
     timer.start();
     while (!done()) {
@@ -253,7 +253,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
 
     // Plugged in again: the loop continues by itself, takes part 4's diameters and writes part 5.
     pty.plug();
-    ASSERT_TRUE(waitFor([&] { return manager.device(gaugeId)->health().ready(); }, test::kPatientWaitMs))
+    ASSERT_TRUE(waitFor([&] { return manager.device(gaugeId)->health().ready(); }, tt::test::kPatientWaitMs))
         << manager.device(gaugeId)->health().message;
     pty.releaseSlave();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Running; }))

@@ -48,7 +48,7 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
             ASSERT_EQ(ofKind.size(), 1) << devices::kindKey(kind).toStdString();
             const devices::DeviceEntry* e = m.entry(ofKind.front());
             EXPECT_EQ(e->pluginId, QStringLiteral("simulator"));
-            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, test::kPatientWaitMs))
+            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, tt::test::kPatientWaitMs))
                 << "opened: " << e->device->health().message;
         }
         EXPECT_EQ(m.entry(m.devicesOfKind(devices::DeviceKind::Gauge).front())->name,
@@ -65,8 +65,8 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         expected.removeAt(1);  // the probe
         EXPECT_EQ(devices.manager().deviceIds(), expected);
         for (const QString& id : devices.manager().deviceIds())
-            EXPECT_TRUE(
-                QTest::qWaitFor([&] { return devices.manager().device(id)->health().ready(); }, test::kPatientWaitMs));
+            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.manager().device(id)->health().ready(); },
+                                        tt::test::kPatientWaitMs));
         for (const QString& id : devices.manager().deviceIds())
             devices.manager().removeDevice(id);
     }
@@ -93,7 +93,7 @@ TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
                        &devices.manager()};
     MainWindow window(context);
     ASSERT_TRUE(QTest::qWaitFor([&] { return devices.manager().summary().text == QStringLiteral("4 ready"); },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     auto* devicesPage = static_cast<DevicesPage*>(window.page(PageId::Devices));
     EXPECT_EQ(&devicesPage->manager(), &devices.manager());
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);

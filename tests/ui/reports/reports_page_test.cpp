@@ -54,7 +54,7 @@ protected:
         simulate.start(QStringLiteral(TRUETURN_EXE),
                        {"simulate", "--preset", preset.fileName(), "--parts", "150", "--warmup", "0", "--seed", "11",
                         "--machine", "lathe-7", "--db", context.databasePath, "--json"});
-        ASSERT_TRUE(simulate.waitForFinished(test::kPatientWaitMs));
+        ASSERT_TRUE(simulate.waitForFinished(tt::test::kPatientWaitMs));
         ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
@@ -84,8 +84,8 @@ protected:
         auto* page = qobject_cast<ReportsPage*>(window.page(PageId::Reports));
         EXPECT_NE(page, nullptr);
         if (!page) return nullptr;
-        EXPECT_TRUE(
-            QTest::qWaitFor([&] { return !page->busy() && !page->views()->points().empty(); }, test::kPatientWaitMs))
+        EXPECT_TRUE(QTest::qWaitFor([&] { return !page->busy() && !page->views()->points().empty(); },
+                                    tt::test::kPatientWaitMs))
             << page->status()->text().toStdString();
         return page;
     }
@@ -94,7 +94,7 @@ protected:
         bool done = false;
         QObject::connect(page, &ReportsPage::analysed, page, [&] { done = true; });
         page->analyse();
-        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, test::kPatientWaitMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, tt::test::kPatientWaitMs));
     }
 
     QTemporaryDir dir;
@@ -210,7 +210,7 @@ TEST_F(ReportsPageTest, ExportsPdfCsvAndDfq) {
                                                           : QStringLiteral("reportExportDfq"));
         ASSERT_NE(button, nullptr);
         button->click();
-        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, test::kPatientWaitMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, tt::test::kPatientWaitMs));
         QFile file(path);
         ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << page->status()->text().toStdString();
         const QList<QByteArray> lines = file.readAll().split('\n');

@@ -65,7 +65,8 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
     ShaftRunPanel& shaft = page->shaft();
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().partsFinished >= 4; }, test::kPatientWaitMs))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return page->session().snapshot().partsFinished >= 4; }, tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
 
     // The simulated lathe's gauge goes silent (for longer than the test): the loop pauses when the
@@ -76,7 +77,7 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
             const core::NoticeKind k = page->session().snapshot().status.kind;
             return k == core::NoticeKind::NoDiameters || k == core::NoticeKind::GaugeNotReady;
         },
-        test::kPatientWaitMs))
+        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     QTest::qWait(100);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_tab_ru_gauge_silent")));
@@ -84,7 +85,7 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
 
     page->session().stop();
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
 
     // A new run with the diameters typed by hand: a slipped decimal point is refused at once; a diameter
     // 0.49 mm off (inside the plausible window) goes to the loop, whose controller rejects it as an
@@ -99,14 +100,14 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
                 const LoopSnapshot& s = page->session().snapshot();
                 return s.manualEntry && s.awaitingPart && s.awaitingPart != typed && manual->field(0)->isEnabled();
             },
-            test::kPatientWaitMs));
+            tt::test::kPatientWaitMs));
         typed = page->session().snapshot().awaitingPart;
         typeAndEnter(manual->field(0), QStringLiteral("2.7012"));
         EXPECT_TRUE(manual->field(0)->property("invalid").toBool());
         for (int i = 0; i < manual->fieldCount(); ++i)
             typeAndEnter(manual->field(i), i == 2 ? QStringLiteral("27.49") : QStringLiteral("27.000"));
         const bool taken =
-            QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart != typed; }, test::kPatientWaitMs);
+            QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart != typed; }, tt::test::kPatientWaitMs);
         if (!taken) test::saveScreenshot(window, QStringLiteral("run_tab_ru_not_taken"));
         ASSERT_TRUE(taken) << core::describe(page->session().snapshot().status);
     }

@@ -45,7 +45,7 @@ bool waitForNewest(ControllerPage& page) {
             const TuningResult* shown = page.shownResult();
             return shown && shown->generation == page.worker().latestGeneration();
         },
-        test::kPatientWaitMs);
+        tt::test::kPatientWaitMs);
 }
 
 class RunTuningTest : public test::RunWindowTest {
@@ -71,7 +71,7 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
 
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return session.snapshot().partsFinished >= 6; }, test::kPatientWaitMs))
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().partsFinished >= 6; }, tt::test::kPatientWaitMs))
         << core::describe(session.snapshot().status);
 
     window.showPage(PageId::Controller);
@@ -89,9 +89,9 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     EXPECT_TRUE(controller->statusText().contains(QStringLiteral("running loop")))
         << controller->statusText().toStdString();
 
-    ASSERT_TRUE(waitFor([&] { return takenAt > 0; }, test::kPatientWaitMs)) << "the loop never took the new tuning";
+    ASSERT_TRUE(waitFor([&] { return takenAt > 0; }, tt::test::kPatientWaitMs)) << "the loop never took the new tuning";
     EXPECT_GE(takenAt, partBeforeApply) << "the switch is at a part not yet started when Apply was pressed";
-    ASSERT_TRUE(waitFor([&] { return started.count(takenAt + 12) == 1; }, test::kPatientWaitMs));
+    ASSERT_TRUE(waitFor([&] { return started.count(takenAt + 12) == 1; }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_applied_to_running_loop")));
 
     // Bumpless (LoopEngine::replaceController): at the first part of the new controller the loop asks for
@@ -119,7 +119,7 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     // Stopped: a second Apply waits for the next Start, which carries it.
     window.showPage(PageId::Run);
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }, test::kPatientWaitMs));
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
     window.showPage(PageId::Controller);
     controller->r1(0).field()->setValue(controller->appliedSetup().weights.R1(0, 0) * 2.0);
     ASSERT_TRUE(waitForNewest(*controller));
@@ -151,10 +151,10 @@ TEST_F(RunTuningTest, AQualityUserCannotStartTheMachine) {
 
     users.logIn({"Ivan", core::auth::Role::Operator}, 10);
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().partsFinished >= 1; }, test::kPatientWaitMs));
+    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().partsFinished >= 1; }, tt::test::kPatientWaitMs));
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    EXPECT_TRUE(
-        waitFor([&] { return runPage->session().snapshot().state == core::LoopState::Idle; }, test::kPatientWaitMs));
+    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().state == core::LoopState::Idle; },
+                        tt::test::kPatientWaitMs));
 }
 
 }  // namespace

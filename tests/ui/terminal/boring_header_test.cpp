@@ -32,14 +32,14 @@ TEST_F(BoringHeader, TheHeaderSaysWhatTheCompensationDoes) {
     auto* status = window->findChild<QLabel*>(QStringLiteral("statusLoop"));
     ASSERT_TRUE(badge && status);
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Idle"));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(drive)->health().ready(); }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(drive)->health().ready(); }, tt::test::kPatientWaitMs));
     ASSERT_TRUE(panel->selectSource(QStringLiteral("dev:%1:current").arg(drive)));
     panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, tt::test::kPatientWaitMs))
         << panel->stats().cycles;
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return panel->headline() == QStringLiteral("Compensating"); }, test::kPatientWaitMs));
+        QTest::qWaitFor([&] { return panel->headline() == QStringLiteral("Compensating"); }, tt::test::kPatientWaitMs));
     QApplication::processEvents();
     EXPECT_EQ(state.loop(), AppState::Loop::Running);
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Running"));

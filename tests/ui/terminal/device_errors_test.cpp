@@ -61,7 +61,7 @@ TEST_F(DeviceErrors, ARefusedModbusConnectionIsTheLastError) {
     window->showPage(PageId::Devices);
     select(*window, id);
     ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Error; },
-                                test::kPatientWaitMs))
+                                tt::test::kPatientWaitMs))
         << manager.device(id)->health().message;
     QApplication::processEvents();
     auto* lastError = window->findChild<QLabel*>(QStringLiteral("LastError"));
@@ -80,12 +80,12 @@ TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
     auto* page = static_cast<DevicesPage*>(window->page(PageId::Devices));
     select(*window, id);
     ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Ready; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     window->findChild<QPushButton*>(QStringLiteral("testConnection"))->click();
     auto* result = window->findChild<QLabel*>(QStringLiteral("TestResult"));
     ASSERT_NE(result, nullptr);
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); }, test::kPatientWaitMs))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); },
+                                tt::test::kPatientWaitMs))
         << result->text().toStdString();
     QCheckBox* unplug = nullptr;
     for (QCheckBox* box : page->findChildren<QCheckBox*>())
@@ -93,7 +93,7 @@ TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
     ASSERT_NE(unplug, nullptr);
     unplug->click();
     ASSERT_TRUE(QTest::qWaitFor([&] { return manager.device(id)->health().state == core::DeviceState::Error; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     QApplication::processEvents();
     for (const QString& text : visibleTexts(page))
         EXPECT_FALSE(text.startsWith(QStringLiteral("Connected"))) << text.toStdString();

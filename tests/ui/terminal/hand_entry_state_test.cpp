@@ -53,7 +53,7 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
     window->findChild<QCheckBox*>(QStringLiteral("manualEntryCheck"))->setChecked(true);
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(
-        QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart.has_value(); }, test::kPatientWaitMs));
+        QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart.has_value(); }, tt::test::kPatientWaitMs));
 
     // 6 s of wall time = 36 min at x360, ten times the old 3 s time-out: sampled every 20 ms.
     QStringList disagreements;
@@ -82,7 +82,7 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
 
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Paused; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     for (int i = 0; i < 20; ++i) {
         sample("paused");
         QTest::qWait(20);
@@ -90,11 +90,11 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Paused"));
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();  // continue
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     sample("continued");
     window->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     QApplication::processEvents();
     sample("stopped");
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Idle"));

@@ -69,7 +69,7 @@ TEST_F(QuitTerminal, ARunGoingAsksFirst) {
     ASSERT_NE(page, nullptr);
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     prompt.answers = {Prompt::Answer::No};
     EXPECT_FALSE(window->close());
     EXPECT_EQ(prompt.log.value(0), QStringLiteral("ask: Quit TrueTurn?"));

@@ -63,7 +63,7 @@ TEST_F(VerdictBanner, TheLastScrapPartIsBigRedAndSoundsWhenTheSoundIsOn) {
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; },
-                        test::kPatientWaitMs));
+                        tt::test::kPatientWaitMs));
     QApplication::processEvents();
     EXPECT_EQ(banner->property("verdict").toString(), QStringLiteral("scrap"));
     EXPECT_TRUE(banner->text().contains(QStringLiteral("SCRAP"))) << banner->text().toStdString();
@@ -83,11 +83,11 @@ TEST_F(VerdictBanner, TheLastScrapPartIsBigRedAndSoundsWhenTheSoundIsOn) {
     const qsizetype badBefore = bad.count();
     window->findChild<QCheckBox*>(QStringLiteral("pauseOnScrapCheck"))->setChecked(false);
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();  // continue
-    ASSERT_TRUE(QTest::qWaitFor([&] { return bad.count() > badBefore; }, test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return bad.count() > badBefore; }, tt::test::kPatientWaitMs));
     EXPECT_EQ(sounded.count(), before);
     window->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
     ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
-                                test::kPatientWaitMs));
+                                tt::test::kPatientWaitMs));
     EXPECT_TRUE(QSettings().contains(kSoundOnOutOfTolerance));
     EXPECT_FALSE(QSettings().value(kSoundOnOutOfTolerance).toBool()) << "the setting is saved";
     sound->setChecked(true);

@@ -63,7 +63,7 @@ TEST_F(RunVerdictsTest, CountersYieldAlarmsAndThePauseOnTheFirstScrap) {
     window.findChild<QCheckBox*>(QStringLiteral("pauseOnScrapCheck"))->setChecked(true);
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
     ASSERT_TRUE(waitFor([&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; },
-                        test::kPatientWaitMs))
+                        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     EXPECT_EQ(page->session().snapshot().state, core::LoopState::Paused);
     const auto* good = window.findChild<QLabel*>(QStringLiteral("verdictGood"));
@@ -86,10 +86,10 @@ TEST_F(RunVerdictsTest, CountersYieldAlarmsAndThePauseOnTheFirstScrap) {
     QTest::qWait(500);
     EXPECT_EQ(page->session().snapshot().nextPart, next);
     window.findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return page->session().snapshot().nextPart > next; }, test::kPatientWaitMs));
+    EXPECT_TRUE(waitFor([&] { return page->session().snapshot().nextPart > next; }, tt::test::kPatientWaitMs));
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
     EXPECT_TRUE(
-        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, test::kPatientWaitMs));
+        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
 }
 
 }  // namespace
