@@ -62,6 +62,51 @@ TEST(AuditChainEncoding, AFieldBoundaryMovedChangesTheHash) {
     EXPECT_NE(auditRowHash(a, kAuditGenesisHash, 1), auditRowHash(b, kAuditGenesisHash, 1));
 }
 
+/// A chain of `count` rows with ids 10, 20, 30 ... as appendAuditRow writes them.
+std::vector<AuditChainRow> chainOf(int count) {
+    std::vector<AuditChainRow> rows;
+    QString prev = kAuditGenesisHash;
+    for (int i = 1; i <= count; ++i) {
+        AuditChainRow r = exampleRow();
+        r.id = 10 * i;
+        r.newValue = QString::number(i);
+        r.seq = i;
+        r.prevHash = prev;
+        r.rowHash = auditRowHash(r, prev, i);
+        prev = r.rowHash;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+TEST(AuditChainWalk, ARowForgedIntoTheMiddleWithTheEncodingIsNamedNotTheRowsAfterIt) {
+    std::vector<AuditChainRow> rows = chainOf(5);
+    const AuditChainHead head{5, rows.back().rowHash};
+    // Someone who knows the encoding writes a row after row 20 (id 25) hashed correctly onto it.
+    AuditChainRow forged = exampleRow();
+    forged.id = 25;
+    forged.seq = 3;
+    forged.prevHash = rows[1].rowHash;
+    forged.rowHash = auditRowHash(forged, forged.prevHash, 3);
+    rows.insert(rows.begin() + 2, forged);
+    const AuditChainState state = verifyAuditChain(rows, head);
+    ASSERT_EQ(state.problems.size(), 1u) << state.problems.front().message.toStdString();
+    EXPECT_EQ(state.problems[0].kind, AuditChainProblem::Kind::Inserted);
+    EXPECT_EQ(state.problems[0].rowId, 25);
+    EXPECT_EQ(state.chainedRows, 5);
+    EXPECT_EQ(state.headHash, head.rowHash);
+}
+
+TEST(AuditChainWalk, AnEditedRowWhoseLinkWasEditedTooIsStillNamedAsEdited) {
+    std::vector<AuditChainRow> rows = chainOf(4);
+    rows[1].newValue = QStringLiteral("changed");
+    rows[1].prevHash = QString(64, QLatin1Char('f'));
+    const AuditChainState state = verifyAuditChain(rows, AuditChainHead{4, rows.back().rowHash});
+    ASSERT_EQ(state.problems.size(), 1u) << state.problems.front().message.toStdString();
+    EXPECT_EQ(state.problems[0].kind, AuditChainProblem::Kind::Edited);
+    EXPECT_EQ(state.problems[0].rowId, 20);
+}
+
 class AuditChainTest : public ::testing::TestWithParam<std::string> {
 protected:
     static void recordChanges(AuditStore& audit, int count) {
