@@ -172,9 +172,10 @@ TEST_F(SecurityGatesTest, AnEngineersApplyWritesOneAuditRowPerChangedValueWithOl
     language.apply(QStringLiteral("en"));
 }
 
-/// Runs `handle` on the log-in dialog once it is shown modally (LoginDialog::exec), from the event loop.
-void whenLogInShows(const std::function<void(LoginDialog&)>& handle, bool& seen) {
-    auto* poll = new QTimer;
+/// Runs `handle` on the log-in dialog once it is shown modally (LoginDialog::exec), from the event loop; the
+/// poll belongs to `owner` (the window), so it cannot outlive the test.
+void whenLogInShows(QObject* owner, const std::function<void(LoginDialog&)>& handle, bool& seen) {
+    auto* poll = new QTimer(owner);
     poll->setInterval(20);
     QObject::connect(poll, &QTimer::timeout, poll, [poll, handle, &seen] {
         auto* dialog = qobject_cast<LoginDialog*>(QApplication::activeModalWidget());
@@ -198,6 +199,7 @@ TEST_F(SecurityGatesTest, KioskQuitByAnOperatorAsksForAnEngineerAndAWrongPasswor
     bool seen = false;
     QString message;
     whenLogInShows(
+        window.get(),
         [&](LoginDialog& d) {
             d.userCombo()->setCurrentIndex(d.userCombo()->findText(QStringLiteral("Olga")));
             d.secretEdit()->setText(QStringLiteral("not the secret"));
@@ -217,6 +219,7 @@ TEST_F(SecurityGatesTest, KioskQuitByAnOperatorAsksForAnEngineerAndAWrongPasswor
     // The operator's own PIN is not an engineer's: still no quitting.
     seen = false;
     whenLogInShows(
+        window.get(),
         [&](LoginDialog& d) {
             d.userCombo()->setCurrentIndex(d.userCombo()->findText(QStringLiteral("Ivan")));
             d.secretEdit()->setText(QStringLiteral("4711"));
@@ -230,6 +233,7 @@ TEST_F(SecurityGatesTest, KioskQuitByAnOperatorAsksForAnEngineerAndAWrongPasswor
     // The engineer's password: the terminal quits.
     seen = false;
     whenLogInShows(
+        window.get(),
         [&](LoginDialog& d) {
             d.userCombo()->setCurrentIndex(d.userCombo()->findText(QStringLiteral("Olga")));
             d.secretEdit()->setText(QStringLiteral("engineer's secret"));
