@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -92,6 +93,10 @@ double optionalNumber(const QJsonObject& object, const QString& key, double fall
 
 QJsonValue finiteOrNull(double v) {
     return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
+}
+
+QJsonValue limitOrNull(double limit) {
+    return limit == std::numeric_limits<double>::infinity() ? QJsonValue(QJsonValue::Null) : QJsonValue(limit);
 }
 
 }  // namespace tt::config

@@ -29,4 +29,8 @@ double optionalNumber(const QJsonObject& object, const QString& key, double fall
 /// `v` as a JSON number, or null when it is NaN or infinite (JSON has no such numbers).
 QJsonValue finiteOrNull(double v);
 
+/// A limit in JSON output: null when there is none (+infinity: an absent `max_correction_mm`, unlimited),
+/// else the value. A NaN stays a NaN, so the output's check still refuses it as a fault.
+QJsonValue limitOrNull(double limit);
+
 }  // namespace tt::config

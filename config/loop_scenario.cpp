@@ -9,6 +9,7 @@
 #include "config/lathe_config.h"
 #include "config/plant_config.h"
 #include "config/preset_library.h"
+#include "config/preset_merge.h"
 #include "config/profile_model_config.h"
 #include "config/robust_config.h"
 #include "core/quality/iso286.h"
@@ -28,7 +29,8 @@ std::string chainText(const QStringList& chain) {
     return chain.join(QStringLiteral(" -> ")).toStdString();
 }
 
-/// `preset` (loaded as chain.back()) with the sections of its based_on chain merged in; refuses a
+/// `preset` (loaded as chain.back()) merged over its based_on chain (mergePreset: objects key by key, arrays
+/// and values replace, null removes); refuses a
 /// cycle and a chain of more than kMaxBasedOnDepth links, naming the chain.
 QJsonObject withBase(const QJsonObject& preset, QStringList& chain, QStringList& identities) {
     const QJsonValue base = preset.value(QStringLiteral("based_on"));
@@ -43,10 +45,7 @@ QJsonObject withBase(const QJsonObject& preset, QStringList& chain, QStringList&
                                     std::to_string(kMaxBasedOnDepth) + " levels");
     identities << presetIdentity(baseName);
     const QJsonObject parent = withBase(PresetLibrary::load(baseName), chain, identities);
-    QJsonObject merged = preset;
-    for (auto it = parent.begin(); it != parent.end(); ++it)
-        if (!merged.contains(it.key())) merged.insert(it.key(), it.value());
-    return merged;
+    return mergePreset(parent, preset);
 }
 
 /// One tolerance entry: {"fit": "h9"} (ISO 286 shaft class) or {"upper_mm": 0.0, "lower_mm": -0.052}

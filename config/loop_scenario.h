@@ -14,7 +14,8 @@ namespace tt::config {
 /// without it the statistical plant is the machine), the systematic model for the feed-forward
 /// ("systematic_model", optional) and the loop's own settings:
 ///
-///   "based_on": "paper-2012",          sections this preset does not have come from that preset
+///   "based_on": "paper-2012",          merged under this preset (config/preset_merge.h): objects key by key at
+///                                      every depth, an array or a value replaces the base's, null removes
 ///   "loop": {"nominal_diameter_mm", "part_length_mm", "plausible_range_mm": 0.5, "path_step_mm": 0.5,
 ///            "interpolation": "pchip" | "spline", "gauge_timeout_s": 600, "tolerance_mm": 0.03,
 ///            "tolerance": {"fit": "h9"} | {"upper_mm": 0.0, "lower_mm": -0.052} | [one per control point],
@@ -25,7 +26,7 @@ namespace tt::config {
 ///   simulated plant only): config/robust_config.h.
 struct LoopScenario : core::ShaftScenario {
     QString preset;    ///< name or path it was loaded from
-    QJsonObject json;  ///< the preset with the sections of its base merged in
+    QJsonObject json;  ///< the preset merged over its based_on chain: what runs (`simulate --dump-preset`)
 };
 
 /// The most based_on links from a preset to the end of its chain; a longer chain, or one that comes

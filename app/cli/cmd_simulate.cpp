@@ -17,6 +17,7 @@
 #include "app/cli/simulate_checks.h"
 #include "app/cli/simulate_output.h"
 #include "app/cli/simulate_request.h"
+#include "app/cli/simulate_verdicts.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "runtime/run/stored_runs.h"
@@ -60,6 +61,9 @@ void addSimulateOptions(CommandParser& parser) {
                      QStringLiteral("Run this run request (JSON, the format --dump-request prints and the Run page "
                                     "stores) instead of the run options."),
                      QStringLiteral("file"));
+    parser.addOption(QStringLiteral("dump-preset"),
+                     QStringLiteral("Print the set-up that would run (the preset merged over its based_on chain, "
+                                    "with the request's tuning and plant applied) as JSON, and run nothing."));
     parser.addOption(QStringLiteral("dump-request"),
                      QStringLiteral("Print the run request the options (or --request, or the run --resume continues) "
                                     "make, as JSON, and run nothing."));
@@ -158,7 +162,7 @@ int runStudy(const CommandParser& parser, const Invocation& run, core::HistorySt
         scenario, run.request.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
     if (!study) return kExitInterrupted;
     if (parser.json())
-        printJson(simulateJson(*study, scenario, profile, database, run.request.warmupParts));
+        printJson(simulateJson(*study, scenario, profile, database));
     else
         printSimulateText(run.request.preset, *study, run.request.seed, profile);
     return kExitOk;
@@ -179,10 +183,17 @@ int run(const QStringList& arguments) {
     if (resume && !database) throw UsageError("--resume: needs --db, the history of the run to continue");
     resumeRunId(parser);  // --run without --resume, or a bad number, is refused before anything is opened
     StudyHistory history;
-    if (database && (!parser.isSet(QStringLiteral("dump-request")) || resume)) history = openHistory(*database, resume);
+    if (parser.isSet(QStringLiteral("dump-preset")) && database && !resume)
+        throw UsageError("--dump-preset: prints the set-up and runs nothing; leave --db out");
+    const bool dumps = parser.isSet(QStringLiteral("dump-request")) || parser.isSet(QStringLiteral("dump-preset"));
+    if (database && (!dumps || resume)) history = openHistory(*database, resume);
     const Invocation run = invocationOf(parser, database, history.store.get());
     if (parser.isSet(QStringLiteral("dump-request"))) {
         printJson(runtime::toJson(run.request));
+        return kExitOk;
+    }
+    if (parser.isSet(QStringLiteral("dump-preset"))) {
+        printJson(presetDump(runtime::scenarioOf(run.request)));
         return kExitOk;
     }
     return runStudy(parser, run, history.store.get());

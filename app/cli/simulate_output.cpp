@@ -6,16 +6,12 @@
 
 #include "app/cli/command_parser.h"
 #include "app/cli/simulate_checks.h"
+#include "app/cli/simulate_verdicts.h"
 #include "config/json_eigen.h"
 
 namespace tt::cli {
 
 namespace {
-
-/// A correction limit, or null when there is none (unlimited).
-QJsonValue limitJson(double limitMm) {
-    return std::isfinite(limitMm) ? QJsonValue(limitMm) : QJsonValue();
-}
 
 QString g(double v, int precision = 4) {
     return std::isfinite(v) ? QString::number(v, 'g', precision) : QStringLiteral("n/a");
@@ -43,10 +39,8 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
                     {QStringLiteral("points"), points},
                     {QStringLiteral("k_eff"), config::finiteOrNull(r.kEff)}};
     if (r.ewmaWeight) out.insert(QStringLiteral("ewma_weight"), *r.ewmaWeight);
-    out.insert(QStringLiteral("verdicts"),
-               QJsonObject{{QStringLiteral("good"), static_cast<qint64>(r.verdicts.good)},
-                           {QStringLiteral("rework"), static_cast<qint64>(r.verdicts.rework)},
-                           {QStringLiteral("scrap"), static_cast<qint64>(r.verdicts.scrap)}});
+    out.insert(QStringLiteral("warmup_parts"), static_cast<qint64>(r.warmupParts));
+    out.insert(QStringLiteral("verdicts"), verdictsJson(r));
     out.insert(QStringLiteral("tolerance_alarms"), static_cast<qint64>(r.toleranceAlarms));
     if (profile) {
         QJsonArray rows;
@@ -94,11 +88,7 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
                   .arg(g(r.kEff, 3), g(r.kEffAnalytic, 3))
                   .arg(r.rejectedValues));
     if (!std::isfinite(r.kEff)) printLine(kEffUndefinedNote());
-    printLine(QStringLiteral("verdicts: %1 good, %2 rework, %3 scrap; %4 out-of-tolerance alarm(s)")
-                  .arg(r.verdicts.good)
-                  .arg(r.verdicts.rework)
-                  .arg(r.verdicts.scrap)
-                  .arg(r.toleranceAlarms));
+    printLine(verdictsText(r));
     if (!profile) return;
     printLine(
         QStringLiteral("Profile of parts %1 .. %2 (true diameter error):").arg(r.profileFromPart).arg(r.profileToPart));
@@ -152,11 +142,7 @@ void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const conf
                                   {QStringLiteral("held"), a.notice.cause == "hold"},
                                   {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}});
     out.insert(QStringLiteral("alarms"), alarms);
-    out.insert(QStringLiteral("corrections"),
-               QJsonObject{{QStringLiteral("max_abs_mm"), r.maxCorrectionMm},
-                           {QStringLiteral("max_step_mm"), r.maxCorrectionStepMm},
-                           {QStringLiteral("limit_abs_mm"), limitJson(scenario.control.limits.maxAbsMm)},
-                           {QStringLiteral("limit_step_mm"), limitJson(scenario.control.limits.maxStepMm)}});
+    out.insert(QStringLiteral("corrections"), correctionsJson(r, scenario.control.limits));
 }
 
 /// The step residual and the model alarms in the text output.
@@ -176,9 +162,8 @@ void printRobustText(const core::LatheStudyResult& r) {
 }  // namespace
 
 QJsonObject simulateJson(const core::LatheStudyResult& result, const config::LoopScenario& scenario, bool profile,
-                         const std::optional<QString>& database, std::int64_t warmupParts) {
+                         const std::optional<QString>& database) {
     QJsonObject out = toJson(result, profile, database);
-    out.insert(QStringLiteral("warmup_parts"), static_cast<qint64>(warmupParts));
     addRobustJson(out, result, scenario);
     return out;
 }

@@ -15,7 +15,7 @@ namespace tt::cli {
 /// The study as `simulate --json` prints it (with the profile when asked, the history and run when stored),
 /// including the plant, integral action, step residual, model alarms and corrections of the scenario run.
 QJsonObject simulateJson(const core::LatheStudyResult& result, const config::LoopScenario& scenario, bool profile,
-                         const std::optional<QString>& database, std::int64_t warmupParts);
+                         const std::optional<QString>& database);
 
 /// The study as `simulate` prints it without --json.
 void printSimulateText(const QString& preset, const core::LatheStudyResult& result, std::uint64_t seed, bool profile);

@@ -81,12 +81,13 @@ void addSetupOptions(CommandParser& parser) {
     parser.addOption(QStringLiteral("delay"),
                      QStringLiteral("Transport delay z in parts, 1..8 (default: the preset's)."), QStringLiteral("z"));
     parser.addOption(QStringLiteral("parts"),
-                     QStringLiteral("Parts counted in the statistics, 100..10000000 (default 20000); the warm-up "
-                                    "parts are machined, stored and judged before them."),
+                     QStringLiteral("Parts counted in the statistics (k_eff, variances), 100..10000000 (default "
+                                    "20000); the warm-up parts are machined before them."),
                      QStringLiteral("n"), QStringLiteral("20000"));
     parser.addOption(QStringLiteral("warmup"),
-                     QStringLiteral("Parts machined, stored and judged first but not counted in k_eff, 0..1000000 "
-                                    "(default 100)."),
+                     QStringLiteral("Parts machined first, 0..1000000 (default 100): measured, stored and judged like "
+                                    "every part (the verdicts count them, their share apart) but not counted in the "
+                                    "statistics. --parts 150 machines 250 parts."),
                      QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));

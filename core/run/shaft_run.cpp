@@ -18,8 +18,8 @@ namespace {
 class PartCollector final : public LoopListener {
 public:
     PartCollector(SimulatedLathe& lathe, LatheRunRecord& record, const std::vector<double>& profileZ,
-                  LoopListener* next)
-        : m_shop(lathe.shop()), m_record(record), m_profileZ(profileZ), m_next(next) {}
+                  LoopListener* next, std::int64_t warmupParts)
+        : m_shop(lathe.shop()), m_record(record), m_profileZ(profileZ), m_next(next), m_warmupParts(warmupParts) {}
 
     void onLoopEvent(const LoopEvent& event) override {
         if (event.kind == LoopEvent::Kind::PartFinished && !m_shop.station().machinedParts().empty())
@@ -28,7 +28,10 @@ public:
             for (const PointMeasurementRecord& p : event.measurement->points)
                 if (!p.accepted && p.measuredMm) ++m_record.rejectedValues;
         if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
-            if (const auto verdict = event.measurement->verdict()) m_record.verdicts.add(*verdict);
+            if (const auto verdict = event.measurement->verdict()) {
+                m_record.verdicts.add(*verdict);
+                if (event.partNumber <= m_warmupParts) m_record.warmupVerdicts.add(*verdict);
+            }
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == "out-of-tolerance") ++m_record.toleranceAlarms;
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == kModelMismatchAlarm)
             m_record.modelAlarms.push_back({event.partNumber, event.alarmKind, event.notice});
@@ -72,6 +75,7 @@ private:
     LatheRunRecord& m_record;
     const std::vector<double>& m_profileZ;
     LoopListener* m_next;
+    std::int64_t m_warmupParts;
     std::vector<double> m_previous;  // the last corrections sent, per point
 };
 
@@ -86,7 +90,7 @@ LatheRunRecord runLatheLoop(LatheRunSpec spec) {
                                     std::to_string(kMaxRunParts + kMaxWarmupParts) + " parts");
     SimulatedLathe lathe(spec.scenario.shopSpec(spec.seed));
     LatheRunRecord record;
-    PartCollector collector(lathe, record, spec.profileZMm, spec.listener);
+    PartCollector collector(lathe, record, spec.profileZMm, spec.listener, spec.warmupParts);
 
     const std::unique_ptr<LoopEngine> engine = buildShaftRun(spec.scenario, spec.plan, lathe, spec.history);
     engine->setListener(&collector);

@@ -28,6 +28,7 @@ struct LatheRunSpec {
     std::optional<ResumePoint> resume;        ///< continue this stored run instead of starting one
     double speed = 0.0;                       ///< 0: as fast as possible; else simulated s per wall s
     LoopListener* listener = nullptr;         ///< also receives the engine's events
+    std::int64_t warmupParts = 0;             ///< the first parts, whose verdicts are also counted apart
     std::vector<double> profileZMm;           ///< where to sample each finished part's true profile
     const std::atomic<bool>* stop = nullptr;  ///< when set: finish the part on the machine and stop (resumable)
 };
@@ -49,6 +50,7 @@ struct LatheRunRecord {
     std::vector<bool> seen;                           ///< per part: finished (or re-created after a resume)
     std::int64_t rejectedValues = 0;                  ///< measured values the loop or the controller rejected
     VerdictCounts verdicts;                           ///< measured parts by tolerance verdict (this session)
+    VerdictCounts warmupVerdicts;                     ///< of them, parts 1 .. LatheRunSpec::warmupParts
     std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
     std::vector<RecordedAlarm> modelAlarms;           ///< the mismatch monitor's alarms ("model-mismatch")
     double maxCorrectionMm = 0.0;                     ///< largest |correction| sent to the CNC, radial mm

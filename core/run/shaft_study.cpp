@@ -61,6 +61,7 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
         spec.description = options.description;
         spec.resume = options.resume;
         spec.speed = options.speed;
+        spec.warmupParts = options.warmupParts;
     }
     spec.stop = options.stop;
     ProgressRelay relay(options.progress, stored ? "closed loop" : "open-loop reference",
@@ -111,6 +112,7 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.controller = options.controller;
     result.delay = closedPlan.plant.delay;
     result.parts = options.parts;
+    result.warmupParts = options.warmupParts;
     if (options.controller == ControllerKind::Ewma || options.controller == ControllerKind::Dewma)
         result.ewmaWeight = closedPlan.ewmaWeight;
     // The disturbance as modelled, without the controller's integrating state (integral action).
@@ -127,6 +129,7 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.outcome = closed.outcome;
     result.rejectedValues = closed.rejectedValues;
     result.verdicts = closed.verdicts;
+    result.warmupVerdicts = closed.warmupVerdicts;
     result.toleranceAlarms = closed.toleranceAlarms;
     result.modelAlarms = closed.modelAlarms;
     result.maxCorrectionMm = closed.maxCorrectionMm;

@@ -77,13 +77,15 @@ inline constexpr int kStepAveragedParts = 20;
 struct LatheStudyResult {
     ControllerKind controller = ControllerKind::Lqg;
     int delay = 1;
-    std::int64_t parts = 0;
+    std::int64_t parts = 0;        ///< counted in the statistics (LatheStudyOptions::parts)
+    std::int64_t warmupParts = 0;  ///< machined, measured and judged before them, not counted in the statistics
     std::optional<double> ewmaWeight;
     std::vector<LatheStudyPoint> points;
     double kEff = 0.0;          ///< sum open / sum closed; NaN when either is below 1e-12 mm² (no variation)
     double kEffAnalytic = 0.0;  ///< NaN when unavailable
     std::int64_t rejectedValues = 0;
     VerdictCounts verdicts;            ///< the closed run's measured parts by tolerance verdict (warm-up included)
+    VerdictCounts warmupVerdicts;      ///< the warm-up's share of `verdicts`
     std::int64_t toleranceAlarms = 0;  ///< its out-of-tolerance alarms
     /// Profile of the closed run's parts: mean and standard deviation of the true diameter error at
     /// profileZMm over parts [profileFromPart, profileToPart] (after the first 2z + 5, the loop's start-up).

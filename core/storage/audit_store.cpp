@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/auth/access_guard.h"
+#include "core/storage/audit_chain.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
 
@@ -54,6 +55,9 @@ SchemaModule auditSchema() {
                                          "NULL)"));
                                      db.exec(QStringLiteral("CREATE INDEX audit_changed_at ON audit (changed_at)"));
                                  }});
+    module.migrations.push_back(
+        {2, QStringLiteral("hash chain of the audit trail; no UPDATE or DELETE of audit rows on PostgreSQL"),
+         addAuditChain});
     return module;
 }
 
@@ -74,11 +78,19 @@ AuditRecord AuditStore::record(const AuditChange& change, const QString& who, co
     if (r.changedBy.isEmpty()) throw std::invalid_argument("an audit record needs the name of who changed it");
     r.change.before = bounded(r.change.before.isNull() ? QStringLiteral("") : r.change.before);
     r.change.after = bounded(r.change.after.isNull() ? QStringLiteral("") : r.change.after);
-    QSqlQuery q = m_db.exec(QStringLiteral("INSERT INTO audit (changed_at, changed_by, role, category, subject, field,"
-                                           " old_value, new_value) VALUES (?, ?, ?, ?, ?, ?, ?, ?)"),
-                            {r.changedAt, r.changedBy, r.role.isNull() ? QStringLiteral("") : r.role, r.change.category,
-                             bounded(r.change.subject), bounded(r.change.field), r.change.before, r.change.after});
-    r.id = m_db.lastInsertId(q);
+    r.role = r.role.isNull() ? QStringLiteral("") : r.role;
+    r.change.subject = bounded(r.change.subject);
+    r.change.field = bounded(r.change.field);
+    AuditChainRow row;
+    row.changedAt = r.changedAt;
+    row.changedBy = r.changedBy;
+    row.role = r.role;
+    row.category = r.change.category;
+    row.subject = r.change.subject;
+    row.field = r.change.field;
+    row.oldValue = r.change.before;
+    row.newValue = r.change.after;
+    r.id = appendAuditRow(m_db, row);
     return r;
 }
 
@@ -168,6 +180,11 @@ std::vector<AuditRecord> AuditStore::query(const AuditFilter& filter) {
     });
     if (out.size() > static_cast<std::size_t>(filter.limit)) out.resize(static_cast<std::size_t>(filter.limit));
     return out;
+}
+
+AuditChainState AuditStore::verifyChain() {
+    if (m_access) m_access->require(core::auth::Permission::ViewAudit);
+    return verifyAuditChain(m_db);
 }
 
 QString auditCsv(const std::vector<AuditRecord>& records) {

@@ -3,6 +3,7 @@
 #include <QString>
 #include <vector>
 
+#include "core/storage/audit_chain.h"
 #include "core/storage/database.h"
 
 namespace tt::core::auth {
@@ -14,7 +15,8 @@ namespace tt::storage {
 /// The schema module "audit": the audit trail of every change of a setting, a user, the controller
 /// tuning or anything else without its own record (audit: when, who, role, category, subject, field,
 /// old, new). Tool changes (tool_audit) and calibrations (probe_tables, kp_calibrations) keep their own
-/// records and are read into the same trail (AuditStore::query).
+/// records and are read into the same trail (AuditStore::query). Version 2 chains the rows of `audit` by
+/// their hashes (core/storage/audit_chain.h).
 SchemaModule auditSchema();
 
 /// Categories of the audit trail.
@@ -68,12 +70,14 @@ public:
     /// (ignoring `who`); null = not access-controlled. The guard must outlive the store.
     void setAccess(const core::auth::AccessGuard* access) { m_access = access; }
 
-    /// Writes one change now. Throws std::invalid_argument for an empty category, subject, field or
-    /// `who`, StorageError on a storage failure.
+    /// Writes one change now, as the next link of the hash chain (appendAuditRow). Throws
+    /// std::invalid_argument for an empty category, subject, field or `who`, StorageError on a storage failure.
     AuditRecord record(const AuditChange& change, const QString& who, const QString& role);
     /// The trail with the tool and calibration records folded in, newest first. Throws
     /// core::auth::PermissionDenied (guarded, no ViewAudit) or std::invalid_argument (limit out of range).
     std::vector<AuditRecord> query(const AuditFilter& filter = {});
+    /// The state of the audit table's hash chain (verifyAuditChain); needs ViewAudit when guarded.
+    AuditChainState verifyChain();
 
 private:
     void appendOwn(std::vector<AuditRecord>& out);

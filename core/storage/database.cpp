@@ -63,15 +63,30 @@ QString DatabaseConfig::describe() const {
 
 Database::Database(const DatabaseConfig& config)
     : m_config(config), m_connectionName(QStringLiteral("trueturn-") + QUuid::createUuid().toString()) {
-    if (config.kind == DatabaseConfig::Kind::Sqlite)
-        openSqlite();
-    else
-        openPostgres();
-    ensureVersionTable();
+    const bool sqlite = config.kind == DatabaseConfig::Kind::Sqlite;
+    const std::optional<SqliteSideFiles> sideFiles =
+        sqlite ? std::optional<SqliteSideFiles>(SqliteSideFiles(config.sqlitePath)) : std::nullopt;
+    try {
+        if (sqlite)
+            openSqlite();
+        else
+            openPostgres();
+        ensureVersionTable();
+    } catch (...) {
+        // The destructor does not run for a constructor that throws: close here, or the connection stays
+        // open until the process ends and SQLite never removes the side files it made beside a refused file.
+        closeConnection();
+        if (sideFiles) sideFiles->removeCreated();
+        throw;
+    }
     qCInfo(lcStorage).noquote() << "opened" << config.describe();
 }
 
 Database::~Database() {
+    closeConnection();
+}
+
+void Database::closeConnection() {
     {
         QSqlDatabase db = QSqlDatabase::database(m_connectionName, false);
         if (db.isOpen()) db.close();

@@ -95,6 +95,7 @@ public:
     void transaction(const std::function<void()>& work);
 
 private:
+    void closeConnection();
     void openSqlite();
     void openPostgres();
     void configureSqlite();

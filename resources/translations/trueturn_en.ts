@@ -2150,6 +2150,47 @@
         <source>user %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>Hash chain intact: %n row(s) checked.</source>
+        <translation>
+            <numerusform>Hash chain intact: %n row checked.</numerusform>
+            <numerusform>Hash chain intact: %n rows checked.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>row %1 edited</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>row %1 inserted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the chain&apos;s head does not match its last row</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) deleted before row %1</source>
+        <translation>
+            <numerusform>%n row deleted before row %1</numerusform>
+            <numerusform>%n rows deleted before row %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) deleted at the end</source>
+        <translation>
+            <numerusform>%n row deleted at the end</numerusform>
+            <numerusform>%n rows deleted at the end</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Hash chain BROKEN: the trail was changed outside TrueTurn (%1).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hash chain not checked: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::BoringPanel</name>

@@ -2155,6 +2155,50 @@
         <source>user %1</source>
         <translation>пользователь %1</translation>
     </message>
+    <message numerus="yes">
+        <source>Hash chain intact: %n row(s) checked.</source>
+        <translation>
+            <numerusform>Цепочка хешей цела: проверена %n строка.</numerusform>
+            <numerusform>Цепочка хешей цела: проверены %n строки.</numerusform>
+            <numerusform>Цепочка хешей цела: проверено %n строк.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>row %1 edited</source>
+        <translation>строка %1 изменена</translation>
+    </message>
+    <message>
+        <source>row %1 inserted</source>
+        <translation>строка %1 вставлена</translation>
+    </message>
+    <message>
+        <source>the chain&apos;s head does not match its last row</source>
+        <translation>голова цепочки не совпадает с её последней строкой</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) deleted before row %1</source>
+        <translation>
+            <numerusform>%n строка удалена перед строкой %1</numerusform>
+            <numerusform>%n строки удалены перед строкой %1</numerusform>
+            <numerusform>%n строк удалено перед строкой %1</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) deleted at the end</source>
+        <translation>
+            <numerusform>%n строка удалена в конце</numerusform>
+            <numerusform>%n строки удалены в конце</numerusform>
+            <numerusform>%n строк удалено в конце</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Hash chain BROKEN: the trail was changed outside TrueTurn (%1).</source>
+        <translation>Цепочка хешей НАРУШЕНА: журнал изменён в обход TrueTurn (%1).</translation>
+    </message>
+    <message>
+        <source>Hash chain not checked: %1</source>
+        <translation>Цепочка хешей не проверена: %1</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::BoringPanel</name>

@@ -5,6 +5,7 @@
 #include <QProcess>
 #include <QString>
 #include <QStringList>
+#include "tests/support/patient_wait.h"
 
 namespace tt::test {
 
@@ -20,7 +21,7 @@ struct CliResult {
 
 /// Runs `trueturn args...` headless (no display) and waits up to `timeoutMs`. `extraEnv` is
 /// added to the environment (e.g. QT_QPA_PLATFORM=offscreen to start the GUI).
-inline CliResult runTrueturn(const QStringList& args, int timeoutMs = 120000,
+inline CliResult runTrueturn(const QStringList& args, int timeoutMs = kPatientWaitMs,
                              const QProcessEnvironment& extraEnv = QProcessEnvironment()) {
     QProcess process;
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();

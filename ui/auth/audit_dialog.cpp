@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QStringList>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -60,7 +61,8 @@ AuditDialog::AuditDialog(AppContext& context, QWidget* parent)
       m_category(new QComboBox(this)),
       m_text(new QLineEdit(this)),
       m_table(new QTableWidget(this)),
-      m_status(new QLabel(this)) {
+      m_status(new QLabel(this)),
+      m_chain(new QLabel(this)) {
     setWindowTitle(tr("Audit trail"));
     m_category->setObjectName(QStringLiteral("auditCategory"));
     m_category->addItem(tr("All changes"), QString());
@@ -81,6 +83,8 @@ AuditDialog::AuditDialog(AppContext& context, QWidget* parent)
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_status->setObjectName(QStringLiteral("auditStatus"));
     m_status->setWordWrap(true);
+    m_chain->setObjectName(QStringLiteral("auditChain"));
+    m_chain->setWordWrap(true);
 
     auto* exportButton = new QPushButton(tr("Export CSV…"), this);
     exportButton->setObjectName(QStringLiteral("auditExport"));
@@ -97,6 +101,7 @@ AuditDialog::AuditDialog(AppContext& context, QWidget* parent)
     layout->setContentsMargins(24, 18, 24, 18);
     layout->addLayout(filters);
     layout->addWidget(m_table, 1);
+    layout->addWidget(m_chain);
     layout->addLayout(buttons);
     resize(1240, 720);
 
@@ -105,10 +110,53 @@ AuditDialog::AuditDialog(AppContext& context, QWidget* parent)
     connect(exportButton, &QPushButton::clicked, this, &AuditDialog::exportCsv);
     connect(close, &QPushButton::clicked, this, &QDialog::accept);
     reload();
+    showChain();  // once: the chain is the whole table's, not the filter's
 }
 
 QString AuditDialog::statusText() const {
     return m_status->text();
+}
+
+QString AuditDialog::chainText() const {
+    return m_chain->text();
+}
+
+QString AuditDialog::describeChain(const storage::AuditChainState& state) {
+    using Kind = storage::AuditChainProblem::Kind;
+    if (state.intact()) return tr("Hash chain intact: %n row(s) checked.", "", static_cast<int>(state.rows));
+    QStringList clauses;
+    for (const storage::AuditChainProblem& p : state.problems) {
+        if (clauses.size() == 3) {
+            clauses << QStringLiteral("…");
+            break;
+        }
+        if (p.kind == Kind::Edited) clauses << tr("row %1 edited").arg(p.rowId);
+        if (p.kind == Kind::Inserted) clauses << tr("row %1 inserted").arg(p.rowId);
+        if (p.kind == Kind::Head) clauses << tr("the chain's head does not match its last row");
+        if (p.kind == Kind::Deleted && p.rowId)
+            clauses << tr("%n row(s) deleted before row %1", "", static_cast<int>(p.missingRows)).arg(p.rowId);
+        if (p.kind == Kind::Deleted && !p.rowId)
+            clauses << tr("%n row(s) deleted at the end", "", static_cast<int>(p.missingRows));
+    }
+    return tr("Hash chain BROKEN: the trail was changed outside TrueTurn (%1).")
+        .arg(clauses.join(QStringLiteral("; ")));
+}
+
+void AuditDialog::showChain() {
+    storage::AuditStore* audit = m_context.data().audit();
+    m_chainIntact = false;
+    if (!audit) {
+        m_chain->clear();
+        return;
+    }
+    try {
+        const storage::AuditChainState state = audit->verifyChain();
+        m_chainIntact = state.intact();
+        m_chain->setText(describeChain(state));
+    } catch (const std::exception& e) {
+        m_chain->setText(tr("Hash chain not checked: %1").arg(QString::fromStdString(e.what())));
+    }
+    m_chain->setStyleSheet(m_chainIntact ? QString() : QStringLiteral("color: #b00020; font-weight: bold;"));
 }
 
 void AuditDialog::reload() {

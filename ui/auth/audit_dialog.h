@@ -15,7 +15,8 @@ namespace tt::ui {
 struct AppContext;
 
 /// The audit trail: every change of a setting, calibration, tool, user or the controller with when,
-/// who, role, old and new value; filtered by category and text; exported as CSV.
+/// who, role, old and new value; filtered by category and text; exported as CSV. A line above the buttons
+/// shows the state of the trail's hash chain (intact, or which rows were edited, deleted or inserted).
 class AuditDialog : public QDialog {
     Q_OBJECT
 public:
@@ -31,16 +32,27 @@ public:
     QTableWidget* table() const { return m_table; }
     /// The status line (how many records, a refusal, a write failure).
     QString statusText() const;
+    /// The line on the hash chain ("Hash chain intact: 12 rows checked" or what was changed).
+    QString chainText() const;
+    /// Whether the last check found the chain intact.
+    bool chainIntact() const { return m_chainIntact; }
+
+    /// The chain's state in the user's language (one clause per problem, at most three named).
+    static QString describeChain(const storage::AuditChainState& state);
 
     /// Translated name of an audit category ("Tool").
     static QString categoryName(const QString& category);
 
 private:
+    void showChain();
+
     AppContext& m_context;
     QComboBox* m_category;
     QLineEdit* m_text;
     QTableWidget* m_table;
     QLabel* m_status;
+    QLabel* m_chain;
+    bool m_chainIntact = false;
     std::vector<storage::AuditRecord> m_records;
 };
 

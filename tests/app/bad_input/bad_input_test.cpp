@@ -7,6 +7,7 @@
 #include <QProcessEnvironment>
 
 #include "cli_test.h"
+#include "tests/support/patient_wait.h"
 
 // Bad input through the real binary (issue 17, "Bad input"): every case used to crash, hang or
 // answer wrongly with exit 0; each must now be refused with exit 2 and one line naming the limit.
@@ -65,7 +66,7 @@ TEST_F(BadInput, AResumedRunWhosePresetBecameACycleIsRefused) {
     ASSERT_EQ(first.exitCode, 0) << qPrintable(first.err);
     QProcess sqlite;  // an interrupted run: the history says it is still running
     sqlite.start(QStringLiteral("sqlite3"), {db, QStringLiteral("UPDATE runs SET status = 'running'")});
-    ASSERT_TRUE(sqlite.waitForFinished(30000));
+    ASSERT_TRUE(sqlite.waitForFinished(tt::test::kPatientWaitMs));
     ASSERT_EQ(sqlite.exitCode(), 0);
     presetBasedOn(QStringLiteral("resumed.json"), preset);
     expectRefused({QStringLiteral("simulate"), QStringLiteral("--resume"), QStringLiteral("--db"), db},
@@ -178,7 +179,7 @@ TEST_F(BadInput, JsonToAFullDiskIsAFailure) {
         QProcess process;
         process.setStandardOutputFile(QStringLiteral("/dev/full"));
         process.start(QStringLiteral(TRUETURN_EXE), args);
-        ASSERT_TRUE(process.waitForFinished(60000));
+        ASSERT_TRUE(process.waitForFinished(tt::test::kPatientWaitMs));
         EXPECT_EQ(process.exitCode(), 1) << qPrintable(args.join(' '));
         EXPECT_TRUE(
             QString::fromUtf8(process.readAllStandardError()).contains(QStringLiteral("cannot write the output")));

@@ -7,6 +7,7 @@
 #include <QProcess>
 
 #include "cli_test.h"
+#include "tests/support/patient_wait.h"
 
 // The history file when someone else has it (issue 17, item 4): a second writer waits for the busy
 // timeout and then names the process that holds the lock; a read-only folder is reported as
@@ -34,7 +35,7 @@ protected:
                       QStringList{QStringLiteral("--reuid=65534"), QStringLiteral("--regid=65534"),
                                   QStringLiteral("--clear-groups"), QStringLiteral(TRUETURN_EXE)} +
                           args);
-        process.waitForFinished(120000);
+        process.waitForFinished(tt::test::kPatientWaitMs);
         return {process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1,
                 QString::fromUtf8(process.readAllStandardOutput()), QString::fromUtf8(process.readAllStandardError())};
     }
@@ -49,7 +50,7 @@ TEST_F(DatabaseAccess, ASecondWriterWaitsAndThenNamesTheProcessHoldingTheLock) {
     ASSERT_TRUE(holder.waitForStarted());
     holder.write("BEGIN IMMEDIATE;\nSELECT 'held';\n");
     QByteArray answer;
-    while (!answer.contains("held") && holder.waitForReadyRead(10000))
+    while (!answer.contains("held") && holder.waitForReadyRead(tt::test::kPatientWaitMs))
         answer += holder.readAllStandardOutput();
     ASSERT_TRUE(answer.contains("held"));
 
@@ -61,7 +62,7 @@ TEST_F(DatabaseAccess, ASecondWriterWaitsAndThenNamesTheProcessHoldingTheLock) {
     EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0) << qPrintable(r.err);
 
     holder.closeWriteChannel();  // the shell ends, its transaction is rolled back
-    ASSERT_TRUE(holder.waitForFinished(30000));
+    ASSERT_TRUE(holder.waitForFinished(tt::test::kPatientWaitMs));
     EXPECT_EQ(runTrueturn(simulate(db)).exitCode, 0);
 }
 

@@ -7,6 +7,7 @@
 #include <csignal>
 
 #include "cli_test.h"
+#include "tests/support/patient_wait.h"
 
 // Bad input to a simulated run (issue 17, items 2 and 4): its pacing speed, a resumed run's stored parts,
 // which run --resume continues, and Ctrl-C in the middle of a stored run.
@@ -23,7 +24,7 @@ protected:
     static QString sql(const QString& db, const QString& statement) {
         QProcess sqlite;
         sqlite.start(QStringLiteral("sqlite3"), {db, statement});
-        EXPECT_TRUE(sqlite.waitForFinished(30000));
+        EXPECT_TRUE(sqlite.waitForFinished(tt::test::kPatientWaitMs));
         EXPECT_EQ(sqlite.exitCode(), 0) << qPrintable(QString::fromUtf8(sqlite.readAllStandardError()));
         return QString::fromUtf8(sqlite.readAllStandardOutput()).trimmed();
     }
@@ -106,7 +107,7 @@ TEST_F(RunControl, CtrlCStopsAfterAPartAndTheRunResumesWithEveryPartOnce) {
     QThread::msleep(300);  // a few more parts
     ASSERT_EQ(process.state(), QProcess::Running) << "the run ended before it could be interrupted";
     ASSERT_EQ(::kill(static_cast<pid_t>(process.processId()), SIGINT), 0);
-    ASSERT_TRUE(process.waitForFinished(60000));
+    ASSERT_TRUE(process.waitForFinished(tt::test::kPatientWaitMs));
     err += process.readAllStandardError();
     EXPECT_EQ(process.exitStatus(), QProcess::NormalExit);
     EXPECT_EQ(process.exitCode(), 130) << err.constData();
@@ -150,7 +151,7 @@ TEST_F(RunControl, CtrlCStopsCornerTrainingWithProgressAndWritesNothing) {
     ASSERT_EQ(process.state(), QProcess::Running) << "the training ended before it could be interrupted";
     EXPECT_TRUE(err.contains(" of 2000 (")) << err.constData();
     ASSERT_EQ(::kill(static_cast<pid_t>(process.processId()), SIGINT), 0);
-    ASSERT_TRUE(process.waitForFinished(60000));
+    ASSERT_TRUE(process.waitForFinished(tt::test::kPatientWaitMs));
     err += process.readAllStandardError();
     EXPECT_EQ(process.exitStatus(), QProcess::NormalExit);
     EXPECT_EQ(process.exitCode(), 130) << err.constData();

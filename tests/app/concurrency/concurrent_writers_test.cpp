@@ -14,6 +14,7 @@
 #include "../../storage/scratch_database.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
+#include "tests/support/patient_wait.h"
 
 namespace tt {
 namespace {
@@ -41,7 +42,7 @@ void runWriters(const QString& dbOption, const storage::DatabaseConfig& config) 
         writers.push_back(std::move(p));
     }
     for (auto& p : writers)
-        p->waitForFinished(300000);
+        p->waitForFinished(tt::test::kPatientWaitMs);
     std::vector<qint64> runIds;
     for (auto& p : writers) {
         ASSERT_EQ(p->state(), QProcess::NotRunning);

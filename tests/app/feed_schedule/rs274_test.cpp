@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli_test.h"
+#include "tests/support/patient_wait.h"
 
 namespace {
 
@@ -43,7 +44,7 @@ Interpreted interpret(const QString& program, const QString& toolTable) {
     QProcess p;
     p.start(rs274, {QStringLiteral("-t"), toolTable, QStringLiteral("-g"), program});
     p.closeWriteChannel();
-    p.waitForFinished(60000);
+    p.waitForFinished(tt::test::kPatientWaitMs);
     r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
     r.out = QString::fromUtf8(p.readAllStandardOutput());
     r.err = QString::fromUtf8(p.readAllStandardError());

@@ -17,6 +17,7 @@
 
 #include "cli_test.h"
 #include "core/storage/database.h"
+#include "tests/support/patient_wait.h"
 
 namespace tt {
 namespace {
@@ -31,7 +32,7 @@ QString poppler(const QString& tool, const QStringList& args) {
     if (program.isEmpty()) return {};
     QProcess p;
     p.start(program, args);
-    EXPECT_TRUE(p.waitForFinished(60000));
+    EXPECT_TRUE(p.waitForFinished(tt::test::kPatientWaitMs));
     EXPECT_EQ(p.exitCode(), 0) << qPrintable(QString::fromUtf8(p.readAllStandardError()));
     return QString::fromUtf8(p.readAllStandardOutput());
 }

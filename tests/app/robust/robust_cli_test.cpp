@@ -19,7 +19,7 @@ using test::CliResult;
 using test::runTrueturn;
 
 QJsonObject runJson(const QStringList& args) {
-    const CliResult r = runTrueturn(args, 600000);
+    const CliResult r = runTrueturn(args, test::kPatientWaitMs);
     EXPECT_EQ(r.exitCode, 0) << qPrintable(args.join(' ')) << "\n" << qPrintable(r.err);
     return r.json();
 }
@@ -47,18 +47,31 @@ TEST(RobustCli, IntegralActionRemovesAStep) {
     }
 }
 
-// Paper 000, Table 2 (k_eff = 10.02, 4.23, 2.84, 2.25; this product's calibrated figures 10.00, 4.23, 2.85,
-// 2.24 with integral action off, the README's table) is unchanged, the matching plant raises no mismatch
-// alarm in 20,000 parts, and integral action costs at most 15 % of k_eff (issue 13).
-TEST(RobustCli, TableTwoHoldsAndIntegralActionCostsLittle) {
-    constexpr double kTable2[] = {10.00, 4.23, 2.85, 2.24};
+// Paper 000, Table 2 (k_eff = 10.02, 4.23, 2.84, 2.25 for z = 1..4), checked against its sources with the
+// tolerances they justify:
+// - the design model's analytic k_eff (closed-loop Lyapunov equation: no sampling error) within 1.2 % of the
+//   paper, which prints two decimals; the paper-2012 calibration reaches it within 1.0 % (docs/DECISIONS.md,
+//   "paper-2012 calibration": 10.01, 4.24, 2.85, 2.23);
+// - the simulated k_eff (20 000 parts) within 6 % of the analytic one: three standard deviations of the
+//   Monte-Carlo k_eff, measured over seeds 1..12 at 1.8 % (z = 2..4) and 1.6 % (z = 1, 11 seeds: seed 10 is
+//   left out, where a false mismatch alarm at part 15 froze the correction).
+// The matching plant raises no mismatch alarm in these runs, and integral action costs at most 15 % of k_eff
+// (issue 13). Besides, a REGRESSION CHECK (not a validation): seed 1's k_eff pinned to +-0.006 at this build's
+// 10.00, 4.23, 2.85, 2.24 (the README's table), so a change of the simulator shows and the README is re-measured.
+TEST(RobustCli, TableTwoHoldsAgainstThePaperAndTheAnalyticValueAndIntegralActionCostsLittle) {
+    constexpr double kPaperTable2[] = {10.02, 4.23, 2.84, 2.25};
+    constexpr double kSeedOneRegression[] = {10.00, 4.23, 2.85, 2.24};
     for (int z = 1; z <= 4; ++z) {
         const QJsonObject off = runJson(simulate(z, {"--parts", "20000", "--controller", "lqg"}));
         const QJsonObject on = runJson(simulate(z, {"--parts", "20000", "--controller", "lqg", "--integral", "on"}));
-        EXPECT_NEAR(off.value("k_eff").toDouble(), kTable2[z - 1], 0.006) << "z = " << z;
+        const double analytic = off.value("points").toArray().first().toObject().value("k_eff_analytic").toDouble();
+        const double simulated = off.value("k_eff").toDouble();
+        EXPECT_NEAR(analytic, kPaperTable2[z - 1], 0.012 * kPaperTable2[z - 1]) << "z = " << z;
+        EXPECT_NEAR(simulated, analytic, 0.06 * analytic) << "z = " << z;
+        EXPECT_NEAR(simulated, kSeedOneRegression[z - 1], 0.006) << "regression check, z = " << z;
         EXPECT_TRUE(off.value("alarms").toArray().isEmpty()) << "z = " << z;
         EXPECT_TRUE(on.value("alarms").toArray().isEmpty()) << "z = " << z;
-        EXPECT_GE(on.value("k_eff").toDouble(), 0.85 * off.value("k_eff").toDouble()) << "z = " << z;
+        EXPECT_GE(on.value("k_eff").toDouble(), 0.85 * simulated) << "z = " << z;
     }
 }
 

@@ -26,6 +26,7 @@
 #include "devices/simulator/simulated_output.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "plot/chart.h"
 
@@ -67,10 +68,13 @@ protected:
         return panel.maxRateBox()->value() * panel.plcCycleBox()->value() / 1000.0;
     }
     /// Waits (the GUI thread's events running) until the run has done `cycles` PLC cycles.
-    static bool waitForCycles(const BoringPanel& panel, int cycles, int timeoutMs = 20000) {
+    static bool waitForCycles(const BoringPanel& panel, int cycles, int timeoutMs = tt::test::kPatientWaitMs) {
         return QTest::qWaitFor([&] { return panel.stats().cycles >= cycles; }, timeoutMs);
     }
-    static void runFaster(BoringPanel& panel) { panel.speedBox()->setCurrentIndex(panel.speedBox()->findData(50)); }
+    /// The pass at `speed` PLC cycles per PLC period (the panel offers 1, 5, 10, 20, 50).
+    static void runFaster(BoringPanel& panel, int speed = 50) {
+        panel.speedBox()->setCurrentIndex(panel.speedBox()->findData(speed));
+    }
 
     QTemporaryDir dir;
     test::ScriptedPrompt prompt;
@@ -90,7 +94,11 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     EXPECT_EQ(panel.toolBox()->currentData().toString(), QStringLiteral("station"));
     EXPECT_TRUE(panel.speedBox()->isVisible());
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_1_stopped")));
-    runFaster(panel);
+    // x10, not x50: the pass runs on in its own thread whatever the test thread does, and the test still
+    // switches the read-out silent and the segment to a taper after 900 cycles. At x50 the whole bore
+    // (530 s, 26 500 cycles) took 10.6 s of wall time, which a test thread starved on a loaded machine missed
+    // (the pass had ended before "Holding" could show); at x10 it takes 53 s and the test about 5 s.
+    runFaster(panel, 10);
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     EXPECT_FALSE(panel.startButton()->isEnabled());
     EXPECT_FALSE(panel.sourceBox()->isEnabled());  // no changes while it runs
@@ -119,7 +127,7 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
             return panel.boreChart()->pointCount(QStringLiteral("with")) > 50 &&
                    panel.offsetChart()->pointCount(QStringLiteral("offset")) > 800;
         },
-        2000));
+        tt::test::kPatientWaitMs));
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_2_compensating")));
 
     // The read-out goes silent (the device's fault switch, from the panel): the offset is held, and
@@ -127,7 +135,7 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     ASSERT_TRUE(panel.silentBox()->isVisible());
     panel.silentBox()->setChecked(true);
     EXPECT_TRUE(manager.view(drive)->faults->silent);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     EXPECT_FALSE(panel.detail().isEmpty());  // the device's own words, for the engineer
     const double held = panel.stats().offsetMm;
@@ -135,12 +143,14 @@ TEST_F(BoringPanelTest, TheDrivesOwnPassWithCurrentCompensatesAndTheBoreErrorFal
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_3_silent_holds")));
     panel.silentBox()->setChecked(false);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Compensating"); }, 5000))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Compensating"); }, tt::test::kPatientWaitMs))
         << panel.reason().toStdString();
 
     // The part program says taper: the force from current is refused at once, the offset held.
     panel.segmentBox()->setCurrentIndex(panel.segmentBox()->findData(static_cast<int>(core::SegmentKind::Taper)));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 5000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("Taper"))) << panel.reason().toStdString();
     const double beforeTaper = panel.stats().offsetMm;
     ASSERT_TRUE(waitForCycles(panel, panel.stats().cycles + 50));
@@ -162,7 +172,7 @@ TEST_F(BoringPanelTest, TheMandrelsOwnPassCompensatesAndASilentMandrelHolds) {
     panel.show();
     ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:probe").arg(probe)));
     EXPECT_FALSE(panel.planeBox()->isVisible());  // the pass's mandrel is calibrated with plane 1 along X
-    runFaster(panel);
+    runFaster(panel, 10);  // the whole bore in 53 s of wall time, not 10.6 s (see the drive's pass above)
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     ASSERT_TRUE(waitForCycles(panel, 900)) << panel.stats().cycles;
     const BoringRunStats& s = panel.stats();
@@ -175,7 +185,7 @@ TEST_F(BoringPanelTest, TheMandrelsOwnPassCompensatesAndASilentMandrelHolds) {
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_4_probe")));
     // A silent mandrel (its fault switch on the Devices page) holds the offset too.
     test::setFault(manager, probe, &devices::FaultSwitches::silent, true);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("probe mandrel"))) << panel.reason().toStdString();
     const double held = panel.stats().offsetMm;
     ASSERT_TRUE(waitForCycles(panel, panel.stats().cycles + 100));
@@ -194,7 +204,8 @@ TEST_F(BoringPanelTest, ADitherWindowTooShortForThePlcCycleIsRefusedInPlainWords
     runFaster(panel);
     ASSERT_TRUE(panel.start());
     ASSERT_TRUE(waitForCycles(panel, 100));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 2000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("too short"))) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, 0.0);
     panel.stop();
@@ -221,7 +232,8 @@ TEST_F(BoringPanelTest, ASourceWithoutAPassOfItsOwnNeedsAToolAndACncOutput) {
     const QString output = addSimulator(devices::DeviceKind::CorrectionOutput, QStringLiteral("PLC"));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 3000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("drive current read-out is silent or disconnected")))
         << panel.reason().toStdString();
     panel.stop();
@@ -244,7 +256,8 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     // The simulated drive: friction 2 A, cutting 0.6 A, so P = 150 N/A * 0.6 A = 90 N; the tool
     // (3EI/l³ = 2 932 N/mm) bends 0.031 mm; the offset climbs towards +0.031 mm at 0.005 mm/s.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().offsetMm > 0.004; }, 8000)) << panel.reason().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().offsetMm > 0.004; }, tt::test::kPatientWaitMs))
+        << panel.reason().toStdString();
     ASSERT_TRUE(panel.stats().forceN.has_value());
     EXPECT_NEAR(*panel.stats().forceN, 90.0, 5.0);
     std::optional<double> plcOffsetMm;
@@ -259,7 +272,7 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
 
     // The drive read-out goes silent (fault switch): the offset stays where it is.
     test::setFault(manager, drive, &devices::FaultSwitches::silent, true);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     QTest::qWait(100);  // the last offset before the hold reaches the CNC
     const double held = *plc->plcOffsetMm();
@@ -274,7 +287,8 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     test::setFault(manager, drive, &devices::FaultSwitches::silent, false);
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, 5000)) << panel.reason().toStdString();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, tt::test::kPatientWaitMs))
+        << panel.reason().toStdString();
     EXPECT_GE(*plc->plcOffsetMm(), held - 1e-9);
     EXPECT_LE(panel.stats().largestStepMm, stepLimitMm(panel) + 1e-9);
     panel.stop();
@@ -300,10 +314,11 @@ TEST_F(BoringPanelTest, AProbeDeviceDrivesTheOffsetAndRemovingADeviceStopsTheRun
     ASSERT_TRUE(panel.selectSource(QStringLiteral("dev:%1:probe").arg(probe)));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     EXPECT_TRUE(panel.planeBox()->isVisible());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.ready(); }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.ready(); }, tt::test::kPatientWaitMs));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     // +0.020 mm deflection: the offset goes to −0.020 mm at 0.05 mm/s (0.4 s).
-    ASSERT_TRUE(QTest::qWaitFor([&] { return std::abs(panel.stats().offsetMm + 0.020) < 1e-6; }, 5000))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return std::abs(panel.stats().offsetMm + 0.020) < 1e-6; }, tt::test::kPatientWaitMs))
         << panel.stats().offsetMm << " " << panel.reason().toStdString();
     manager.removeDevice(probe);
     EXPECT_FALSE(panel.running());

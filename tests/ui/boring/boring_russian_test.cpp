@@ -15,6 +15,7 @@
 #include "english_words.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "hub_faults.h"
@@ -47,13 +48,14 @@ protected:
         if (!panel || !panel->selectSource(sourceKey)) return {QStringLiteral("no source ") + sourceKey};
         panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
         EXPECT_TRUE(panel->start()) << panel->reason().toStdString();
-        EXPECT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 900; }, 20000));
+        EXPECT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 900; }, tt::test::kPatientWaitMs));
         EXPECT_EQ(panel->headline(), QStringLiteral("Компенсация")) << panel->reason().toStdString();
         // The source goes silent (its fault switch): the offset is held, and the tab says why, with
         // the device's own words underneath.
         test::setFault(devices, device, &devices::FaultSwitches::silent, true);
         EXPECT_TRUE(QTest::qWaitFor(
-            [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); }, 5000))
+            [&] { return panel->headline() == QStringLiteral("Удержание") && !panel->detail().isEmpty(); },
+            tt::test::kPatientWaitMs))
             << panel->reason().toStdString();
         QTest::qWait(150);  // the plots and numbers of the last cycles
         EXPECT_TRUE(panel->reason().contains(reasonWords)) << panel->reason().toStdString();

@@ -12,6 +12,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/boring/boring_panel.h"
 #include "ui/language.h"
@@ -53,7 +54,8 @@ TEST(RunPageBoringTab, TheSecondTabRunsTheSimulatorsOwnPassInTheMainWindow) {
     panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
     // 30 s of the pass: the tool 25 mm into the bore.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, 20000)) << panel->stats().cycles;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, tt::test::kPatientWaitMs))
+        << panel->stats().cycles;
     EXPECT_EQ(panel->headline(), QStringLiteral("Compensating"));
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("boring_run_page_tab")));
     panel->stop();

@@ -31,6 +31,7 @@
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "stand_devices.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/kp_wizard.h"
@@ -435,11 +436,12 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
     std::unique_ptr<devices::Device> device =
         plugin.create(devices::DeviceKind::Probe, {}, devices::DeviceContext{&clock});
     device->open();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return device->health().ready(); }, 3000)) << device->health().message;
+    ASSERT_TRUE(QTest::qWaitFor([&] { return device->health().ready(); }, tt::test::kPatientWaitMs))
+        << device->health().message;
     DeviceCalibrationProbe probe(*device, QStringLiteral("Mandrel on the simulator"), 12);
     ASSERT_TRUE(probe.canUpload());
     EXPECT_TRUE(probe.hasJack());
-    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.port().takeSample().has_value(); }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.port().takeSample().has_value(); }, tt::test::kPatientWaitMs));
     // A 12-bit table (8 226 bytes), opaque to the device.
     std::vector<core::CalibrationPoint> points;
     for (int i = 0; i <= 20; ++i) {
@@ -452,8 +454,8 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
     const std::vector<std::uint8_t> image = core::encodeTableImage(lin.table, info);
     const std::uint32_t crc = core::tableUploadCrc(image);
     probe.startUpload(image, 4, crc);
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return probe.uploadStatus().phase == core::UploadLinkStatus::Phase::Done; }, 10000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.uploadStatus().phase == core::UploadLinkStatus::Phase::Done; },
+                                tt::test::kPatientWaitMs))
         << probe.uploadStatus().message;
     probe.requestReadback();
     ASSERT_TRUE(probe.readback().has_value());

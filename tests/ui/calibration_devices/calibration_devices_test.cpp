@@ -25,6 +25,7 @@
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/devices/support/mandrel_on_pty.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/kp_wizard.h"
@@ -78,7 +79,8 @@ TEST_F(CalibrationDevicesTest, OffersTheDevicesProbesAndDrivesAndFollowsTheirCha
     EXPECT_EQ(names(page.offeredProbes()), (QStringList{QStringLiteral("Mandrel A")}));
     EXPECT_EQ(names(page.offeredDrives()), (QStringList{QStringLiteral("Cross feed X")}));
     // The simulator's mandrel says it has a 16-bit ADC (DEVICE_INFO of probe protocol 2).
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page.offeredProbes()[0]->adcBits().has_value(); }, 3000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return page.offeredProbes()[0]->adcBits().has_value(); }, tt::test::kPatientWaitMs));
     EXPECT_EQ(page.offeredProbes()[0]->adcBits(), 16);
     EXPECT_TRUE(page.offeredProbes()[0]->hasJack());  // the simulator's stand
     EXPECT_TRUE(page.offeredDrives()[0]->hasJack());
@@ -140,7 +142,7 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
         loads->setLoadN(load);  // and measures: the procedure lets it settle for a second, then
         ASSERT_TRUE(loads->startMeasurement()) << loads->message().toStdString();  // averages 12 strokes
         // The read-out runs in real time; the page's timer takes its samples.
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !loads->measuring(); }, 15000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !loads->measuring(); }, tt::test::kPatientWaitMs));
         ASSERT_TRUE(loads->message().contains(QStringLiteral("stroke pairs"))) << loads->message().toStdString();
     }
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_devices_kp_loads")));
@@ -169,7 +171,8 @@ TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableTo
     ASSERT_EQ(page.offeredProbes().size(), 1u);
     DeviceCalibrationProbe* mandrel = page.offeredProbes()[0];
     EXPECT_FALSE(mandrel->hasJack());  // a mandrel on a machine: the operator loads the bar
-    ASSERT_TRUE(QTest::qWaitFor([&] { return mandrel->port().health().ready() && mandrel->adcBits(); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return mandrel->port().health().ready() && mandrel->adcBits(); },
+                                tt::test::kPatientWaitMs));
     EXPECT_EQ(mandrel->adcBits(), 16);
     EXPECT_EQ(mandrel->imageFormat(), core::kTableImageFormat);
 
@@ -188,7 +191,7 @@ TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableTo
         cp->setReferenceUm(um);
         ASSERT_TRUE(cp->capturePoint()) << cp->message().toStdString();
         // Hold still, then 50 samples at 200 samples/s; the page's timer takes them.
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !cp->capturing(); }, 5000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !cp->capturing(); }, tt::test::kPatientWaitMs));
         ASSERT_TRUE(cp->message().startsWith(QStringLiteral("Point"))) << cp->message().toStdString();
     }
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("calibration_devices_probe_2_capture")));
@@ -204,8 +207,8 @@ TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableTo
     ASSERT_EQ(page.probeSession().saved->image.size(), 131104);  // format 2, 2^16 entries
     ASSERT_TRUE(sp->upload());
     auto* result = sp->findChild<QLabel*>(QStringLiteral("saveResult"));
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return sp->isComplete() || result->text().contains(QStringLiteral("failed")); }, 60000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return sp->isComplete() || result->text().contains(QStringLiteral("failed")); },
+                                tt::test::kPatientWaitMs))
         << result->text().toStdString();
     EXPECT_TRUE(result->text().contains(QStringLiteral("Verified"))) << result->text().toStdString();
     EXPECT_TRUE(result->text().contains(QStringLiteral("CRC-32C"))) << result->text().toStdString();

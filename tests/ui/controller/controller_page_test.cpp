@@ -23,6 +23,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
@@ -39,7 +40,7 @@ protected:
 
     /// Waits until the page shows the result of the worker's newest request.
     static bool waitForNewest(ControllerPage& page) {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(tt::test::kPatientWaitMs);
         while (std::chrono::steady_clock::now() < deadline) {
             QTest::qWait(10);
             const TuningResult* shown = page.shownResult();
@@ -175,7 +176,7 @@ TEST_F(ControllerPageTest, IntegralActionChangesThePredictionToTheCoresValueAndI
 
 /// Waits until the page's identification finished.
 bool waitForIdentification(const ControllerPage& page) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(tt::test::kPatientWaitMs);
     while (std::chrono::steady_clock::now() < deadline) {
         QTest::qWait(20);
         if (!page.identifying()) return true;
@@ -211,7 +212,7 @@ TEST_F(ControllerPageTest, IdentifyFromHistoryTypesTheFitOfAStoredRun) {
             {QStringLiteral("simulate"), QStringLiteral("--db"), context.databasePath, QStringLiteral("--parts"),
              QStringLiteral("600"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--delay"),
              QStringLiteral("1"), QStringLiteral("--seed"), QStringLiteral("1")});
-        ASSERT_TRUE(simulate.waitForFinished(120000));
+        ASSERT_TRUE(simulate.waitForFinished(tt::test::kPatientWaitMs));
         ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
         window.showPage(PageId::Run);
         window.showPage(PageId::Controller);

@@ -18,6 +18,7 @@
 
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/pages/process_page.h"
 #include "plot/chart.h"
@@ -34,7 +35,7 @@ constexpr int kHeight = 600;
 class CornerToolTest : public ::testing::Test {
 protected:
     /// Waits for the running job to end (training 40 moves: under a second on one core).
-    static bool waitForJob(CornerTool& tool, int timeoutMs = 60000) {
+    static bool waitForJob(CornerTool& tool, int timeoutMs = tt::test::kPatientWaitMs) {
         return QTest::qWaitFor([&] { return !tool.busy(); }, timeoutMs);
     }
 

@@ -20,6 +20,7 @@
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/devices/support/pty_pair.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/devices/settings_form.h"
 #include "ui/language.h"
@@ -113,7 +114,8 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     typeInto(child<QLineEdit>(p, QStringLiteral("deviceName")), QStringLiteral("Micrometer at the lathe"));
     EXPECT_TRUE(apply->isEnabled());
     child<QPushButton>(p, QStringLiteral("testConnection"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); }, 5000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); },
+                                tt::test::kPatientWaitMs))
         << result->text().toStdString();
     EXPECT_EQ(result->text(), QStringLiteral("Connected — 26.812 mm"));
     EXPECT_EQ(micrometer.readingsSent(), 1);
@@ -122,15 +124,18 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     apply->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
     const QString id = manager.deviceIds().front();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, 3000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs))
         << manager.view(id)->health.message;
     EXPECT_EQ(manager.view(id)->name, QStringLiteral("Micrometer at the lathe"));
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 1 ready"));
     manager.requestReading(id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->liveValue == QStringLiteral("26.812 mm"); }, 3000));
-    QTest::qWait(600);  // the page refreshes its counters twice a second
-    EXPECT_EQ(child<QLabel>(p, QStringLiteral("LiveValue"))->text(), QStringLiteral("26.812 mm"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->liveValue == QStringLiteral("26.812 mm"); }, tt::test::kPatientWaitMs));
+    // The page refreshes its counters twice a second.
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] { return child<QLabel>(p, QStringLiteral("LiveValue"))->text() == QStringLiteral("26.812 mm"); },
+        tt::test::kPatientWaitMs))
+        << child<QLabel>(p, QStringLiteral("LiveValue"))->text().toStdString();
     {
         QSettings settings;
         EXPECT_EQ(settings.value(QStringLiteral("devices/instances/size")).toInt(), 1);
@@ -142,7 +147,7 @@ TEST_F(DevicesPageTest, AddsASerialGaugeThroughTheFormAndTestsItsConnection) {
     // Unplugged: the device, the list and the status bar show the error.
     pty.releaseSlave();
     pty.unplug();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(state.deviceSummary().startsWith(QStringLiteral("Micrometer at the lathe: the gauge on")))
         << state.deviceSummary().toStdString();
     QTest::qWait(600);
@@ -157,7 +162,7 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     child<QPushButton>(p, QStringLiteral("applyDevice"))->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
     const QString probe = manager.deviceIds().front();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.state == core::DeviceState::Ready; }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(probe)->health.state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs));
 
     // Unapplied edits are undone by Revert.
     QWidget* rate = p.form().editor(QStringLiteral("rateHz"));
@@ -174,11 +179,11 @@ TEST_F(DevicesPageTest, SimulatorFaultSwitchesRevertAndRemove) {
     ASSERT_NE(unplug, nullptr);
     ASSERT_TRUE(unplug->isVisible());
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Fault; }, tt::test::kPatientWaitMs));
     QTest::qWait(600);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("devices_simulator_unplugged")));
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Ok; }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return state.deviceTone() == AppState::Tone::Ok; }, tt::test::kPatientWaitMs));
 
     // Remove asks first.
     prompt.answers.push_back(Prompt::Answer::No);
@@ -199,7 +204,7 @@ TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
     child<QPushButton>(p, QStringLiteral("applyDevice"))->click();
     ASSERT_EQ(manager.deviceIds().size(), 1);
     const QString gauge = manager.deviceIds().front();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(gauge)->health.state == core::DeviceState::Ready; }, 3000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(gauge)->health.state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs));
     auto* result = child<QLabel>(p, QStringLiteral("TestResult"));
     auto* test = child<QPushButton>(p, QStringLiteral("testConnection"));
 
@@ -218,7 +223,7 @@ TEST_F(DevicesPageTest, ATestReadingOfTheGaugeWaitsUntilTheRunIsStopped) {
     state.setLoop(AppState::Loop::Idle, QString());
     test->click();
     EXPECT_FALSE(result->text().contains(QStringLiteral("Stop the run first")));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return test->isEnabled(); }, 6000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return test->isEnabled(); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(result->text().startsWith(QStringLiteral("Connected"))) << result->text().toStdString();
 }
 

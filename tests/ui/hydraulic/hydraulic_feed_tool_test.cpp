@@ -18,6 +18,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -49,7 +50,7 @@ protected:
 
     /// Waits for the worker thread's job (the GUI stays responsive meanwhile).
     void waitIdle() {
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !tool->busy(); }, 60000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !tool->busy(); }, tt::test::kPatientWaitMs));
     }
 
     void click(const char* name) {

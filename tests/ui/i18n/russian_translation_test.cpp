@@ -30,6 +30,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/language.h"
@@ -285,7 +286,7 @@ TEST_F(RussianWindow, EveryPageAndBothRunTabsAreRussianAndNothingIsCutOff) {
             return manager.view(manager.devicesOfKind(devices::DeviceKind::Gauge).value(0))->health.message ==
                    "симулятор микрометра готов";
         },
-        3000));
+        tt::test::kPatientWaitMs));
 
     const QSet<QString> english = englishTexts();
     QStringList problems;

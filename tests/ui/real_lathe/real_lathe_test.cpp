@@ -38,6 +38,7 @@
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/devices/support/pty_pair.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -61,7 +62,7 @@ constexpr double kNominalMm = 27.0;   // paper-2012-group1 (and the G-code outpu
 constexpr double kToolSetMm = 0.030;  // the test lathe's tool is set 0.030 mm large on diameter
 const std::vector<double> kPointsMm{0.0, 27.5, 162.5, 262.5, 325.0};  // the preset's control points
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs = 10000) {
+bool waitFor(const std::function<bool()>& done, int timeoutMs = tt::test::kPatientWaitMs) {
     QElapsedTimer timer;
     timer.start();
     while (!done()) {
@@ -257,7 +258,7 @@ TEST_F(RealLatheTest, DevicesDriveTheLoopAndAnUnpluggedGaugePausesItWithTheCorre
 
     // Plugged in again: the loop continues by itself, takes part 4's diameters and writes part 5.
     pty.plug();
-    ASSERT_TRUE(waitFor([&] { return manager.view(gaugeId)->health.ready(); }, 8000))
+    ASSERT_TRUE(waitFor([&] { return manager.view(gaugeId)->health.ready(); }, tt::test::kPatientWaitMs))
         << manager.view(gaugeId)->health.message;
     pty.releaseSlave();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Running; }))

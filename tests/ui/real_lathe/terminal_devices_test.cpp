@@ -12,6 +12,7 @@
 
 #include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/devices/terminal_devices.h"
 #include "ui/language.h"
@@ -48,7 +49,7 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
             ASSERT_EQ(ofKind.size(), 1) << devices::kindKey(kind).toStdString();
             const devices::DeviceEntry* e = m.entry(ofKind.front());
             EXPECT_EQ(e->pluginId, QStringLiteral("simulator"));
-            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, 5000))
+            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, tt::test::kPatientWaitMs))
                 << "opened: " << e->device->health().message;
         }
         EXPECT_EQ(m.entry(m.devicesOfKind(devices::DeviceKind::Gauge).front())->name,
@@ -65,7 +66,7 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         expected.removeAt(1);  // the probe
         EXPECT_EQ(devices.hub().deviceIds(), expected);
         for (const QString& id : devices.hub().deviceIds())
-            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.hub().view(id)->health.ready(); }, 5000));
+            EXPECT_TRUE(QTest::qWaitFor([&] { return devices.hub().view(id)->health.ready(); }, tt::test::kPatientWaitMs));
         for (const QString& id : devices.hub().deviceIds())
             devices.hub().removeDevice(id);
     }
@@ -91,7 +92,7 @@ TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
     AppContext context{&prompt, &state, &language, QStringLiteral("/tmp/trueturn-test/history.sqlite"),
                        &devices.hub()};
     MainWindow window(context);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return devices.hub().summary().text == QStringLiteral("4 ready"); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return devices.hub().summary().text == QStringLiteral("4 ready"); }, tt::test::kPatientWaitMs));
     auto* devicesPage = static_cast<DevicesPage*>(window.page(PageId::Devices));
     EXPECT_EQ(&devicesPage->manager(), &devices.hub());
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);

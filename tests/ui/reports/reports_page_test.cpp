@@ -25,6 +25,7 @@
 #include "english_words.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -53,7 +54,7 @@ protected:
         simulate.start(QStringLiteral(TRUETURN_EXE),
                        {"simulate", "--preset", preset.fileName(), "--parts", "150", "--warmup", "0", "--seed", "11",
                         "--machine", "lathe-7", "--db", context.databasePath, "--json"});
-        ASSERT_TRUE(simulate.waitForFinished(120000));
+        ASSERT_TRUE(simulate.waitForFinished(tt::test::kPatientWaitMs));
         ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
@@ -83,7 +84,8 @@ protected:
         auto* page = qobject_cast<ReportsPage*>(window.page(PageId::Reports));
         EXPECT_NE(page, nullptr);
         if (!page) return nullptr;
-        EXPECT_TRUE(QTest::qWaitFor([&] { return !page->busy() && !page->views()->points().empty(); }, 60000))
+        EXPECT_TRUE(QTest::qWaitFor([&] { return !page->busy() && !page->views()->points().empty(); },
+                                    tt::test::kPatientWaitMs))
             << page->status()->text().toStdString();
         return page;
     }
@@ -92,7 +94,7 @@ protected:
         bool done = false;
         QObject::connect(page, &ReportsPage::analysed, page, [&] { done = true; });
         page->analyse();
-        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, 60000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, tt::test::kPatientWaitMs));
     }
 
     QTemporaryDir dir;
@@ -208,7 +210,7 @@ TEST_F(ReportsPageTest, ExportsPdfCsvAndDfq) {
                                                           : QStringLiteral("reportExportDfq"));
         ASSERT_NE(button, nullptr);
         button->click();
-        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, 60000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return done; }, tt::test::kPatientWaitMs));
         QFile file(path);
         ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << page->status()->text().toStdString();
         const QList<QByteArray> lines = file.readAll().split('\n');

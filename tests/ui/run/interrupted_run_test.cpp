@@ -13,6 +13,7 @@
 #include <functional>
 #include <set>
 
+#include "tests/support/patient_wait.h"
 #include "config/loop_scenario.h"
 #include "core/storage/data_stores.h"
 #include "core/storage/database.h"
@@ -99,7 +100,8 @@ TEST_F(InterruptedRunTest, StartOffersTheInterruptedRunAndYesContinuesItWithEver
     });
     prompt.answers.push_back(Prompt::Answer::Yes);
     ASSERT_TRUE(offerInterruptedRun(context, window));
-    ASSERT_TRUE(waitFor([&] { return context.data().history()->runs().front().status == "complete"; }, 120000))
+    ASSERT_TRUE(waitFor([&] { return context.data().history()->runs().front().status == "complete"; },
+                        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     ASSERT_FALSE(startedParts.empty());
     EXPECT_EQ(*startedParts.begin(), next) << "the first part machined after the resume";
@@ -180,15 +182,15 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
                     QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"), QStringLiteral("--parts"),
                     QStringLiteral("400"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--seed"),
                     QStringLiteral("3"), QStringLiteral("--speed"), QStringLiteral("3600")});
-    ASSERT_TRUE(simulate.waitForStarted(10000));
+    ASSERT_TRUE(simulate.waitForStarted(tt::test::kPatientWaitMs));
     ASSERT_TRUE(waitFor(
         [&] {
             const std::optional<InterruptedRun> run = findInterruptedRun(context);
             return run && run->point.lastPartNumber >= 5;
         },
-        60000));
+        tt::test::kPatientWaitMs));
     simulate.terminate();
-    ASSERT_TRUE(simulate.waitForFinished(30000));
+    ASSERT_TRUE(simulate.waitForFinished(tt::test::kPatientWaitMs));
     EXPECT_EQ(simulate.exitCode(), 130) << simulate.readAllStandardError().toStdString();
 
     const std::optional<runtime::InterruptedRun> found = findInterruptedRun(context);
@@ -209,10 +211,11 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
     EXPECT_TRUE(prompt.lastText.endsWith(
         QStringLiteral("of 400 parts done) was interrupted. Continue it from part %1?").arg(next)))
         << prompt.lastText.toStdString();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 5; }, 60000))
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 5; }, tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     page->session().stop();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 30000));
+    ASSERT_TRUE(
+        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
     ASSERT_FALSE(startedParts.empty());
     EXPECT_EQ(*startedParts.begin(), next);
     EXPECT_EQ(context.data().history()->runs().size(), 1u) << "the same run, no new one";

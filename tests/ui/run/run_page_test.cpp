@@ -22,6 +22,7 @@
 #include "run_window.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -56,10 +57,10 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
 
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 10; }, 60000))
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished >= 10; }, tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     EXPECT_EQ(state.loop(), AppState::Loop::Running);
-    EXPECT_TRUE(waitFor([&] { return page->profilePanel()->historyParts() >= 8; }, 10000));
+    EXPECT_TRUE(waitFor([&] { return page->profilePanel()->historyParts() >= 8; }, tt::test::kPatientWaitMs));
 
     // The plot has the data: measured points, the line between them, the simulated part, the model,
     // the correction path, the tolerance band; the history strip one series per control point.
@@ -78,8 +79,9 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
     // By hand: the simulated gauge stops; the part due waits for the operator.
     window.findChild<QCheckBox*>(QStringLiteral("manualEntryCheck"))->setChecked(true);
     ManualEntryPanel* manual = page->manualEntry();
-    ASSERT_TRUE(waitFor(
-        [&] { return page->session().snapshot().manualEntry && page->session().snapshot().awaitingPart; }, 30000));
+    ASSERT_TRUE(
+        waitFor([&] { return page->session().snapshot().manualEntry && page->session().snapshot().awaitingPart; },
+                tt::test::kPatientWaitMs));
     const qint64 part = *page->session().snapshot().awaitingPart;
     ASSERT_EQ(manual->fieldCount(), 5);
     const qint64 finishedBefore = page->session().snapshot().partsFinished;
@@ -103,7 +105,8 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
     EXPECT_TRUE(manual->field(0)->text().isEmpty()) << "sent: the fields are ready for the next part";
 
     // The loop takes the diameters, stores them and goes on with the next part.
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished > finishedBefore + 1; }, 30000))
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().partsFinished > finishedBefore + 1; },
+                        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_page_manual_done")));
 
@@ -120,7 +123,8 @@ TEST_F(RunPageTest, RunsTheLoopPlotsThePartsAndTakesDiametersByHand) {
     EXPECT_EQ(stored, (std::vector<double>{27.012, 27.015, 27.021, 27.009, 26.998}));
 
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 10000));
+    ASSERT_TRUE(
+        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
     EXPECT_EQ(state.loop(), AppState::Loop::Idle);
 }
 
@@ -130,16 +134,18 @@ TEST_F(RunPageTest, ASilentGaugePausesTheRunAndItContinuesWhenTheGaugeIsBack) {
     page.show();
     page.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return page.session().snapshot().partsFinished >= 3; }, 60000));
+    ASSERT_TRUE(waitFor([&] { return page.session().snapshot().partsFinished >= 3; }, tt::test::kPatientWaitMs));
     page.session().silenceGauge(4 * 3600.0);  // 4 simulated hours: about 4 s at x3600
-    ASSERT_TRUE(waitFor([&] { return page.session().snapshot().state == core::LoopState::Paused; }, 30000));
+    ASSERT_TRUE(
+        waitFor([&] { return page.session().snapshot().state == core::LoopState::Paused; }, tt::test::kPatientWaitMs));
     EXPECT_EQ(state.loop(), AppState::Loop::Paused);
     EXPECT_TRUE(
         page.findChild<QLabel*>(QStringLiteral("deviceText"))->text().contains(QStringLiteral("not answering")));
     EXPECT_TRUE(test::saveScreenshot(page, QStringLiteral("run_page_gauge_silent")));
-    ASSERT_TRUE(waitFor([&] { return page.session().snapshot().state == core::LoopState::Running; }, 60000));
+    ASSERT_TRUE(
+        waitFor([&] { return page.session().snapshot().state == core::LoopState::Running; }, tt::test::kPatientWaitMs));
     const qint64 done = page.session().snapshot().partsFinished;
-    EXPECT_TRUE(waitFor([&] { return page.session().snapshot().partsFinished > done; }, 30000));
+    EXPECT_TRUE(waitFor([&] { return page.session().snapshot().partsFinished > done; }, tt::test::kPatientWaitMs));
     page.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
 }
 
@@ -147,7 +153,7 @@ TEST_F(RunPageTest, AHistoryThatCannotBeOpenedRefusesToStartWithTheReason) {
     context.databasePath = dir.filePath(QStringLiteral("no/such/folder/history.sqlite"));
     RunPage page(context);
     page.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return page.alarms()->count() > 0; }, 10000));
+    ASSERT_TRUE(waitFor([&] { return page.alarms()->count() > 0; }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(page.alarms()->item(0)->text().contains(QStringLiteral("history cannot be opened")))
         << page.alarms()->item(0)->text().toStdString();
     EXPECT_TRUE(page.findChild<QPushButton*>(QStringLiteral("startButton"))->isEnabled());

@@ -19,6 +19,7 @@
 #include "run_window.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -64,7 +65,8 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
     ShaftRunPanel& shaft = page->shaft();
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().partsFinished >= 4; }, 30000))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return page->session().snapshot().partsFinished >= 4; }, tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
 
     // The simulated lathe's gauge goes silent (for longer than the test): the loop pauses when the
@@ -75,14 +77,15 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
             const core::NoticeKind k = page->session().snapshot().status.kind;
             return k == core::NoticeKind::NoDiameters || k == core::NoticeKind::GaugeNotReady;
         },
-        30000))
+        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     QTest::qWait(100);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("run_tab_ru_gauge_silent")));
     QStringList english = test::englishIn(&shaft, kData);
 
     page->session().stop();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 10000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
+                                tt::test::kPatientWaitMs));
 
     // A new run with the diameters typed by hand: a slipped decimal point is refused at once; a diameter
     // 0.49 mm off (inside the plausible window) goes to the loop, whose controller rejects it as an
@@ -97,13 +100,14 @@ TEST_F(RunTabInRussian, AGaugeFaultAndARejectedMeasurementShowNoEnglish) {
                 const runtime::LoopSnapshot& s = page->session().snapshot();
                 return s.manualEntry && s.awaitingPart && s.awaitingPart != typed && manual->field(0)->isEnabled();
             },
-            30000));
+            tt::test::kPatientWaitMs));
         typed = page->session().snapshot().awaitingPart;
         typeAndEnter(manual->field(0), QStringLiteral("2.7012"));
         EXPECT_TRUE(manual->field(0)->property("invalid").toBool());
         for (int i = 0; i < manual->fieldCount(); ++i)
             typeAndEnter(manual->field(i), i == 2 ? QStringLiteral("27.49") : QStringLiteral("27.000"));
-        const bool taken = QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart != typed; }, 30000);
+        const bool taken =
+            QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart != typed; }, tt::test::kPatientWaitMs);
         if (!taken) test::saveScreenshot(window, QStringLiteral("run_tab_ru_not_taken"));
         ASSERT_TRUE(taken) << core::describe(page->session().snapshot().status);
     }

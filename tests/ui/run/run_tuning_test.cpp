@@ -19,6 +19,7 @@
 #include "config/loop_scenario.h"
 #include "run_window.h"
 #include "screenshots.h"
+#include "tests/support/patient_wait.h"
 #include "ui/auth/user_session.h"
 #include "ui/controller/controller_tuning.h"
 #include "ui/controller/tuning_worker.h"
@@ -46,7 +47,7 @@ bool waitForNewest(ControllerPage& page) {
             const TuningResult* shown = page.shownResult();
             return shown && shown->generation == page.worker().latestGeneration();
         },
-        30000);
+        tt::test::kPatientWaitMs);
 }
 
 class RunTuningTest : public test::RunWindowTest {
@@ -72,7 +73,7 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
 
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return session.snapshot().partsFinished >= 6; }, 60000))
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().partsFinished >= 6; }, tt::test::kPatientWaitMs))
         << core::describe(session.snapshot().status);
 
     window.showPage(PageId::Controller);
@@ -90,9 +91,9 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     EXPECT_TRUE(controller->statusText().contains(QStringLiteral("running loop")))
         << controller->statusText().toStdString();
 
-    ASSERT_TRUE(waitFor([&] { return takenAt > 0; }, 30000)) << "the loop never took the new tuning";
+    ASSERT_TRUE(waitFor([&] { return takenAt > 0; }, tt::test::kPatientWaitMs)) << "the loop never took the new tuning";
     EXPECT_GE(takenAt, partBeforeApply) << "the switch is at a part not yet started when Apply was pressed";
-    ASSERT_TRUE(waitFor([&] { return started.count(takenAt + 12) == 1; }, 60000));
+    ASSERT_TRUE(waitFor([&] { return started.count(takenAt + 12) == 1; }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_applied_to_running_loop")));
 
     // Bumpless (LoopEngine::replaceController): at the first part of the new controller the loop asks for
@@ -120,7 +121,7 @@ TEST_F(RunTuningTest, AppliedTuningTakesOverTheRunningLoopAtAPartWithoutAJump) {
     // Stopped: a second Apply waits for the next Start, which carries it.
     window.showPage(PageId::Run);
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }, 30000));
+    ASSERT_TRUE(waitFor([&] { return session.snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
     window.showPage(PageId::Controller);
     controller->r1(0).field()->setValue(controller->appliedSetup().weights.R1(0, 0) * 2.0);
     ASSERT_TRUE(waitForNewest(*controller));
@@ -154,9 +155,10 @@ TEST_F(RunTuningTest, AQualityUserCannotStartTheMachine) {
 
     users.logIn({"Ivan", core::auth::Role::Operator}, 10);
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().partsFinished >= 1; }, 60000));
+    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().partsFinished >= 1; }, tt::test::kPatientWaitMs));
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().state == core::LoopState::Idle; }, 30000));
+    EXPECT_TRUE(waitFor([&] { return runPage->session().snapshot().state == core::LoopState::Idle; },
+                        tt::test::kPatientWaitMs));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "runtime/devices/device_hub.h"
 #include "terminal_window.h"
+#include "tests/support/patient_wait.h"
 #include "ui/boring/boring_panel.h"
 #include "ui/pages/run_page.h"
 
@@ -31,12 +32,14 @@ TEST_F(BoringHeader, TheHeaderSaysWhatTheCompensationDoes) {
     auto* status = window->findChild<QLabel*>(QStringLiteral("statusLoop"));
     ASSERT_TRUE(badge && status);
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Idle"));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(drive)->health.ready(); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(drive)->health.ready(); }, tt::test::kPatientWaitMs));
     ASSERT_TRUE(panel->selectSource(QStringLiteral("dev:%1:current").arg(drive)));
     panel->speedBox()->setCurrentIndex(panel->speedBox()->findData(50));
     ASSERT_TRUE(panel->start()) << panel->reason().toStdString();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, 20000)) << panel->stats().cycles;
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->headline() == QStringLiteral("Compensating"); }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel->stats().cycles >= 1500; }, tt::test::kPatientWaitMs))
+        << panel->stats().cycles;
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return panel->headline() == QStringLiteral("Compensating"); }, tt::test::kPatientWaitMs));
     QApplication::processEvents();
     EXPECT_EQ(state.loop(), AppState::Loop::Running);
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Running"));

@@ -14,6 +14,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "terminal_window.h"
+#include "tests/support/patient_wait.h"
 #include "ui/pages/devices_page.h"
 
 namespace tt::ui {
@@ -59,7 +60,7 @@ TEST_F(DeviceErrors, ARefusedModbusConnectionIsTheLastError) {
     auto window = openWindow();
     window->showPage(PageId::Devices);
     select(*window, id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, 15000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, tt::test::kPatientWaitMs))
         << manager.view(id)->health.message;
     QApplication::processEvents();
     auto* lastError = window->findChild<QLabel*>(QStringLiteral("LastError"));
@@ -77,18 +78,19 @@ TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
     window->showPage(PageId::Devices);
     auto* page = static_cast<DevicesPage*>(window->page(PageId::Devices));
     select(*window, id);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Ready; }, tt::test::kPatientWaitMs));
     window->findChild<QPushButton*>(QStringLiteral("testConnection"))->click();
     auto* result = window->findChild<QLabel*>(QStringLiteral("TestResult"));
     ASSERT_NE(result, nullptr);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); }, 10000))
+    ASSERT_TRUE(QTest::qWaitFor([&] { return result->text().startsWith(QStringLiteral("Connected")); },
+                                tt::test::kPatientWaitMs))
         << result->text().toStdString();
     QCheckBox* unplug = nullptr;
     for (QCheckBox* box : page->findChildren<QCheckBox*>())
         if (box->text() == QStringLiteral("Unplugged")) unplug = box;
     ASSERT_NE(unplug, nullptr);
     unplug->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, 5000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return manager.view(id)->health.state == core::DeviceState::Error; }, tt::test::kPatientWaitMs));
     QApplication::processEvents();
     for (const QString& text : visibleTexts(page))
         EXPECT_FALSE(text.startsWith(QStringLiteral("Connected"))) << text.toStdString();

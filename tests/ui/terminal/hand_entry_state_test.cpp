@@ -11,6 +11,7 @@
 #include <QTest>
 
 #include "terminal_window.h"
+#include "tests/support/patient_wait.h"
 #include "ui/pages/run_page.h"
 #include "runtime/run/run_session.h"
 
@@ -51,7 +52,8 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
     ASSERT_EQ(window->findChild<QComboBox*>(QStringLiteral("speedCombo"))->currentIndex(), 2) << "x360 by default";
     window->findChild<QCheckBox*>(QStringLiteral("manualEntryCheck"))->setChecked(true);
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart.has_value(); }, 30000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return page->session().snapshot().awaitingPart.has_value(); }, tt::test::kPatientWaitMs));
 
     // 6 s of wall time = 36 min at x360, ten times the old 3 s time-out: sampled every 20 ms.
     QStringList disagreements;
@@ -79,17 +81,20 @@ TEST_F(HandEntryState, TheHeaderAndTheAlarmsFollowTheLoopWhileItWaitsForThePerso
     EXPECT_EQ(pausedAlarms(page->alarms()), 0) << "no 'Paused' alarm while the loop waits for the person";
 
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Paused; }, 10000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Paused; },
+                                tt::test::kPatientWaitMs));
     for (int i = 0; i < 20; ++i) {
         sample("paused");
         QTest::qWait(20);
     }
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Paused"));
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();  // continue
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; }, 10000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; },
+                                tt::test::kPatientWaitMs));
     sample("continued");
     window->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 10000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
+                                tt::test::kPatientWaitMs));
     QApplication::processEvents();
     sample("stopped");
     EXPECT_EQ(badge->text(), QStringLiteral("Loop: Idle"));

@@ -8,6 +8,7 @@
 #include <QTest>
 
 #include "terminal_window.h"
+#include "tests/support/patient_wait.h"
 #include "ui/kiosk.h"
 #include "ui/pages/run_page.h"
 #include "ui/pages/tools_page.h"
@@ -67,7 +68,8 @@ TEST_F(QuitTerminal, ARunGoingAsksFirst) {
     auto* page = qobject_cast<RunPage*>(window->page(PageId::Run));
     ASSERT_NE(page, nullptr);
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; }, 30000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Running; },
+                                tt::test::kPatientWaitMs));
     prompt.answers = {Prompt::Answer::No};
     EXPECT_FALSE(window->close());
     EXPECT_EQ(prompt.log.value(0), QStringLiteral("ask: Quit TrueTurn?"));

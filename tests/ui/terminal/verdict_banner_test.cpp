@@ -11,6 +11,7 @@
 
 #include "screenshots.h"
 #include "terminal_window.h"
+#include "tests/support/patient_wait.h"
 #include "ui/pages/run_page.h"
 #include "runtime/run/run_session.h"
 #include "runtime/run/run_request.h"
@@ -60,8 +61,9 @@ TEST_F(VerdictBanner, TheLastScrapPartIsBigRedAndSoundsWhenTheSoundIsOn) {
     window->findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window->findChild<QCheckBox*>(QStringLiteral("pauseOnScrapCheck"))->setChecked(true);
     window->findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; }, 120000));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; },
+                        tt::test::kPatientWaitMs));
     QApplication::processEvents();
     EXPECT_EQ(banner->property("verdict").toString(), QStringLiteral("scrap"));
     EXPECT_TRUE(banner->text().contains(QStringLiteral("SCRAP"))) << banner->text().toStdString();
@@ -81,10 +83,11 @@ TEST_F(VerdictBanner, TheLastScrapPartIsBigRedAndSoundsWhenTheSoundIsOn) {
     const qsizetype badBefore = bad.count();
     window->findChild<QCheckBox*>(QStringLiteral("pauseOnScrapCheck"))->setChecked(false);
     window->findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();  // continue
-    ASSERT_TRUE(QTest::qWaitFor([&] { return bad.count() > badBefore; }, 120000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return bad.count() > badBefore; }, tt::test::kPatientWaitMs));
     EXPECT_EQ(sounded.count(), before);
     window->findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 30000));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; },
+                                tt::test::kPatientWaitMs));
     EXPECT_TRUE(QSettings().contains(kSoundOnOutOfTolerance));
     EXPECT_FALSE(QSettings().value(kSoundOnOutOfTolerance).toBool()) << "the setting is saved";
     sound->setChecked(true);

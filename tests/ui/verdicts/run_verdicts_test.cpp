@@ -16,6 +16,7 @@
 #include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -61,8 +62,8 @@ TEST_F(RunVerdictsTest, CountersYieldAlarmsAndThePauseOnTheFirstScrap) {
     window.findChild<QComboBox*>(QStringLiteral("speedCombo"))->setCurrentIndex(3);  // x3600
     window.findChild<QCheckBox*>(QStringLiteral("pauseOnScrapCheck"))->setChecked(true);
     window.findChild<QPushButton*>(QStringLiteral("startButton"))->click();
-    ASSERT_TRUE(
-        waitFor([&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; }, 120000))
+    ASSERT_TRUE(waitFor([&] { return page->session().snapshot().status.kind == core::NoticeKind::PausedOnScrap; },
+                        tt::test::kPatientWaitMs))
         << core::describe(page->session().snapshot().status);
     EXPECT_EQ(page->session().snapshot().state, core::LoopState::Paused);
     const auto* good = window.findChild<QLabel*>(QStringLiteral("verdictGood"));
@@ -85,9 +86,10 @@ TEST_F(RunVerdictsTest, CountersYieldAlarmsAndThePauseOnTheFirstScrap) {
     QTest::qWait(500);
     EXPECT_EQ(page->session().snapshot().nextPart, next);
     window.findChild<QPushButton*>(QStringLiteral("pauseButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return page->session().snapshot().nextPart > next; }, 30000));
+    EXPECT_TRUE(waitFor([&] { return page->session().snapshot().nextPart > next; }, tt::test::kPatientWaitMs));
     window.findChild<QPushButton*>(QStringLiteral("stopButton"))->click();
-    EXPECT_TRUE(waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, 10000));
+    EXPECT_TRUE(
+        waitFor([&] { return page->session().snapshot().state == core::LoopState::Idle; }, tt::test::kPatientWaitMs));
 }
 
 }  // namespace
