@@ -330,8 +330,7 @@ int runScheduleFeed(const QStringList& arguments) {
     const core::FeedScheduleRequest request = readRequest(parser);
     const devices::GCodeDialect dialect = devices::gcodeDialectFromName(
         parser.choice(QStringLiteral("dialect"), {QStringLiteral("fanuc"), QStringLiteral("linuxcnc")}).toStdString());
-    Outcome o;
-    o.model = loadModel(modelPath);
+    Outcome o{{}, loadModel(modelPath), {}, {}, {}, 0};
     if (!o.model.job)
         throw UsageError(QStringLiteral("%1 has no machine job (spindle speed, coolant, Z origin): fit it with "
                                         "fit-deformation --preset NAME|FILE.json naming the set-up")

@@ -352,12 +352,13 @@ void FeedScheduleTool::checkOnSimulator() {
 void FeedScheduleTool::refineModel() {
     if (busy() || !m_schedule || !m_modelSetup || !m_model || !checkMisses()) return;
     m_taskError.clear();
-    FeedRefineJob job;
-    job.lathe = m_modelSetup->lathe;
-    job.model = *m_model;  // the fitted model: the refinement starts from its measurements at this depth
-    job.measured = m_samples.value_or(core::DeformationSamples{});
-    job.request = request();
-    job.seed = m_model->seed.value_or(1);
+    // The fitted model and its measurements at this depth: the refinement starts from them.
+    const FeedRefineJob job{m_modelSetup->lathe,
+                            *m_model,
+                            m_samples.value_or(core::DeformationSamples{}),
+                            request(),
+                            core::FeedRefinementOptions{},
+                            m_model->seed.value_or(1)};
     setBusy(true, tr("Refining the model"));
     m_task->refine(job);
 }
@@ -593,8 +594,9 @@ void FeedScheduleTool::showModelSummary() {
                          ? tr("Simulated experiments (%1)").arg(m_model->preset)
                          : m_model->sourceFile;
     if (active != &*m_model)
-        source = tr("Refined at a = %1 mm (%2 + %n targeted bar(s))", "", m_refinement ? m_refinement->barCount() : 0)
-                     .arg(fixed(active->model.coding(core::DeformationFactor::Depth).centre, 2), source);
+        source = tr("Refined at a = %1 mm (%2, test bars added: %3)")
+                     .arg(fixed(active->model.coding(core::DeformationFactor::Depth).centre, 2), source)
+                     .arg(m_refinement ? m_refinement->barCount() : 0);
     m_modelSummary->setText(tr("%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.")
                                 .arg(source)
                                 .arg(s.pointCount)
@@ -605,7 +607,7 @@ void FeedScheduleTool::showModelSummary() {
 
 QString FeedScheduleTool::refinementLine() const {
     const core::FeedRefinement& r = *m_refinement;
-    QString line = tr("Refined: %n round(s), %1 bars, %2 gauge points; the pass was %3 % off Yc.", "",
+    QString line = tr("Refined in %n round(s): test bars %1, gauge points %2; before, the pass was %3 % off Yc.", "",
                       static_cast<int>(r.rounds.size()))
                        .arg(r.barCount())
                        .arg(r.gaugePointCount())

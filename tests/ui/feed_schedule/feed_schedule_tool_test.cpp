@@ -266,7 +266,7 @@ TEST_F(FeedScheduleToolTest, RefinesTheModelWhenTheCheckMisses) {
     EXPECT_NE(tool.activeModel(), &*tool.model());  // the schedule rests on the refined model now
     EXPECT_EQ(tool.activeModel()->statistics.termSet, "cubic-fz");
     EXPECT_FALSE(tool.refineButton()->isEnabled());
-    EXPECT_TRUE(tool.resultLabel()->text().contains(QStringLiteral("Refined:")))
+    EXPECT_TRUE(tool.resultLabel()->text().contains(QStringLiteral("Refined in")))
         << tool.resultLabel()->text().toStdString();
     EXPECT_TRUE(tool.programText().contains(QStringLiteral("CUBIC-FZ")));  // the program names its model
     EXPECT_TRUE(test::saveScreenshot(tool, QStringLiteral("feed_schedule_8_refined")));
