@@ -3,6 +3,7 @@
 // refined round by round until its pass stays within +-10 % of Yc on the simulator.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <set>
 
@@ -85,9 +86,10 @@ TEST(LocalModel, HoldsTheDepthAndNamesWhatItCannotCarry) {
     EXPECT_EQ(fit.regression.termCount, 16);
     EXPECT_TRUE(fit.model.coding(DeformationFactor::Depth).fixed());
     EXPECT_EQ(fit.model.coding(DeformationFactor::Feed).min, 0.05);
-    // Only measurement noise is left at one depth (0.52 µm; the global model's 0.88 µm carries its lack of fit).
-    EXPECT_LT(fit.regression.residualSigma, 0.6);
-    EXPECT_LT(fit.regression.residualSigma, experiment(4).fit.regression.residualSigma);
+    // At one depth the scatter comes close to the micrometer's own 0.52 µm (error95 / 1.96 / 2 with the display
+    // step); the global model's 0.88 µm carries its lack of fit over the whole box of a, f and z.
+    EXPECT_LT(fit.regression.residualSigma, 0.75);
+    EXPECT_LT(fit.regression.residualSigma, 0.8 * experiment(4).fit.regression.residualSigma);
     EXPECT_NO_THROW(scheduleFeed(fit.model, r));
     FeedScheduleRequest other = r;
     other.depthMm = 1.0;
@@ -150,13 +152,29 @@ TEST(RefinementDesign, NewDepthGetsItsFeedLevelsAndThePlannedBandShrinks) {
 }
 
 TEST(FeedStepAdvice, NamesTheShareTheModelCannotRemove) {
-    // The paper's rule at f_mm = 0.01 from fmin = 0.05: one step's share 1 - (0.05 / 0.06)^0.6 = 10.4 % > 10 %.
-    const FeedScheduleRequest r = request(1.5, 0.0, 0.01, FeedSwitchRule::AtLevel);
-    const std::string advice = feedStepAdvice(scheduleFeed(experiment(1).fit.model, r), r);
-    EXPECT_NE(advice.find("the feed step alone leaves"), std::string::npos) << advice;
-    EXPECT_NE(advice.find("centred"), std::string::npos) << advice;
-    const FeedScheduleRequest c = request(1.5, 0.0, 0.01, FeedSwitchRule::Centred);
-    EXPECT_TRUE(feedStepAdvice(scheduleFeed(experiment(1).fit.model, c), c).empty());
+    // Y = 100 a f (1 + 0.01 z) (tests/core/feed_schedule/feed_scheduler_test.cpp): from 0.15 mm/rev in steps of
+    // 0.05 the paper's rule leaves 25 % on the model itself (22.5 against Yc = 30 µm), the centred one 14.3 %;
+    // with steps of 0.01 the centred share is 0.005 / 0.155 = 3.2 %: nothing to advise.
+    const std::array<FactorCoding, 3> identity = {FactorCoding{0.0, 1.0, 0.5, 2.0}, FactorCoding{0.0, 1.0, 0.05, 0.5},
+                                                  FactorCoding{0.0, 1.0, 0.0, 100.0}};
+    const DeformationModel model(identity, {{0, 0, 0}, {1, 1, 0}, {1, 1, 1}}, Eigen::Vector3d(0.0, 100.0, 1.0));
+    FeedScheduleRequest r;
+    r.depthMm = 1.0;
+    r.feedMinMmPerRev = 0.1;
+    r.feedMaxMmPerRev = 0.4;
+    r.feedStepMmPerRev = 0.05;
+    r.zStartMm = 100.0;
+    r.zEndMm = 0.0;
+    r.levelFraction = 0.5;
+    const std::string paper = feedStepAdvice(scheduleFeed(model, r), r);
+    EXPECT_NE(paper.find("the feed step alone leaves 25.0 % of Yc"), std::string::npos) << paper;
+    EXPECT_NE(paper.find("centred switch rule halves"), std::string::npos) << paper;
+    r.switchRule = FeedSwitchRule::Centred;
+    const std::string centred = feedStepAdvice(scheduleFeed(model, r), r);
+    EXPECT_NE(centred.find("14.3 %"), std::string::npos) << centred;
+    EXPECT_NE(centred.find("a finer feed step"), std::string::npos) << centred;
+    r.feedStepMmPerRev = 0.01;
+    EXPECT_TRUE(feedStepAdvice(scheduleFeed(model, r), r).empty());
 }
 
 }  // namespace
