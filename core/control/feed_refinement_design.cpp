@@ -63,8 +63,9 @@ std::vector<double> candidateFeeds(const FeedScheduleRequest& r) {
     const double span = r.feedMaxMmPerRev - r.feedMinMmPerRev;
     const double step = std::max(r.feedStepMmPerRev, span / kMaxCandidateSteps);
     std::vector<double> feeds;
+    // Rounded to 1e-6 mm/rev (the F word's resolution is 1e-4): 0.105, not 0.10500000000000001.
     for (int k = 0; r.feedMinMmPerRev + k * step < r.feedMaxMmPerRev - 1e-9 * span; ++k)
-        feeds.push_back(r.feedMinMmPerRev + k * step);
+        feeds.push_back(std::round((r.feedMinMmPerRev + k * step) * 1e6) / 1e6);
     feeds.push_back(r.feedMaxMmPerRev);
     return feeds;
 }

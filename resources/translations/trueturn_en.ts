@@ -3749,15 +3749,7 @@ output</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> mm/rev</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Feeds, mm/rev</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed step</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3856,15 +3848,19 @@ output</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Feed switch</source>
+        <source>Where a feed step switches to the next: where the next feed reaches Yc (the paper), or where the two feeds&apos; mean is Yc (half the deviation)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>at the level (paper)</source>
+        <source>at Yc (paper)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>centred on the level</source>
+        <source>centred on Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed step, mm/rev</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

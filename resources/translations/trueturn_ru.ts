@@ -3769,16 +3769,8 @@ output</source>
         <translation> мм</translation>
     </message>
     <message>
-        <source> mm/rev</source>
-        <translation> мм/об</translation>
-    </message>
-    <message>
         <source>Feeds, mm/rev</source>
         <translation>Подачи, мм/об</translation>
-    </message>
-    <message>
-        <source>Feed step</source>
-        <translation>Шаг подачи</translation>
     </message>
     <message>
         <source>Pass z, mm</source>
@@ -3877,16 +3869,20 @@ output</source>
         <translation>Обработать целевые образцы на симуляторе, перестроить модель на этой глубине и проверить снова</translation>
     </message>
     <message>
-        <source>Feed switch</source>
-        <translation>Смена подачи</translation>
+        <source>Where a feed step switches to the next: where the next feed reaches Yc (the paper), or where the two feeds&apos; mean is Yc (half the deviation)</source>
+        <translation>Где подача сменяется следующей: где следующая подача достигает Yc (статья) или где среднее двух подач равно Yc (вдвое меньше отклонение)</translation>
     </message>
     <message>
-        <source>at the level (paper)</source>
-        <translation>на уровне Yc (статья)</translation>
+        <source>at Yc (paper)</source>
+        <translation>на Yc (статья)</translation>
     </message>
     <message>
-        <source>centred on the level</source>
-        <translation>по середине вокруг Yc</translation>
+        <source>centred on Yc</source>
+        <translation>вокруг Yc</translation>
+    </message>
+    <message>
+        <source>Feed step, mm/rev</source>
+        <translation>Шаг, мм/об</translation>
     </message>
 </context>
 <context>

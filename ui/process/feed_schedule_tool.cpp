@@ -91,7 +91,6 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
       m_minLength(new QDoubleSpinBox(this)),
       m_dialectLabel(new QLabel(this)),
       m_dialect(new QComboBox(this)),
-      m_switchLabel(new QLabel(this)),
       m_switch(new QComboBox(this)),
       m_checkButton(new QPushButton(this)),
       m_refine(new QPushButton(this)),
@@ -184,10 +183,13 @@ void FeedScheduleTool::buildLayout() {
     form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
     form->addRow(m_depthLabel, m_depth);
     form->addRow(m_feedsLabel, feeds);
-    form->addRow(m_feedStepLabel, m_feedStep);
+    // The switch rule beside the step it switches (a row of its own would make the page too tall for 800 px).
+    auto* step = new QHBoxLayout;
+    step->addWidget(m_feedStep);
+    step->addWidget(m_switch, 1);
+    form->addRow(m_feedStepLabel, step);
     form->addRow(m_zLabel, zs);
     form->addRow(m_minLengthLabel, m_minLength);
-    form->addRow(m_switchLabel, m_switch);
     form->addRow(m_dialectLabel, m_dialect);
 
     auto* left = new QVBoxLayout;
@@ -268,6 +270,7 @@ void FeedScheduleTool::configureBoxes() {
     setBox(m_zEnd, -10000.0, 10000.0, 1, 5.0, QString());
     for (QDoubleSpinBox* paired : {m_feedMin, m_feedMax, m_zStart, m_zEnd})
         paired->setMinimumWidth(110);
+    m_feedStep->setMinimumWidth(96);
     setBox(m_minLength, 0.0, 1000.0, 1, 1.0, QString());
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::Fanuc));
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::LinuxCnc));
@@ -674,10 +677,9 @@ void FeedScheduleTool::retranslate() {
     m_passBox->setTitle(tr("Pass"));
     m_depthLabel->setText(tr("Depth of cut a"));
     m_depth->setSuffix(tr(" mm"));
-    m_feedStep->setSuffix(tr(" mm/rev"));
     m_minLength->setSuffix(tr(" mm"));
     m_feedsLabel->setText(tr("Feeds, mm/rev"));
-    m_feedStepLabel->setText(tr("Feed step"));
+    m_feedStepLabel->setText(tr("Feed step, mm/rev"));
     m_zLabel->setText(tr("Pass z, mm"));
     m_minLengthLabel->setText(tr("Shortest segment"));
     m_dialectLabel->setText(tr("CNC dialect"));
@@ -686,9 +688,10 @@ void FeedScheduleTool::retranslate() {
     m_checkButton->setText(tr("Check on simulator"));
     m_refine->setText(tr("Refine"));
     m_refine->setToolTip(tr("Machine targeted bars on the simulator, refit the model at this depth and check again"));
-    m_switchLabel->setText(tr("Feed switch"));
-    m_switch->setItemText(0, tr("at the level (paper)"));
-    m_switch->setItemText(1, tr("centred on the level"));
+    m_switch->setToolTip(tr("Where a feed step switches to the next: where the next feed reaches Yc (the paper), "
+                            "or where the two feeds' mean is Yc (half the deviation)"));
+    m_switch->setItemText(0, tr("at Yc (paper)"));
+    m_switch->setItemText(1, tr("centred on Yc"));
     m_save->setText(tr("Save program…"));
     m_levelTitle->setText(tr("Level Yc"));
     m_curves->setAxisTitles(tr("z, mm"), tr("Y, µm"));

@@ -159,7 +159,6 @@ private:
     QDoubleSpinBox* m_minLength;
     QLabel* m_dialectLabel;
     QComboBox* m_dialect;
-    QLabel* m_switchLabel;
     QComboBox* m_switch;
     QPushButton* m_checkButton;
     QPushButton* m_refine;
