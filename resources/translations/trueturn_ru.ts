@@ -3874,7 +3874,7 @@ output</source>
     </message>
     <message>
         <source>at Yc (paper)</source>
-        <translation>на Yc (статья)</translation>
+        <translation>по статье</translation>
     </message>
     <message>
         <source>centred on Yc</source>
