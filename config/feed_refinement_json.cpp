@@ -72,17 +72,17 @@ QJsonObject feedRefinementToJson(const core::FeedRefinement& refinement, int max
     for (const core::FeedRefinementRound& r : refinement.rounds)
         rounds.append(roundToJson(r));
     const core::FeedScheduleCheck& initial = refinement.initialCheck;
-    QJsonObject out{{QStringLiteral("rounds_run"), static_cast<int>(refinement.rounds.size())},
-                    {QStringLiteral("max_rounds"), maxRounds},
-                    {QStringLiteral("bars"), refinement.barCount()},
-                    {QStringLiteral("gauge_points"), refinement.gaugePointCount()},
-                    {QStringLiteral("within_10_pct"), refinement.withinTolerance()},
-                    {QStringLiteral("initial"),
-                     QJsonObject{{QStringLiteral("max_deviation_pct"), initial.maxDeviationPct},
-                                 {QStringLiteral("worst_z"), initial.worstZMm},
-                                 {QStringLiteral("within_10_pct"),
-                                  initial.maxDeviationPct <= core::kFeedScheduleTolerancePct}}},
-                    {QStringLiteral("rounds"), rounds}};
+    QJsonObject out{
+        {QStringLiteral("rounds_run"), static_cast<int>(refinement.rounds.size())},
+        {QStringLiteral("max_rounds"), maxRounds},
+        {QStringLiteral("bars"), refinement.barCount()},
+        {QStringLiteral("gauge_points"), refinement.gaugePointCount()},
+        {QStringLiteral("within_10_pct"), refinement.withinTolerance()},
+        {QStringLiteral("initial"),
+         QJsonObject{{QStringLiteral("max_deviation_pct"), initial.maxDeviationPct},
+                     {QStringLiteral("worst_z"), initial.worstZMm},
+                     {QStringLiteral("within_10_pct"), initial.maxDeviationPct <= core::kFeedScheduleTolerancePct}}},
+        {QStringLiteral("rounds"), rounds}};
     if (!refinement.advice.empty()) out.insert(QStringLiteral("advice"), QString::fromStdString(refinement.advice));
     return out;
 }

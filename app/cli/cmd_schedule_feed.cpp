@@ -3,8 +3,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QString>
-#include <optional>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include "app/cli/command.h"
@@ -220,8 +220,9 @@ void printText(const Outcome& o, const core::MachiningTimes& t, const QString& g
 /// The one line on stderr when the pass leaves the band: the worst z, its deviation and what next.
 QString missReason(const Outcome& o, const core::FeedScheduleRequest& request) {
     const core::FeedScheduleCheck& c = *o.check;
-    QString line = QStringLiteral("--verify: the pass leaves the +-%1 % band: %2 % off Yc = %3 um at z = %4 mm "
-                                  "(Y %5 um)")
+    QString line = QStringLiteral(
+                       "--verify: the pass leaves the +-%1 % band: %2 % off Yc = %3 um at z = %4 mm "
+                       "(Y %5 um)")
                        .arg(core::kFeedScheduleTolerancePct, 0, 'f', 0)
                        .arg(c.maxDeviationPct, 0, 'f', 2)
                        .arg(o.schedule.levelUm, 0, 'f', 2)
@@ -252,8 +253,7 @@ void verifyAndRefine(const CommandParser& p, Outcome& o, const core::FeedSchedul
         if (p.isSet(QStringLiteral("seed")))
             seed = static_cast<std::uint64_t>(p.integer(QStringLiteral("seed"), 0, 4294967295LL));
         o.maxRounds = options.maxRounds;
-        o.refinement =
-            core::refineFeedSchedule(setup.lathe, o.model.model, sigma, measured, request, options, seed);
+        o.refinement = core::refineFeedSchedule(setup.lathe, o.model.model, sigma, measured, request, options, seed);
         o.check = o.refinement->initialCheck;
         if (const core::FeedRefinementRound* last = o.refinement->lastScheduled()) {
             o.schedule = *last->schedule;

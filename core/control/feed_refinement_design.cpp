@@ -163,8 +163,9 @@ RefinementProposal proposeRefinement(const FeedSchedule& schedule, const FeedSch
     plan.marginUm = marginPct / 100.0 * schedule.levelUm;
     plan.targetHalfWidthUm = 0.5 * plan.marginUm;
 
-    const DeformationModel shape(plan.region, deformationTerms(kRefinementTermSet),
-                                 Eigen::VectorXd::Zero(static_cast<Eigen::Index>(deformationTerms(kRefinementTermSet).size())));
+    const DeformationModel shape(
+        plan.region, deformationTerms(kRefinementTermSet),
+        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(deformationTerms(kRefinementTermSet).size())));
     const DeformationSamples here = samplesInRegion(measured, plan.region);
     std::set<double> feedLevels(here.feedMmPerRev.data(), here.feedMmPerRev.data() + here.feedMmPerRev.size());
     plan.measurementsBefore = static_cast<int>(here.size());

@@ -13,11 +13,11 @@ inline constexpr double kFeedScheduleTolerancePct = 10.0;
 
 /// How a targeted experiment for a feed schedule is planned and how far it may go.
 struct FeedRefinementOptions {
-    int maxRounds = 3;          ///< experiment, refit, reschedule, verify: at most this many times (1 .. 10)
-    int maxBarsPerRound = 6;    ///< bars machined in one round at most (1 .. 20)
-    int gaugesPerBar = 33;      ///< gauge points per bar (4 .. 200), chosen from the candidate positions
-    double gaugeStepMm = 5.0;   ///< candidate gauge positions along the pass every this, mm (0.5 .. 100)
-    int minFeedLevels = 5;      ///< the local model (cubic in f) needs this many different feeds (5 .. 20)
+    int maxRounds = 3;         ///< experiment, refit, reschedule, verify: at most this many times (1 .. 10)
+    int maxBarsPerRound = 6;   ///< bars machined in one round at most (1 .. 20)
+    int gaugesPerBar = 33;     ///< gauge points per bar (4 .. 200), chosen from the candidate positions
+    double gaugeStepMm = 5.0;  ///< candidate gauge positions along the pass every this, mm (0.5 .. 100)
+    int minFeedLevels = 5;     ///< the local model (cubic in f) needs this many different feeds (5 .. 20)
 
     /// Throws std::invalid_argument naming the option, its value and its limits.
     void validate() const;
@@ -34,15 +34,16 @@ struct RefinementBar {
 /// design space): the bars, and the precision along the pass that the plan expects.
 struct RefinementProposal {
     double depthMm = 0.0;
-    std::array<FactorCoding, 3> region;  ///< the local model's validity: a held at the depth, [fmin, fmax], the pass's z
+    std::array<FactorCoding, 3>
+        region;  ///< the local model's validity: a held at the depth, [fmin, fmax], the pass's z
     std::vector<RefinementBar> bars;
-    double sigmaUm = 0.0;                ///< the scatter of one measurement the plan assumes, µm
-    double marginUm = 0.0;               ///< Yc * (10 % - the schedule's own deviation), at least 1 % of Yc, µm
-    double targetHalfWidthUm = 0.0;      ///< the plan aims at a 95 % band of the fitted mean of half the margin, µm
-    double halfWidthBeforeUm = 0.0;      ///< largest 95 % half width of the mean along the pass before the bars, µm
-    double halfWidthAfterUm = 0.0;       ///< the same expected with the bars, µm
-    int measurementsBefore = 0;          ///< measurements at this depth inside the region already
-    int feedLevelsBefore = 0;            ///< different feeds among them
+    double sigmaUm = 0.0;            ///< the scatter of one measurement the plan assumes, µm
+    double marginUm = 0.0;           ///< Yc * (10 % - the schedule's own deviation), at least 1 % of Yc, µm
+    double targetHalfWidthUm = 0.0;  ///< the plan aims at a 95 % band of the fitted mean of half the margin, µm
+    double halfWidthBeforeUm = 0.0;  ///< largest 95 % half width of the mean along the pass before the bars, µm
+    double halfWidthAfterUm = 0.0;   ///< the same expected with the bars, µm
+    int measurementsBefore = 0;      ///< measurements at this depth inside the region already
+    int feedLevelsBefore = 0;        ///< different feeds among them
 
     /// Gauge points in all bars.
     int gaugePointCount() const;

@@ -36,7 +36,8 @@ struct FeedScheduleRequest {
     std::optional<double> levelUm;        ///< Yc, µm; exactly one of levelUm and levelFraction
     std::optional<double> levelFraction;  ///< q in [0, 1]: Yc = Y1 + q (Y2 - Y1)
     double minLengthMm = 0.0;             ///< L_min, mm: shorter segments are skipped, >= 0
-    FeedSwitchRule switchRule = FeedSwitchRule::AtLevel;  ///< where a feed step is switched
+    /// Where a feed step is switched (the paper's rule by default).
+    FeedSwitchRule switchRule = FeedSwitchRule::AtLevel;
 };
 
 /// One segment of the schedule: constant feed from zFrom to zTo (in the order of travel).

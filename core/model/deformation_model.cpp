@@ -130,8 +130,9 @@ std::string deformationTermSetName(DeformationTermSet set) {
 }
 
 DeformationTermSet deformationTermSetFromName(const std::string& name) {
-    for (DeformationTermSet s : {DeformationTermSet::Linear, DeformationTermSet::Interactions,
-                                 DeformationTermSet::Quadratic, DeformationTermSet::CubicZ, DeformationTermSet::CubicFZ})
+    for (DeformationTermSet s :
+         {DeformationTermSet::Linear, DeformationTermSet::Interactions, DeformationTermSet::Quadratic,
+          DeformationTermSet::CubicZ, DeformationTermSet::CubicFZ})
         if (deformationTermSetName(s) == name) return s;
     throw std::invalid_argument("unknown term set '" + name + "' (linear, interactions, quadratic, cubic-z, cubic-fz)");
 }
@@ -251,7 +252,8 @@ std::array<int, 3> checkedLevels(const DeformationSamples& samples) {
 
 /// Whether some term of `terms` has a power of `factor`.
 bool usesFactor(const std::vector<DeformationTerm>& terms, int factor) {
-    return std::any_of(terms.begin(), terms.end(), [factor](const DeformationTerm& t) { return powerOf(t, factor) > 0; });
+    return std::any_of(terms.begin(), terms.end(),
+                       [factor](const DeformationTerm& t) { return powerOf(t, factor) > 0; });
 }
 
 /// The least-squares fit (with the stepwise elimination) on the given coding.

@@ -120,7 +120,10 @@ void FeedModelTask::refine(const FeedRefineJob& job) {
             promise.setProgressValue(static_cast<int>(100.0 * share));
             // Queued to the GUI thread: the label says which round and bar.
             QMetaObject::invokeMethod(
-                this, [this, round, done, bars] { emit refineProgress(round, static_cast<int>(done), static_cast<int>(bars)); },
+                this,
+                [this, round, done, bars] {
+                    emit refineProgress(round, static_cast<int>(done), static_cast<int>(bars));
+                },
                 Qt::QueuedConnection);
             return !promise.isCanceled();
         };

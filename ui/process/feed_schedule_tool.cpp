@@ -401,8 +401,8 @@ const config::DeformationModelFile* FeedScheduleTool::activeModel() const {
     if (m_refinedModel && m_refinedFor) {
         const core::FeedScheduleRequest r = request();
         const core::FeedScheduleRequest& f = *m_refinedFor;
-        if (r.depthMm == f.depthMm && r.feedMinMmPerRev == f.feedMinMmPerRev && r.feedMaxMmPerRev == f.feedMaxMmPerRev &&
-            r.zStartMm == f.zStartMm && r.zEndMm == f.zEndMm)
+        if (r.depthMm == f.depthMm && r.feedMinMmPerRev == f.feedMinMmPerRev &&
+            r.feedMaxMmPerRev == f.feedMaxMmPerRev && r.zStartMm == f.zStartMm && r.zEndMm == f.zEndMm)
             return &*m_refinedModel;
     }
     return m_model ? &*m_model : nullptr;
@@ -615,7 +615,8 @@ QString FeedScheduleTool::refinementLine() const {
                        .arg(r.barCount())
                        .arg(r.gaugePointCount())
                        .arg(fixed(r.initialCheck.maxDeviationPct, 1));
-    if (!r.advice.empty()) line += QLatin1Char(' ') + tr("The feed step alone leaves the band: try the centred switch.");
+    if (!r.advice.empty())
+        line += QLatin1Char(' ') + tr("The feed step alone leaves the band: try the centred switch.");
     return line;
 }
 
@@ -688,8 +689,9 @@ void FeedScheduleTool::retranslate() {
     m_checkButton->setText(tr("Check on simulator"));
     m_refine->setText(tr("Refine"));
     m_refine->setToolTip(tr("Machine targeted bars on the simulator, refit the model at this depth and check again"));
-    m_switch->setToolTip(tr("Where a feed step switches to the next: where the next feed reaches Yc (the paper), "
-                            "or where the two feeds' mean is Yc (half the deviation)"));
+    m_switch->setToolTip(
+        tr("Where a feed step switches to the next: where the next feed reaches Yc (the paper), "
+           "or where the two feeds' mean is Yc (half the deviation)"));
     m_switch->setItemText(0, tr("at Yc (paper)"));
     m_switch->setItemText(1, tr("centred on Yc"));
     m_save->setText(tr("Save program…"));

@@ -124,9 +124,9 @@ private:
     std::optional<config::FeedSchedulingSetup> m_preset;  ///< the built-in feed-scheduling set-up
     QString m_presetProblem;
     std::optional<config::DeformationModelFile> m_model;
-    std::optional<core::DeformationSamples> m_samples;          ///< the measurements m_model was fitted on
+    std::optional<core::DeformationSamples> m_samples;           ///< the measurements m_model was fitted on
     std::optional<config::DeformationModelFile> m_refinedModel;  ///< the local model of the last refinement
-    std::optional<core::FeedScheduleRequest> m_refinedFor;      ///< the pass it was refined for
+    std::optional<core::FeedScheduleRequest> m_refinedFor;       ///< the pass it was refined for
     std::optional<core::FeedRefinement> m_refinement;
     std::optional<config::FeedSchedulingSetup> m_modelSetup;  ///< the simulator the model came from, if known
     std::optional<core::FeedSchedule> m_schedule;

@@ -107,8 +107,8 @@ FeedRefinement refineFeedSchedule(const LatheSetup& lathe, const DeformationMode
         round.round = r;
         round.plan = proposeRefinement(pathOfPass, request, data, sigma, options);
         const auto report = [&](std::size_t done, std::size_t bars) { return !progress || progress(r, done, bars); };
-        data = joined(data, runTargetedBars(lathe, request.depthMm, round.plan.bars, seed, kBarNumbersPerRound * r,
-                                            report));
+        data = joined(data,
+                      runTargetedBars(lathe, request.depthMm, round.plan.bars, seed, kBarNumbersPerRound * r, report));
         refitAndCheck(round, data, pass, request);
         if (round.fit) sigma = round.fit->regression.residualSigma;
         if (round.schedule) pathOfPass = *round.schedule;

@@ -19,13 +19,13 @@ namespace tt::core {
 /// on the simulator, the local model refitted on every measurement at the depth, the pass rescheduled
 /// on it and machined again.
 struct FeedRefinementRound {
-    int round = 0;                          ///< 1, 2, ...
-    RefinementProposal plan;                ///< the bars machined and the precision the plan expected
-    int measurements = 0;                   ///< measurements at the depth after the round
-    std::optional<DeformationFit> fit;      ///< the local model (empty when the data cannot carry it yet)
-    std::optional<FeedSchedule> schedule;   ///< the pass rescheduled on it
-    std::optional<FeedScheduleCheck> check; ///< the rescheduled pass on the simulator
-    std::string problem;                    ///< why there is no fit or no schedule, in the engine's words
+    int round = 0;                           ///< 1, 2, ...
+    RefinementProposal plan;                 ///< the bars machined and the precision the plan expected
+    int measurements = 0;                    ///< measurements at the depth after the round
+    std::optional<DeformationFit> fit;       ///< the local model (empty when the data cannot carry it yet)
+    std::optional<FeedSchedule> schedule;    ///< the pass rescheduled on it
+    std::optional<FeedScheduleCheck> check;  ///< the rescheduled pass on the simulator
+    std::string problem;                     ///< why there is no fit or no schedule, in the engine's words
 
     /// Whether the round's pass stayed within kFeedScheduleTolerancePct of Yc on the simulator.
     bool withinTolerance() const;

@@ -148,7 +148,8 @@ TEST_F(FeedScheduleCommands, VerifyOutsideTheBandExitsThreeNamingTheWorstPointAn
     const double worst = verify.value(QStringLiteral("max_deviation_pct")).toDouble();
     EXPECT_GT(worst, 10.0);
     EXPECT_FALSE(verify.value(QStringLiteral("within_10_pct")).toBool());
-    const QString where = QStringLiteral("z = %1 mm").arg(verify.value(QStringLiteral("worst_z")).toDouble(), 0, 'f', 1);
+    const QString where =
+        QStringLiteral("z = %1 mm").arg(verify.value(QStringLiteral("worst_z")).toDouble(), 0, 'f', 1);
     EXPECT_TRUE(r.err.contains(where)) << qPrintable(r.err) << " / " << qPrintable(where);
     EXPECT_TRUE(r.err.contains(QStringLiteral("%1 % off Yc").arg(worst, 0, 'f', 2))) << qPrintable(r.err);
     EXPECT_TRUE(r.err.contains(QStringLiteral("--refine"))) << qPrintable(r.err);
@@ -181,8 +182,9 @@ TEST_F(FeedScheduleCommands, RefineClosesTheLoopAndSaysHowItGotThere) {
     const QString program = path(QStringLiteral("pass.nc"));
     args << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--switch")
          << QStringLiteral("centred") << QStringLiteral("--verify") << QStringLiteral("--refine")
-         << QStringLiteral("--experiment") << path(QStringLiteral("experiment.csv")) << QStringLiteral("--refined-model")
-         << refined << QStringLiteral("--gcode") << program << QStringLiteral("--json");
+         << QStringLiteral("--experiment") << path(QStringLiteral("experiment.csv"))
+         << QStringLiteral("--refined-model") << refined << QStringLiteral("--gcode") << program
+         << QStringLiteral("--json");
     const CliResult r = runTrueturn(args);
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     const QJsonObject j = r.json();

@@ -44,8 +44,7 @@ TEST_P(RefinedGrid, HoldsTenPercentOfTheLevel) {
     const FeedRefinementOptions options;  // 3 rounds of at most 6 bars, 33 gauge points each
     const FeedRefinement refined =
         refineFeedSchedule(preset().lathe, fit.model, fit.regression.residualSigma, samples, r, options, c.seed);
-    const FeedScheduleCheck& result =
-        refined.lastScheduled() ? *refined.lastScheduled()->check : refined.initialCheck;
+    const FeedScheduleCheck& result = refined.lastScheduled() ? *refined.lastScheduled()->check : refined.initialCheck;
     std::printf("a %.2f Q %.1f f_mm %.3f seed %llu: %.2f %% -> %.2f %% in %zu rounds, %d bars\n", c.depthMm,
                 c.levelFraction, c.feedStepMmPerRev, static_cast<unsigned long long>(c.seed),
                 refined.initialCheck.maxDeviationPct, result.maxDeviationPct, refined.rounds.size(),
@@ -67,8 +66,7 @@ TEST_P(RefinedGrid, HoldsTenPercentOfTheLevel) {
 // is at the edge (about 11 %).
 INSTANTIATE_TEST_SUITE_P(PaperFour, RefinedGrid,
                          ::testing::Values(Cell{0.5, 0.0, 0.01, 1}, Cell{0.5, 0.5, 0.005, 8}, Cell{0.75, 0.0, 0.01, 2},
-                                           Cell{1.0, 1.0, 0.01, 3}, Cell{1.5, 0.5, 0.005, 5},
-                                           Cell{2.0, 0.0, 0.01, 7}));
+                                           Cell{1.0, 1.0, 0.01, 3}, Cell{1.5, 0.5, 0.005, 5}, Cell{2.0, 0.0, 0.01, 7}));
 
 }  // namespace
 }  // namespace tt::core

@@ -74,7 +74,8 @@ TEST(TargetedBars, GaugedAtTheirOwnPointsWithTheMicrometersNoise) {
                                  }),
                  DeformationExperimentStopped);
     EXPECT_THROW(runTargetedBars(preset().lathe, 0.75, {}, 4, 1), std::invalid_argument);
-    EXPECT_THROW(runTargetedBars(preset().lathe, 0.75, {{0.1, {500.0}}}, 4, 1), std::invalid_argument);  // off the shaft
+    EXPECT_THROW(runTargetedBars(preset().lathe, 0.75, {{0.1, {500.0}}}, 4, 1),
+                 std::invalid_argument);  // off the shaft
 }
 
 TEST(LocalModel, HoldsTheDepthAndNamesWhatItCannotCarry) {
@@ -140,8 +141,8 @@ TEST(RefinementDesign, NewDepthGetsItsFeedLevelsAndThePlannedBandShrinks) {
     EXPECT_NEAR(plan.marginUm, (10.0 - s.modelDeviationPct()) / 100.0 * s.levelUm, 1e-9);
     // At 1.5 mm the experiment's eight bars are there already: fewer new bars are needed for the same band.
     const FeedScheduleRequest known = request(1.5, 0.0, 0.01, FeedSwitchRule::Centred);
-    const RefinementProposal more = proposeRefinement(scheduleFeed(experiment(1).fit.model, known), known,
-                                                      experiment(1).samples, 0.88, options);
+    const RefinementProposal more =
+        proposeRefinement(scheduleFeed(experiment(1).fit.model, known), known, experiment(1).samples, 0.88, options);
     EXPECT_EQ(more.measurementsBefore, 8 * 33);
     EXPECT_EQ(more.feedLevelsBefore, 8);
     EXPECT_LT(more.bars.size(), plan.bars.size());

@@ -27,8 +27,19 @@ Eigen::MatrixXd rows(const std::vector<std::pair<double, double>>& points) {
 
 /// The design of scripts/crosscheck-design.py (13 points) and its responses.
 Eigen::MatrixXd measured() {
-    return rows({{-1, -1}, {-1, 0}, {-1, 1}, {-0.5, -0.5}, {-0.5, 0.5}, {0, -1}, {0, 0}, {0, 1}, {0.5, -0.5},
-                 {0.5, 0.5}, {1, -1}, {1, 0}, {1, 1}});
+    return rows({{-1, -1},
+                 {-1, 0},
+                 {-1, 1},
+                 {-0.5, -0.5},
+                 {-0.5, 0.5},
+                 {0, -1},
+                 {0, 0},
+                 {0, 1},
+                 {0.5, -0.5},
+                 {0.5, 0.5},
+                 {1, -1},
+                 {1, 0},
+                 {1, 1}});
 }
 
 Eigen::VectorXd responses() {
@@ -44,7 +55,7 @@ Eigen::MatrixXd prediction() {
 TEST(RegressionBands, ConfidenceOfTheMeanAsStatsmodels) {
     const LinearRegression fit = fitLinearRegression(measured(), responses());
     // statsmodels OLS: params, sqrt(scale), get_prediction().se_mean and conf_int(alpha=0.05) half widths.
-    const double coefficients[6] = {5.6, 1.73571428571, 1.03571428571, 0.0647058823529, 0.0892857142857,
+    const double coefficients[6] = {5.6,           1.73571428571, 1.03571428571, 0.0647058823529, 0.0892857142857,
                                     0.239285714286};
     for (int k = 0; k < 6; ++k)
         EXPECT_NEAR(fit.coefficients(k), coefficients[k], 1e-10) << k;
