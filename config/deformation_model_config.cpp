@@ -40,7 +40,8 @@ core::FactorCoding codingFromJson(const JsonSection& s) {
     c.min = s.required(QStringLiteral("min"), -1e6, 1e6);
     c.max = s.required(QStringLiteral("max"), -1e6, 1e6);
     if (!(c.halfRange > 0.0)) s.fail(QStringLiteral("half_range"), "must be > 0");
-    if (!(c.min < c.max)) s.fail(QStringLiteral("max"), "must be above min");
+    // min = max: the model holds the factor at one value (a model of one depth of cut).
+    if (!(c.min <= c.max)) s.fail(QStringLiteral("max"), "must not be below min");
     return c;
 }
 

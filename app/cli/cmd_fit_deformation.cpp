@@ -18,7 +18,7 @@ namespace tt::cli {
 namespace {
 
 const QStringList kTermSets = {QStringLiteral("cubic-z"), QStringLiteral("quadratic"), QStringLiteral("interactions"),
-                               QStringLiteral("linear")};
+                               QStringLiteral("linear"), QStringLiteral("cubic-fz")};
 
 QString number(double v, int precision = 4) {
     return std::isfinite(v) ? QString::number(v, 'g', precision) : QStringLiteral("infinite");
@@ -83,8 +83,8 @@ int runFitDeformation(const QStringList& arguments) {
                                         "(deformation-experiment writes it)."));
     parser.addOption(QStringLiteral("terms"),
                      QStringLiteral("Terms to start from: cubic-z (the full quadratic in a and f times 1, z, z², z³), "
-                                    "quadratic (full quadratic), interactions (linear plus af, az, fz, afz), linear. "
-                                    "Default: cubic-z."),
+                                    "quadratic (full quadratic), interactions (linear plus af, az, fz, afz), linear, "
+                                    "cubic-fz (one depth of cut: 1, f, f², f³ times 1, z, z², z³). Default: cubic-z."),
                      QStringLiteral("SET"), QStringLiteral("cubic-z"));
     parser.addOption(QStringLiteral("stepwise"),
                      QStringLiteral("Remove insignificant terms one by one (smallest |t| below t(0.975)), refitting."));

@@ -19,6 +19,8 @@ public:
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;  ///< the command ran but the work failed (I/O, numerics)
 inline constexpr int kExitUsage = 2;    ///< bad command, option or input
+/// The work ran but its result is outside the tolerance asked for (schedule-feed --verify).
+inline constexpr int kExitOutOfTolerance = 3;
 
 /// One headless sub-command of `trueturn` (DESIGN.md, "Command line").
 struct Command {

@@ -95,6 +95,20 @@ FeedSegment segment(const DeformationModel& model, double depthMm, double from, 
     return {from, to, feed, model.deformationUm(depthMm, feed, from), model.deformationUm(depthMm, feed, to)};
 }
 
+/// Where the feed `next` takes over from `current` on the way from zFrom (empty: not before z_end): the
+/// paper's Y(next, z) = Yc, or the centred rule's (Y(current, z) + Y(next, z)) / 2 = Yc.
+std::optional<double> switchPoint(const DeformationModel& model, const FeedScheduleRequest& r, double levelUm,
+                                  double current, double next, double zFrom) {
+    const ScaledPolynomial nextY = model.alongAxis(r.depthMm, next);
+    if (r.switchRule == FeedSwitchRule::AtLevel)
+        return firstCrossing(nextY, levelUm, zFrom, r.zEndMm, CrossingSide::AtOrBelow);
+    // Both slices share the z coding, so their mean is the mean of the coefficients.
+    const ScaledPolynomial currentY = model.alongAxis(r.depthMm, current);
+    const ScaledPolynomial mean(0.5 * (currentY.scaledCoefficients() + nextY.scaledCoefficients()), nextY.centre(),
+                                nextY.scale());
+    return firstCrossing(mean, levelUm, zFrom, r.zEndMm, CrossingSide::AtOrBelow);
+}
+
 }  // namespace
 
 double FeedSegment::lengthMm() const {
@@ -107,6 +121,24 @@ double FeedSchedule::feedAtMm(double zMm) const {
     for (const FeedSegment& s : segments)
         if (direction * (zMm - s.zToMm) < 0.0) return s.feedMmPerRev;
     return segments.back().feedMmPerRev;
+}
+
+double FeedSchedule::modelDeviationPct() const {
+    double worst = 0.0;
+    if (!(levelUm > 0.0)) return worst;
+    for (const FeedSegment& s : segments)
+        worst = std::max({worst, std::abs(s.yFromUm - levelUm), std::abs(s.yToUm - levelUm)});
+    return 100.0 * worst / levelUm;
+}
+
+const char* feedSwitchRuleName(FeedSwitchRule rule) {
+    return rule == FeedSwitchRule::Centred ? "centred" : "level";
+}
+
+FeedSwitchRule feedSwitchRuleFromName(const std::string& name) {
+    if (name == "level") return FeedSwitchRule::AtLevel;
+    if (name == "centred") return FeedSwitchRule::Centred;
+    throw std::invalid_argument("unknown switch rule '" + name + "' (level, centred)");
 }
 
 double MachiningTimes::savedVsFeedMinPct() const {
@@ -137,12 +169,16 @@ FeedSchedule scheduleFeed(const DeformationModel& model, const FeedScheduleReque
     const double direction = r.zEndMm > r.zStartMm ? 1.0 : -1.0;
     double zCurrent = r.zStartMm;
     double feedCurrent = s.feedStartMmPerRev;
+    // The paper steps while f_i < f_кр; centred steps go on while the next feed is in range.
+    const double lastFeed = r.switchRule == FeedSwitchRule::AtLevel
+                                ? s.feedEndMmPerRev
+                                : r.feedMaxMmPerRev + kRangeMargin * (r.feedMaxMmPerRev - r.feedMinMmPerRev);
     for (int step = 1;; ++step) {
         const double feed = s.feedStartMmPerRev + step * r.feedStepMmPerRev;  // eq. (2), without accumulated rounding
         double z = r.zEndMm;
-        if (feed < s.feedEndMmPerRev) {
-            const std::optional<double> root =
-                firstCrossing(model.alongAxis(r.depthMm, feed), s.levelUm, zCurrent, r.zEndMm, CrossingSide::AtOrBelow);
+        const bool stepping = r.switchRule == FeedSwitchRule::AtLevel ? feed < lastFeed : feed <= lastFeed;
+        if (stepping) {
+            const std::optional<double> root = switchPoint(model, r, s.levelUm, feedCurrent, feed, zCurrent);
             if (root && direction * (*root - r.zEndMm) < 0.0) z = *root;  // else clamped at the end
         }
         const bool atEnd = z == r.zEndMm;

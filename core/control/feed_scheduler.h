@@ -1,11 +1,27 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/model/deformation_model.h"
 
 namespace tt::core {
+
+/// Where a feed step is switched to the next (paper 004, Fig. 2, or centred on the level).
+enum class FeedSwitchRule {
+    /// The paper's rule: z_i from Y(a, f_i, z_i) = Yc, so Y runs from Yc down to about
+    /// Yc (f / (f + f_mm))^0.6 on every segment (one-sided, below the level).
+    AtLevel,
+    /// Centred on the level: z_i from (Y(a, f_{i-1}, z_i) + Y(a, f_i, z_i)) / 2 = Yc, so each switch
+    /// jumps from half a step below Yc to half a step above it: the same feeds, half the deviation.
+    Centred,
+};
+
+/// "level" or "centred".
+const char* feedSwitchRuleName(FeedSwitchRule rule);
+/// The rule named `name`; throws std::invalid_argument listing the names.
+FeedSwitchRule feedSwitchRuleFromName(const std::string& name);
 
 /// What the process planner asks of the feed scheduling (paper 004): the pass at depth a from
 /// z_start to z_end, the feed range and the machine's feed increment, and the stabilisation level
@@ -20,6 +36,8 @@ struct FeedScheduleRequest {
     std::optional<double> levelUm;        ///< Yc, µm; exactly one of levelUm and levelFraction
     std::optional<double> levelFraction;  ///< q in [0, 1]: Yc = Y1 + q (Y2 - Y1)
     double minLengthMm = 0.0;             ///< L_min, mm: shorter segments are skipped, >= 0
+    /// Where a feed step is switched (the paper's rule by default).
+    FeedSwitchRule switchRule = FeedSwitchRule::AtLevel;
 };
 
 /// One segment of the schedule: constant feed from zFrom to zTo (in the order of travel).
@@ -46,6 +64,9 @@ struct FeedSchedule {
 
     /// The feed in force with the tool at z (the later segment at a breakpoint), mm/rev.
     double feedAtMm(double zMm) const;
+    /// The largest |Y - Yc| / Yc of the model at the segments' ends, percent: the share of the
+    /// deviation that the feed step itself leaves (the model's own sawtooth), before any model error.
+    double modelDeviationPct() const;
 };
 
 /// Machining time of the pass with the schedule and with a constant feed, s (t = L / (f n)).
@@ -64,7 +85,9 @@ struct MachiningTimes {
 /// (eq. (2)) and z_i from Y(a, f_i, z_i) = Yc (the first crossing on the way, bracketed: see
 /// firstCrossing), until f_i >= f_кр, where z_i = z_end; a z_i beyond z_end is clamped to it; a
 /// segment shorter than L_min is skipped (the next feed step is tried from the same point), and a last
-/// segment shorter than L_min is joined to the one before (keeping its lower feed). Throws
+/// segment shorter than L_min is joined to the one before (keeping its lower feed). With
+/// FeedSwitchRule::Centred the switch points are where the mean of the two feeds' Y is Yc, and the
+/// steps go on while the next feed is at most fmax and that point comes before z_end. Throws
 /// std::invalid_argument naming the value and the limit for every request that cannot be met:
 /// values not finite, fmin <= 0, fmax <= fmin, f_mm <= 0 or more than 10000 steps, z_start = z_end,
 /// L_min < 0, a, f or z outside the model's fitted range, Y1 > Y2 (no level exists), Yc outside

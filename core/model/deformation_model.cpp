@@ -103,6 +103,12 @@ std::vector<DeformationTerm> deformationTerms(DeformationTermSet set) {
                     t.push_back({i, j, k});
             break;
         }
+        case DeformationTermSet::CubicFZ:
+            t.clear();
+            for (int k = 0; k <= 3; ++k)
+                for (int j = 0; j <= 3; ++j)
+                    t.push_back({0, j, k});
+            break;
     }
     return t;
 }
@@ -116,16 +122,19 @@ std::string deformationTermSetName(DeformationTermSet set) {
         case DeformationTermSet::Quadratic:
             return "quadratic";
         case DeformationTermSet::CubicZ:
+            return "cubic-z";
+        case DeformationTermSet::CubicFZ:
             break;
     }
-    return "cubic-z";
+    return "cubic-fz";
 }
 
 DeformationTermSet deformationTermSetFromName(const std::string& name) {
-    for (DeformationTermSet s : {DeformationTermSet::Linear, DeformationTermSet::Interactions,
-                                 DeformationTermSet::Quadratic, DeformationTermSet::CubicZ})
+    for (DeformationTermSet s :
+         {DeformationTermSet::Linear, DeformationTermSet::Interactions, DeformationTermSet::Quadratic,
+          DeformationTermSet::CubicZ, DeformationTermSet::CubicFZ})
         if (deformationTermSetName(s) == name) return s;
-    throw std::invalid_argument("unknown term set '" + name + "' (linear, interactions, quadratic, cubic-z)");
+    throw std::invalid_argument("unknown term set '" + name + "' (linear, interactions, quadratic, cubic-z, cubic-fz)");
 }
 
 FactorCoding FactorCoding::spanning(double lo, double hi) {
@@ -133,6 +142,11 @@ FactorCoding FactorCoding::spanning(double lo, double hi) {
         throw std::invalid_argument("a factor's range must be finite with its minimum below its maximum (got " +
                                     number(lo) + " .. " + number(hi) + ")");
     return {0.5 * (lo + hi), 0.5 * (hi - lo), lo, hi};
+}
+
+FactorCoding FactorCoding::at(double value) {
+    if (!std::isfinite(value)) throw std::invalid_argument("a factor held at one value needs a finite value");
+    return {value, 1.0, value, value};
 }
 
 DeformationModel::DeformationModel(std::array<FactorCoding, 3> coding, std::vector<DeformationTerm> terms,
@@ -155,10 +169,17 @@ DeformationModel::DeformationModel(std::array<FactorCoding, 3> coding, std::vect
             m_terms.begin() + static_cast<std::ptrdiff_t>(i))
             throw std::invalid_argument("the term " + t.name() + " appears twice in the model");
     }
-    for (const FactorCoding& c : m_coding)
+    for (int factor = 0; factor < 3; ++factor) {
+        const FactorCoding& c = m_coding[static_cast<std::size_t>(factor)];
         if (!std::isfinite(c.centre) || !std::isfinite(c.halfRange) || !(c.halfRange > 0.0) || !std::isfinite(c.min) ||
-            !std::isfinite(c.max) || !(c.min < c.max))
+            !std::isfinite(c.max) || !(c.min <= c.max))
             throw std::invalid_argument("a factor coding of the deformation model is not valid");
+        if (c.fixed())
+            for (const DeformationTerm& t : m_terms)
+                if (powerOf(t, factor) > 0)
+                    throw std::invalid_argument(std::string("the term ") + t.name() + " uses " + kFactorSymbol[factor] +
+                                                ", which the model holds at " + number(c.min) + " only");
+    }
 }
 
 Eigen::VectorXd DeformationModel::termRow(double depthMm, double feedMmPerRev, double zMm) const {
@@ -210,7 +231,10 @@ Eigen::Index DeformationSamples::size() const {
     return n;
 }
 
-DeformationFit fitDeformationModel(const DeformationSamples& samples, DeformationTermSet set, bool stepwise) {
+namespace {
+
+/// Checks the columns' values and returns, per factor, the number of different levels.
+std::array<int, 3> checkedLevels(const DeformationSamples& samples) {
     const Eigen::Index n = samples.size();
     if (n > kMaxRows)
         throw std::invalid_argument("at most " + std::to_string(kMaxRows) + " measurements can be fitted (got " +
@@ -221,17 +245,20 @@ DeformationFit fitDeformationModel(const DeformationSamples& samples, Deformatio
     checkColumn(samples.deformationUm, "the deformation", "µm", -1e6, 1e6, false);
     const std::array<const Eigen::VectorXd*, 3> columns = {&samples.depthMm, &samples.feedMmPerRev, &samples.zMm};
     std::array<int, 3> levels{};
-    std::array<FactorCoding, 3> coding;
-    for (std::size_t f = 0; f < 3; ++f) {
+    for (std::size_t f = 0; f < 3; ++f)
         levels[f] = columns[f]->size() > 0 ? distinctLevels(*columns[f]) : 0;
-        if (levels[f] < 2)
-            throw std::invalid_argument(std::string("the experiment needs at least 2 different ") + kFactorWords[f] +
-                                        "; the data has " + std::to_string(levels[f]));
-        coding[f] = FactorCoding::spanning(columns[f]->minCoeff(), columns[f]->maxCoeff());
-    }
-    std::vector<DeformationTerm> terms = deformationTerms(set);
-    checkLevels(terms, levels);
+    return levels;
+}
 
+/// Whether some term of `terms` has a power of `factor`.
+bool usesFactor(const std::vector<DeformationTerm>& terms, int factor) {
+    return std::any_of(terms.begin(), terms.end(),
+                       [factor](const DeformationTerm& t) { return powerOf(t, factor) > 0; });
+}
+
+/// The least-squares fit (with the stepwise elimination) on the given coding.
+DeformationFit fitCoded(const DeformationSamples& samples, DeformationTermSet set, bool stepwise,
+                        const std::array<FactorCoding, 3>& coding, std::vector<DeformationTerm> terms) {
     std::vector<RemovedTerm> removed;
     for (;;) {
         const DeformationModel shape(coding, terms, Eigen::VectorXd::Zero(static_cast<Eigen::Index>(terms.size())));
@@ -252,6 +279,47 @@ DeformationFit fitDeformationModel(const DeformationSamples& samples, Deformatio
         removed.push_back({terms[static_cast<std::size_t>(weakest)], std::abs(regression.tValues(weakest))});
         terms.erase(terms.begin() + weakest);
     }
+}
+
+void requireLevels(const std::vector<DeformationTerm>& terms, const std::array<int, 3>& levels) {
+    for (int f = 0; f < 3; ++f)
+        if (levels[static_cast<std::size_t>(f)] < 2 && usesFactor(terms, f))
+            throw std::invalid_argument(std::string("the experiment needs at least 2 different ") + kFactorWords[f] +
+                                        "; the data has " + std::to_string(levels[static_cast<std::size_t>(f)]));
+    checkLevels(terms, levels);
+}
+
+}  // namespace
+
+DeformationFit fitDeformationModel(const DeformationSamples& samples, DeformationTermSet set, bool stepwise) {
+    const std::array<int, 3> levels = checkedLevels(samples);
+    const std::vector<DeformationTerm> terms = deformationTerms(set);
+    requireLevels(terms, levels);
+    const std::array<const Eigen::VectorXd*, 3> columns = {&samples.depthMm, &samples.feedMmPerRev, &samples.zMm};
+    std::array<FactorCoding, 3> coding;
+    for (std::size_t f = 0; f < 3; ++f)
+        coding[f] = levels[f] < 2 ? FactorCoding::at(columns[f]->minCoeff())
+                                  : FactorCoding::spanning(columns[f]->minCoeff(), columns[f]->maxCoeff());
+    return fitCoded(samples, set, stepwise, coding, terms);
+}
+
+DeformationFit fitDeformationModel(const DeformationSamples& samples, DeformationTermSet set, bool stepwise,
+                                   const std::array<FactorCoding, 3>& region) {
+    const std::array<int, 3> levels = checkedLevels(samples);
+    const std::vector<DeformationTerm> terms = deformationTerms(set);
+    requireLevels(terms, levels);
+    const std::array<const Eigen::VectorXd*, 3> columns = {&samples.depthMm, &samples.feedMmPerRev, &samples.zMm};
+    for (std::size_t f = 0; f < 3; ++f) {
+        const FactorCoding& c = region[f];
+        for (Eigen::Index i = 0; i < columns[f]->size(); ++i) {
+            const double v = (*columns[f])(i);
+            if (v < c.min || v > c.max)
+                throw std::invalid_argument("row " + std::to_string(i + 1) + ": " + kFactorSymbol[f] + " = " +
+                                            number(v) + " is outside the region " + number(c.min) + " .. " +
+                                            number(c.max) + " the model is fitted for");
+        }
+    }
+    return fitCoded(samples, set, stepwise, region, terms);
 }
 
 }  // namespace tt::core

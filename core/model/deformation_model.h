@@ -34,17 +34,19 @@ enum class DeformationTermSet {
     Interactions,  ///< linear plus every product of different factors: af, az, fz, afz
     Quadratic,     ///< the full quadratic: 1, a, f, z, a², f², z², af, az, fz
     CubicZ,        ///< the full quadratic in a and f (1, a, f, a², f², af) times 1, z, z², z³ (24 terms)
+    CubicFZ,       ///< at one depth of cut: 1, f, f², f³ times 1, z, z², z³ (16 terms, no a)
 };
 
 /// The terms of a set, intercept first.
 std::vector<DeformationTerm> deformationTerms(DeformationTermSet set);
-/// "linear", "interactions", "quadratic", "cubic-z".
+/// "linear", "interactions", "quadratic", "cubic-z", "cubic-fz".
 std::string deformationTermSetName(DeformationTermSet set);
 /// The set named `name` (as deformationTermSetName); throws std::invalid_argument listing the names.
 DeformationTermSet deformationTermSetFromName(const std::string& name);
 
 /// How a factor is coded for the regression: x = (value - centre) / halfRange, so the experiment's
-/// range maps to [-1, 1]; min and max are the range the model was fitted on (its validity).
+/// range maps to [-1, 1]; min and max are the range the model was fitted on (its validity). A factor
+/// held at one value (min = max, a model of one depth of cut) is coded 0 there and no term may use it.
 struct FactorCoding {
     double centre = 0.0;     ///< natural units (mm, mm/rev, mm)
     double halfRange = 1.0;  ///< natural units, > 0
@@ -53,6 +55,11 @@ struct FactorCoding {
 
     /// The coding of values spanning [lo, hi]; throws std::invalid_argument unless lo < hi, both finite.
     static FactorCoding spanning(double lo, double hi);
+    /// The coding of a factor held at `value` (min = max = centre = value, half range 1); throws
+    /// std::invalid_argument unless the value is finite.
+    static FactorCoding at(double value);
+    /// Whether the factor was held at one value (min = max).
+    bool fixed() const { return min == max; }
     /// (value - centre) / halfRange.
     double coded(double value) const { return (value - centre) / halfRange; }
 };
@@ -62,7 +69,8 @@ struct FactorCoding {
 class DeformationModel {
 public:
     /// Throws std::invalid_argument when the terms and coefficients differ in number, the first term
-    /// is not the intercept, a term repeats, an exponent is outside 0..3, or a value is not finite.
+    /// is not the intercept, a term repeats, an exponent is outside 0..3, a value is not finite, or a
+    /// term uses a factor held at one value.
     DeformationModel(std::array<FactorCoding, 3> coding, std::vector<DeformationTerm> terms,
                      Eigen::VectorXd coefficients);
 
@@ -124,10 +132,19 @@ struct DeformationFit {
 
 /// Fits Y(a, f, z) by least squares (fitLinearRegression) on the terms of `set` in the coded factors.
 /// With `stepwise`, backward elimination: while a term other than the intercept has |t| below
-/// t(0.975; n-p), the one with the smallest |t| is removed and the model refitted. Throws
-/// std::invalid_argument naming the problem: too few rows, a value not finite or outside its limits
-/// (a in (0, 20] mm, f in (0, 5] mm/rev, |z| <= 10000 mm, |Y| <= 1e6 µm), a factor with one level
-/// only, or a term the levels cannot separate (a² needs three depths, z³ four positions).
+/// t(0.975; n-p), the one with the smallest |t| is removed and the model refitted. A factor that no
+/// term of the set uses (the depth in "cubic-fz") may have one level: the model is then valid at that
+/// value only. Throws std::invalid_argument naming the problem: too few rows, a value not finite or
+/// outside its limits (a in (0, 20] mm, f in (0, 5] mm/rev, |z| <= 10000 mm, |Y| <= 1e6 µm), a factor
+/// a term uses with one level only, or a term the levels cannot separate (a² needs three depths, z³
+/// four positions).
 DeformationFit fitDeformationModel(const DeformationSamples& samples, DeformationTermSet set, bool stepwise);
+
+/// As fitDeformationModel, with the coding (and so the validity range) given instead of taken from the
+/// data: the region a targeted experiment was planned for (every sample must lie inside it; a factor no
+/// term uses may be held at one value). Throws std::invalid_argument as fitDeformationModel does, and
+/// naming the first sample outside the region.
+DeformationFit fitDeformationModel(const DeformationSamples& samples, DeformationTermSet set, bool stepwise,
+                                   const std::array<FactorCoding, 3>& region);
 
 }  // namespace tt::core

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace tt::core {
 
@@ -217,14 +218,30 @@ PolynomialRegression fitPolynomialRegression(const Eigen::VectorXd& x, const Eig
     return fit;
 }
 
-double LinearRegression::predictionHalfWidth(const Eigen::VectorXd& row, double level) const {
+namespace {
+
+/// t(0.5 + level / 2; n - p) and row' (X'X)^-1 row, after checking the level and the row's size.
+std::pair<double, double> quantileAndLeverage(const LinearRegression& fit, const Eigen::VectorXd& row, double level) {
     if (!(level > 0.0 && level < 1.0)) throw std::invalid_argument("the band level must lie strictly between 0 and 1");
-    if (row.size() != covarianceFactor.rows())
+    if (row.size() != fit.covarianceFactor.rows())
         throw std::invalid_argument("a prediction needs one value per term (" +
-                                    std::to_string(covarianceFactor.rows()) + "), got " + std::to_string(row.size()));
-    const double leverage = std::max(0.0, row.dot(covarianceFactor * row));
-    const StudentT student(static_cast<double>(residualDof));
-    return boost::math::quantile(student, 0.5 + 0.5 * level) * residualSigma * std::sqrt(1.0 + leverage);
+                                    std::to_string(fit.covarianceFactor.rows()) + "), got " +
+                                    std::to_string(row.size()));
+    const double leverage = std::max(0.0, row.dot(fit.covarianceFactor * row));
+    const StudentT student(static_cast<double>(fit.residualDof));
+    return {boost::math::quantile(student, 0.5 + 0.5 * level), leverage};
+}
+
+}  // namespace
+
+double LinearRegression::predictionHalfWidth(const Eigen::VectorXd& row, double level) const {
+    const auto [t, leverage] = quantileAndLeverage(*this, row, level);
+    return t * residualSigma * std::sqrt(1.0 + leverage);
+}
+
+double LinearRegression::confidenceHalfWidth(const Eigen::VectorXd& row, double level) const {
+    const auto [t, leverage] = quantileAndLeverage(*this, row, level);
+    return t * residualSigma * std::sqrt(leverage);
 }
 
 LinearRegression fitLinearRegression(const Eigen::MatrixXd& design, const Eigen::VectorXd& y) {

@@ -36,6 +36,10 @@ struct LinearRegression {
     /// (Student t, n-p degrees of freedom): t sigma sqrt(1 + row' (X'X)^-1 row). Throws
     /// std::invalid_argument for a row of the wrong size or a level outside (0, 1).
     double predictionHalfWidth(const Eigen::VectorXd& row, double level = 0.95) const;
+    /// Half width of the confidence band of the fitted mean at design row `row` at `level`:
+    /// t sigma sqrt(row' (X'X)^-1 row) (statsmodels: OLSResults.get_prediction().se_mean times t).
+    /// Throws std::invalid_argument as predictionHalfWidth does.
+    double confidenceHalfWidth(const Eigen::VectorXd& row, double level = 0.95) const;
 };
 
 /// Fits y = X b by least squares through column-pivoting Householder QR (never the normal equations)

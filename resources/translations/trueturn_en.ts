@@ -3799,15 +3799,7 @@ output</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> mm/rev</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Feeds, mm/rev</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Feed step</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -3864,6 +3856,61 @@ output</source>
     </message>
     <message>
         <source>Model statistics</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refining the model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refining: round %1, bar %2 of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refined at a = %1 mm (%2, test bars added: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Refined in %n round(s): test bars %1, gauge points %2; before, the pass was %3 % off Yc.</source>
+        <translation>
+            <numerusform>Refined in %n round: test bars %1, gauge points %2; before, the pass was %3 % off Yc.</numerusform>
+            <numerusform>Refined in %n rounds: test bars %1, gauge points %2; before, the pass was %3 % off Yc.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The feed step alone leaves the band: try the centred switch.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulator: &lt;b&gt;%1 %&lt;/b&gt; off Yc at z %2 mm, outside ±10 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refine runs a targeted experiment at this depth, refits the model and checks again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Refine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine targeted bars on the simulator, refit the model at this depth and check again</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where a feed step switches to the next: where the next feed reaches Yc (the paper), or where the two feeds&apos; mean is Yc (half the deviation)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at Yc (paper)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centred on Yc</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Feed step, mm/rev</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -3823,16 +3823,8 @@ output</source>
         <translation> мм</translation>
     </message>
     <message>
-        <source> mm/rev</source>
-        <translation> мм/об</translation>
-    </message>
-    <message>
         <source>Feeds, mm/rev</source>
         <translation>Подачи, мм/об</translation>
-    </message>
-    <message>
-        <source>Feed step</source>
-        <translation>Шаг подачи</translation>
     </message>
     <message>
         <source>Pass z, mm</source>
@@ -3889,6 +3881,62 @@ output</source>
     <message>
         <source>Model statistics</source>
         <translation>Статистика модели</translation>
+    </message>
+    <message>
+        <source>Refining the model</source>
+        <translation>Уточнение модели</translation>
+    </message>
+    <message>
+        <source>Refining: round %1, bar %2 of %3</source>
+        <translation>Уточнение: раунд %1, образец %2 из %3</translation>
+    </message>
+    <message>
+        <source>Refined at a = %1 mm (%2, test bars added: %3)</source>
+        <translation>Уточнена при a = %1 мм (%2, добавлено образцов: %3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Refined in %n round(s): test bars %1, gauge points %2; before, the pass was %3 % off Yc.</source>
+        <translation>
+            <numerusform>Уточнено за %n раунд: образцов %1, точек замера %2; до этого проход отклонялся от Yc на %3 %.</numerusform>
+            <numerusform>Уточнено за %n раунда: образцов %1, точек замера %2; до этого проход отклонялся от Yc на %3 %.</numerusform>
+            <numerusform>Уточнено за %n раундов: образцов %1, точек замера %2; до этого проход отклонялся от Yc на %3 %.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The feed step alone leaves the band: try the centred switch.</source>
+        <translation>Один только шаг подачи выводит из допуска: попробуйте переключение по середине.</translation>
+    </message>
+    <message>
+        <source>Simulator: &lt;b&gt;%1 %&lt;/b&gt; off Yc at z %2 mm, outside ±10 %.</source>
+        <translation>Симулятор: отклонение от Yc &lt;b&gt;%1 %&lt;/b&gt; при z %2 мм, вне ±10 %.</translation>
+    </message>
+    <message>
+        <source>Refine runs a targeted experiment at this depth, refits the model and checks again.</source>
+        <translation>«Уточнить» проведёт целевой эксперимент на этой глубине, перестроит модель и проверит снова.</translation>
+    </message>
+    <message>
+        <source>Refine</source>
+        <translation>Уточнить</translation>
+    </message>
+    <message>
+        <source>Machine targeted bars on the simulator, refit the model at this depth and check again</source>
+        <translation>Обработать целевые образцы на симуляторе, перестроить модель на этой глубине и проверить снова</translation>
+    </message>
+    <message>
+        <source>Where a feed step switches to the next: where the next feed reaches Yc (the paper), or where the two feeds&apos; mean is Yc (half the deviation)</source>
+        <translation>Где подача сменяется следующей: где следующая подача достигает Yc (статья) или где среднее двух подач равно Yc (вдвое меньше отклонение)</translation>
+    </message>
+    <message>
+        <source>at Yc (paper)</source>
+        <translation>по статье</translation>
+    </message>
+    <message>
+        <source>centred on Yc</source>
+        <translation>вокруг Yc</translation>
+    </message>
+    <message>
+        <source>Feed step, mm/rev</source>
+        <translation>Шаг, мм/об</translation>
     </message>
 </context>
 <context>

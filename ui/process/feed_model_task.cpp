@@ -7,6 +7,7 @@
 #include <exception>
 
 #include "config/deformation_csv.h"
+#include "config/feed_refinement_json.h"
 #include "config/preset_library.h"
 #include "core/sim/shaft/deformation_experiment.h"
 #include "core/sim/shaft/lathe_pass.h"
@@ -77,6 +78,7 @@ void FeedModelTask::simulateAndFit(const config::FeedSchedulingSetup& setup, con
         file.job = setup.job;
         promise.setProgressValue(100);
         result.model = std::move(file);
+        result.samples = samples;
     });
 }
 
@@ -96,6 +98,7 @@ void FeedModelTask::fitCsv(const QString& path, core::DeformationTermSet terms, 
         }
         promise.setProgressValue(100);
         result.model = std::move(model);
+        result.samples = csv.samples;
     });
 }
 
@@ -106,6 +109,31 @@ void FeedModelTask::check(const core::LatheSetup& lathe, const core::FeedSchedul
         promise.setProgressValue(80);
         result.check = core::checkFeedSchedule(pass, schedule, request);
         promise.setProgressValue(100);
+    });
+}
+
+void FeedModelTask::refine(const FeedRefineJob& job) {
+    run([this, job](QPromise<FeedTaskResult>& promise, FeedTaskResult& result) {
+        const int rounds = job.options.maxRounds;
+        const auto progress = [&](int round, std::size_t done, std::size_t bars) {
+            const double share = (round - 1 + static_cast<double>(done) / static_cast<double>(bars)) / rounds;
+            promise.setProgressValue(static_cast<int>(100.0 * share));
+            // Queued to the GUI thread: the label says which round and bar.
+            QMetaObject::invokeMethod(
+                this,
+                [this, round, done, bars] {
+                    emit refineProgress(round, static_cast<int>(done), static_cast<int>(bars));
+                },
+                Qt::QueuedConnection);
+            return !promise.isCanceled();
+        };
+        core::FeedRefinement refinement =
+            core::refineFeedSchedule(job.lathe, job.model.model, job.model.statistics.residualSigmaUm, job.measured,
+                                     job.request, job.options, job.seed, progress);
+        if (const core::FeedRefinementRound* last = refinement.lastScheduled())
+            result.refinedModel = config::refinedModelFile(*last->fit, job.model, refinement.barCount());
+        promise.setProgressValue(100);
+        result.refinement = std::move(refinement);
     });
 }
 

@@ -3,19 +3,35 @@
 #include <QFutureWatcher>
 #include <QObject>
 #include <QString>
+#include <cstdint>
 #include <optional>
 
 #include "config/deformation_model_config.h"
 #include "config/feed_schedule_config.h"
+#include "core/sim/shaft/feed_refinement.h"
 #include "core/sim/shaft/feed_schedule_check.h"
 
 namespace tt::ui {
 
-/// What a task of the Feed schedule tool produced: a model, a check on the simulator, or why not.
+/// What a task of the Feed schedule tool produced: a model (with the measurements it was fitted on), a
+/// check on the simulator, a refinement of the model, or why not.
 struct FeedTaskResult {
     std::optional<config::DeformationModelFile> model;
+    std::optional<core::DeformationSamples> samples;  ///< the measurements of `model`
     std::optional<core::FeedScheduleCheck> check;
-    QString error;  ///< the engine's message when it failed
+    std::optional<core::FeedRefinement> refinement;
+    std::optional<config::DeformationModelFile> refinedModel;  ///< the refinement's local model, if it has one
+    QString error;                                             ///< the engine's message when it failed
+};
+
+/// What a refinement starts from: the model, its measurements (may be empty) and the request.
+struct FeedRefineJob {
+    core::LatheSetup lathe;
+    config::DeformationModelFile model;
+    core::DeformationSamples measured;
+    core::FeedScheduleRequest request;
+    core::FeedRefinementOptions options;
+    std::uint64_t seed = 1;
 };
 
 /// The long work of the Feed schedule tool, one task at a time in a worker thread (QtConcurrent) with
@@ -40,12 +56,17 @@ public:
     /// Machines the schedule on the simulated lathe `lathe` at the request's depth.
     void check(const core::LatheSetup& lathe, const core::FeedSchedule& schedule,
                const core::FeedScheduleRequest& request);
+    /// Closes the loop on the model (refineFeedSchedule): targeted bars on the simulator, the local model
+    /// refitted, the pass rescheduled and machined, round after round; progress bar by bar.
+    void refine(const FeedRefineJob& job);
     /// Asks the running task to stop; `finished` then reports it as cancelled.
     void cancel();
 
 signals:
     /// Progress of the running task, 0 .. 100 %.
     void progress(int percent);
+    /// Where a refinement is: round, bars done in it and bars planned in it (in the GUI thread).
+    void refineProgress(int round, int barsDone, int bars);
     /// The task ended: its result, or `cancelled`.
     void finished(const tt::ui::FeedTaskResult& result, bool cancelled);
 

@@ -91,7 +91,9 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
       m_minLength(new QDoubleSpinBox(this)),
       m_dialectLabel(new QLabel(this)),
       m_dialect(new QComboBox(this)),
+      m_switch(new QComboBox(this)),
       m_checkButton(new QPushButton(this)),
+      m_refine(new QPushButton(this)),
       m_save(new QPushButton(this)),
       m_levelTitle(new QLabel(this)),
       m_levelValue(new QLabel(this)),
@@ -116,6 +118,8 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
     connect(m_fitCsv, &QPushButton::clicked, this, &FeedScheduleTool::fitCsvFile);
     connect(m_load, &QPushButton::clicked, this, &FeedScheduleTool::loadModelFile);
     connect(m_checkButton, &QPushButton::clicked, this, &FeedScheduleTool::checkOnSimulator);
+    connect(m_refine, &QPushButton::clicked, this, &FeedScheduleTool::refineModel);
+    connect(m_task, &FeedModelTask::refineProgress, this, &FeedScheduleTool::showRefineProgress);
     connect(m_save, &QPushButton::clicked, this, &FeedScheduleTool::saveProgram);
     connect(m_cancel, &QPushButton::clicked, m_task, &FeedModelTask::cancel);
     connect(m_task, &FeedModelTask::progress, m_progress, &QProgressBar::setValue);
@@ -124,6 +128,7 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
     for (QDoubleSpinBox* box : {m_depth, m_feedMin, m_feedMax, m_feedStep, m_zStart, m_zEnd, m_minLength})
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { reschedule(); });
     connect(m_dialect, &QComboBox::currentIndexChanged, this, [this] { updateProgram(); });
+    connect(m_switch, &QComboBox::currentIndexChanged, this, [this] { reschedule(); });
     setBusy(false, QString());
     retranslate();
     // The built-in set-up's experiments and model, so the page shows a schedule at once (worker thread).
@@ -142,6 +147,8 @@ void FeedScheduleTool::buildLayout() {
     m_load->setObjectName(QStringLiteral("feedLoadModel"));
     m_cancel->setObjectName(QStringLiteral("feedCancel"));
     m_checkButton->setObjectName(QStringLiteral("feedCheck"));
+    m_refine->setObjectName(QStringLiteral("feedRefine"));
+    m_switch->setObjectName(QStringLiteral("feedSwitch"));
     m_save->setObjectName(QStringLiteral("feedSave"));
     m_level->setObjectName(QStringLiteral("feedLevel"));
     m_result->setObjectName(QStringLiteral("feedResult"));
@@ -176,7 +183,11 @@ void FeedScheduleTool::buildLayout() {
     form->setLabelAlignment(Qt::AlignRight | Qt::AlignVCenter);
     form->addRow(m_depthLabel, m_depth);
     form->addRow(m_feedsLabel, feeds);
-    form->addRow(m_feedStepLabel, m_feedStep);
+    // The switch rule beside the step it switches (a row of its own would make the page too tall for 800 px).
+    auto* step = new QHBoxLayout;
+    step->addWidget(m_feedStep);
+    step->addWidget(m_switch, 1);
+    form->addRow(m_feedStepLabel, step);
     form->addRow(m_zLabel, zs);
     form->addRow(m_minLengthLabel, m_minLength);
     form->addRow(m_dialectLabel, m_dialect);
@@ -184,7 +195,10 @@ void FeedScheduleTool::buildLayout() {
     auto* left = new QVBoxLayout;
     left->addWidget(m_modelBox);
     left->addWidget(m_passBox);
-    left->addWidget(m_checkButton);
+    auto* check = new QHBoxLayout;
+    check->addWidget(m_checkButton, 1);
+    check->addWidget(m_refine, 1);
+    left->addLayout(check);
     left->addWidget(m_save);
     left->addStretch(1);
 
@@ -256,9 +270,12 @@ void FeedScheduleTool::configureBoxes() {
     setBox(m_zEnd, -10000.0, 10000.0, 1, 5.0, QString());
     for (QDoubleSpinBox* paired : {m_feedMin, m_feedMax, m_zStart, m_zEnd})
         paired->setMinimumWidth(110);
+    m_feedStep->setMinimumWidth(96);
     setBox(m_minLength, 0.0, 1000.0, 1, 1.0, QString());
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::Fanuc));
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::LinuxCnc));
+    m_switch->addItem(QString(), static_cast<int>(core::FeedSwitchRule::AtLevel));
+    m_switch->addItem(QString(), static_cast<int>(core::FeedSwitchRule::Centred));
     if (!m_preset) return;
     const core::FeedScheduleRequest& r = m_preset->request;
     for (auto [box, value] : {std::pair{m_depth, r.depthMm},
@@ -281,7 +298,7 @@ bool FeedScheduleTool::busy() const {
 
 void FeedScheduleTool::setBusy(bool busy, const QString& what) {
     m_taskWhat = what;
-    for (QWidget* w : std::initializer_list<QWidget*>{m_simulate, m_fitCsv, m_load, m_checkButton})
+    for (QWidget* w : std::initializer_list<QWidget*>{m_simulate, m_fitCsv, m_load, m_checkButton, m_refine})
         w->setEnabled(!busy);
     m_progress->setVisible(busy);
     m_cancel->setVisible(busy);
@@ -335,16 +352,67 @@ void FeedScheduleTool::checkOnSimulator() {
     m_task->check(m_modelSetup->lathe, *m_schedule, request());
 }
 
+void FeedScheduleTool::refineModel() {
+    if (busy() || !m_schedule || !m_modelSetup || !m_model || !checkMisses()) return;
+    m_taskError.clear();
+    // The fitted model and its measurements at this depth: the refinement starts from them.
+    const FeedRefineJob job{m_modelSetup->lathe,
+                            *m_model,
+                            m_samples.value_or(core::DeformationSamples{}),
+                            request(),
+                            core::FeedRefinementOptions{},
+                            m_model->seed.value_or(1)};
+    setBusy(true, tr("Refining the model"));
+    m_task->refine(job);
+}
+
+void FeedScheduleTool::showRefineProgress(int round, int barsDone, int bars) {
+    if (!busy()) return;
+    m_progress->setFormat(tr("Refining: round %1, bar %2 of %3").arg(round).arg(barsDone).arg(bars) +
+                          QStringLiteral(" (%p %)"));
+}
+
+bool FeedScheduleTool::checkMisses() const {
+    return m_check && m_check->maxDeviationPct > core::kFeedScheduleTolerancePct;
+}
+
 void FeedScheduleTool::taskDone(const FeedTaskResult& result, bool cancelled) {
     m_taskError = cancelled ? tr("Stopped.") : result.error;
-    if (result.model) useModel(*result.model);
+    if (result.model) {
+        m_samples = result.samples;
+        useModel(*result.model);
+    }
     if (result.check) m_check = result.check;
+    if (result.refinement) {
+        m_refinement = result.refinement;
+        m_refinedModel = result.refinedModel;
+        m_refinedFor = request();
+        reschedule();  // on the refined model: the schedule of its last round
+        const core::FeedRefinementRound* last = m_refinement->lastScheduled();
+        m_check = last ? last->check : m_refinement->initialCheck;
+        if (!last) m_refinedFor.reset();
+        showSchedule();
+    }
     setBusy(false, QString());
     emit taskFinished();
 }
 
+const config::DeformationModelFile* FeedScheduleTool::activeModel() const {
+    if (m_refinedModel && m_refinedFor) {
+        const core::FeedScheduleRequest r = request();
+        const core::FeedScheduleRequest& f = *m_refinedFor;
+        if (r.depthMm == f.depthMm && r.feedMinMmPerRev == f.feedMinMmPerRev &&
+            r.feedMaxMmPerRev == f.feedMaxMmPerRev && r.zStartMm == f.zStartMm && r.zEndMm == f.zEndMm)
+            return &*m_refinedModel;
+    }
+    return m_model ? &*m_model : nullptr;
+}
+
 void FeedScheduleTool::useModel(config::DeformationModelFile file) {
     m_model = std::move(file);
+    m_refinedModel.reset();
+    m_refinedFor.reset();
+    m_refinement.reset();
     m_modelSetup.reset();
     if (!m_model->preset.isEmpty()) {
         try {
@@ -379,6 +447,7 @@ core::FeedScheduleRequest FeedScheduleTool::request() const {
     r.zEndMm = m_zEnd->value();
     r.levelFraction = static_cast<double>(m_level->value()) / kLevelSteps;
     r.minLengthMm = m_minLength->value();
+    r.switchRule = static_cast<core::FeedSwitchRule>(m_switch->currentData().toInt());
     return r;
 }
 
@@ -391,10 +460,12 @@ void FeedScheduleTool::reschedule() {
     m_times.reset();
     m_check.reset();  // a check belongs to the schedule it was made for
     m_problem.clear();
-    if (m_model) {
+    if (const config::DeformationModelFile* model = activeModel()) {
+        m_modelPanel->showModel(model);
+        showModelSummary();
         try {
-            m_schedule = core::scheduleFeed(m_model->model, request());
-            if (m_model->job) m_times = core::machiningTimes(*m_schedule, request(), m_model->job->spindleRpm);
+            m_schedule = core::scheduleFeed(model->model, request());
+            if (model->job) m_times = core::machiningTimes(*m_schedule, request(), model->job->spindleRpm);
         } catch (const std::exception& e) {
             m_problem = QString::fromStdString(e.what());
         }
@@ -413,13 +484,15 @@ void FeedScheduleTool::plotCurves() {
     m_curves->clear();
     m_curves->setTitle(
         tr("Deformation Y; the tool travels z %1 → %2 mm").arg(fixed(m_zStart->value(), 0), fixed(m_zEnd->value(), 0)));
-    if (!m_model) return;
+    const config::DeformationModelFile* active = activeModel();
+    if (!active) return;
+    const core::DeformationModel& model = active->model;
     const core::FeedScheduleRequest r = request();
     double lo = std::min(r.zStartMm, r.zEndMm);
     double hi = std::max(r.zStartMm, r.zEndMm);
     if (!(hi > lo)) {  // no pass to draw along: the model's whole range
-        lo = m_model->model.coding(core::DeformationFactor::Axial).min;
-        hi = m_model->model.coding(core::DeformationFactor::Axial).max;
+        lo = model.coding(core::DeformationFactor::Axial).min;
+        hi = model.coding(core::DeformationFactor::Axial).max;
     }
     std::vector<double> z(kCurvePoints);
     for (int i = 0; i < kCurvePoints; ++i)
@@ -428,7 +501,7 @@ void FeedScheduleTool::plotCurves() {
         const double f = r.feedMinMmPerRev + (r.feedMaxMmPerRev - r.feedMinMmPerRev) * k / (kFamily - 1);
         std::vector<double> y(z.size());
         for (std::size_t i = 0; i < z.size(); ++i)
-            y[i] = m_model->model.deformationUm(r.depthMm, f, z[i]);
+            y[i] = model.deformationUm(r.depthMm, f, z[i]);
         m_curves->setSeries(QStringLiteral("family%1").arg(k), tr("%1 mm/rev").arg(fixed(f, 3)), z, y, familyColor(k));
     }
     if (m_schedule) {
@@ -440,7 +513,7 @@ void FeedScheduleTool::plotCurves() {
             for (int i = 0; i <= 8; ++i) {
                 const double zz = s.zFromMm + (s.zToMm - s.zFromMm) * i / 8.0;
                 sz.push_back(zz);
-                sy.push_back(m_model->model.deformationUm(r.depthMm, s.feedMmPerRev, zz));
+                sy.push_back(model.deformationUm(r.depthMm, s.feedMmPerRev, zz));
             }
         }
         m_curves->setSeries(QStringLiteral("scheduled"), tr("scheduled"), sz, sy, kScheduleColor);
@@ -479,13 +552,14 @@ void FeedScheduleTool::plotFeeds() {
 
 void FeedScheduleTool::updateProgram() {
     m_program.clear();
-    if (m_schedule && m_model && m_model->job) {
-        devices::FeedPassJob job = *m_model->job;
+    const config::DeformationModelFile* active = activeModel();
+    if (m_schedule && active && active->job) {
+        devices::FeedPassJob job = *active->job;
         job.depthMm = m_depth->value();
         job.dialect = static_cast<devices::GCodeDialect>(m_dialect->currentData().toInt());
         try {
             m_program = QString::fromStdString(
-                devices::writeFeedScheduleGCode(config::feedPassProgram(*m_schedule, request(), *m_model), job));
+                devices::writeFeedScheduleGCode(config::feedPassProgram(*m_schedule, request(), *active), job));
         } catch (const std::exception& e) {
             m_problem = QString::fromStdString(e.what());
         }
@@ -517,10 +591,15 @@ void FeedScheduleTool::showModelSummary() {
                                     : tr("The built-in set-up cannot be read: %1").arg(m_presetProblem));
         return;
     }
-    const config::DeformationModelStatistics& s = m_model->statistics;
-    const QString source = m_model->sourceFile == QStringLiteral("simulated")
-                               ? tr("Simulated experiments (%1)").arg(m_model->preset)
-                               : m_model->sourceFile;
+    const config::DeformationModelFile* active = activeModel();
+    const config::DeformationModelStatistics& s = active->statistics;
+    QString source = m_model->sourceFile == QStringLiteral("simulated")
+                         ? tr("Simulated experiments (%1)").arg(m_model->preset)
+                         : m_model->sourceFile;
+    if (active != &*m_model)
+        source = tr("Refined at a = %1 mm (%2, test bars added: %3)")
+                     .arg(fixed(active->model.coding(core::DeformationFactor::Depth).centre, 2), source)
+                     .arg(m_refinement ? m_refinement->barCount() : 0);
     m_modelSummary->setText(tr("%1: %2 points, %3 terms. R² %4, F %5 (table %6), 2σ %7 µm.")
                                 .arg(source)
                                 .arg(s.pointCount)
@@ -529,8 +608,22 @@ void FeedScheduleTool::showModelSummary() {
                                      QLocale().toString(s.fCritical95, 'g', 3), fixed(s.twoSigmaUm(), 2)));
 }
 
+QString FeedScheduleTool::refinementLine() const {
+    const core::FeedRefinement& r = *m_refinement;
+    QString line = tr("Refined in %n round(s): test bars %1, gauge points %2; before, the pass was %3 % off Yc.", "",
+                      static_cast<int>(r.rounds.size()))
+                       .arg(r.barCount())
+                       .arg(r.gaugePointCount())
+                       .arg(fixed(r.initialCheck.maxDeviationPct, 1));
+    if (!r.advice.empty())
+        line += QLatin1Char(' ') + tr("The feed step alone leaves the band: try the centred switch.");
+    return line;
+}
+
 void FeedScheduleTool::showResult() {
     m_checkButton->setEnabled(!busy() && m_schedule && m_modelSetup);
+    const bool refinedActive = m_model && activeModel() != &*m_model;
+    m_refine->setEnabled(!busy() && m_schedule && m_modelSetup && checkMisses() && !refinedActive);
     if (m_schedule) {
         m_levelValue->setText(tr("%1 µm").arg(fixed(m_schedule->levelUm, 2)));
         m_levelLow->setText(tr("Y1 %1 µm\nquality").arg(fixed(m_schedule->y1Um, 1)));
@@ -558,10 +651,17 @@ void FeedScheduleTool::showResult() {
             line += QLatin1Char(' ') + tr("The model names no machine job (spindle speed): no times, no program.");
         lines << line;
     }
-    if (m_check)
+    if (refinedActive && m_refinement) lines << refinementLine();
+    if (checkMisses())
+        lines << QStringLiteral("<span style='color:#c62828'>%1</span>")
+                     .arg(tr("Simulator: <b>%1 %</b> off Yc at z %2 mm, outside ±10 %.")
+                              .arg(fixed(m_check->maxDeviationPct, 1), fixed(m_check->worstZMm, 1)));
+    else if (m_check)
         lines << tr("Simulator: within <b>%1 %</b> of Yc (worst at z %2 mm); constant fmax exceeds Yc by %3 %.")
                      .arg(fixed(m_check->maxDeviationPct, 1), fixed(m_check->worstZMm, 1),
                           fixed(m_check->feedMaxExcessPct, 0));
+    if (checkMisses() && !refinedActive)
+        lines << tr("Refine runs a targeted experiment at this depth, refits the model and checks again.");
     else if (m_schedule && !m_modelSetup)
         lines << tr("No simulator for this model's set-up: the check is not available.");
     m_result->setText(lines.join(QStringLiteral("<br>")));
@@ -578,16 +678,22 @@ void FeedScheduleTool::retranslate() {
     m_passBox->setTitle(tr("Pass"));
     m_depthLabel->setText(tr("Depth of cut a"));
     m_depth->setSuffix(tr(" mm"));
-    m_feedStep->setSuffix(tr(" mm/rev"));
     m_minLength->setSuffix(tr(" mm"));
     m_feedsLabel->setText(tr("Feeds, mm/rev"));
-    m_feedStepLabel->setText(tr("Feed step"));
+    m_feedStepLabel->setText(tr("Feed step, mm/rev"));
     m_zLabel->setText(tr("Pass z, mm"));
     m_minLengthLabel->setText(tr("Shortest segment"));
     m_dialectLabel->setText(tr("CNC dialect"));
     m_dialect->setItemText(0, tr("Fanuc-style"));
     m_dialect->setItemText(1, tr("LinuxCNC"));
     m_checkButton->setText(tr("Check on simulator"));
+    m_refine->setText(tr("Refine"));
+    m_refine->setToolTip(tr("Machine targeted bars on the simulator, refit the model at this depth and check again"));
+    m_switch->setToolTip(
+        tr("Where a feed step switches to the next: where the next feed reaches Yc (the paper), "
+           "or where the two feeds' mean is Yc (half the deviation)"));
+    m_switch->setItemText(0, tr("at Yc (paper)"));
+    m_switch->setItemText(1, tr("centred on Yc"));
     m_save->setText(tr("Save program…"));
     m_levelTitle->setText(tr("Level Yc"));
     m_curves->setAxisTitles(tr("z, mm"), tr("Y, µm"));

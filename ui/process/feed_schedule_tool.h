@@ -5,6 +5,7 @@
 #include "config/deformation_model_config.h"
 #include "config/feed_schedule_config.h"
 #include "core/control/feed_scheduler.h"
+#include "core/sim/shaft/feed_refinement.h"
 #include "core/sim/shaft/feed_schedule_check.h"
 #include "ui/app_context.h"
 #include "ui/process/process_tool.h"
@@ -34,7 +35,10 @@ struct FeedTaskResult;
 /// the pass (depth, feed range and step, z from and to, L_min); the family of curves Y(z) for several
 /// feeds with the level Yc and the resulting staircase of feeds; Yc on a slider between Y1 (quality)
 /// and Y2 (productivity), the schedule and the time saved following it; the check on the simulator;
-/// the CNC program with line numbers, saved to a file. Long work runs in FeedModelTask's thread.
+/// the CNC program with line numbers, saved to a file. When the check misses the ±10 % band, Refine
+/// closes the loop on the model (targeted bars on the simulator, the model refitted at the depth, the
+/// pass rescheduled and checked, round by round); the refined model is used while the pass stays at its
+/// depth, feed range and z. Long work runs in FeedModelTask's thread.
 class FeedScheduleTool : public ProcessTool {
     Q_OBJECT
 public:
@@ -54,6 +58,8 @@ public:
     void loadModelFile();
     /// Machines the current schedule on the simulator of the model's set-up (worker).
     void checkOnSimulator();
+    /// Refines the model for the current pass where its check missed (worker; see FeedModelTask::refine).
+    void refineModel();
     /// Asks for a file name and writes the program; false when nothing was written.
     bool saveProgram();
     /// Sets Yc as a fraction of [Y1, Y2] (what dragging the slider does).
@@ -61,8 +67,13 @@ public:
 
     /// Whether a task runs in the worker.
     bool busy() const;
-    /// The model in use (with its statistics, set-up and job), if any.
+    /// The model fitted or loaded (with its statistics, set-up and job), if any.
     const std::optional<config::DeformationModelFile>& model() const { return m_model; }
+    /// The model the schedule rests on: the refined one when the pass is the one it was refined for,
+    /// else model(); nullptr when there is none.
+    const config::DeformationModelFile* activeModel() const;
+    /// The last refinement, if any (kept until another model is fitted or loaded).
+    const std::optional<core::FeedRefinement>& refinement() const { return m_refinement; }
     /// The schedule of the current inputs, or nothing when they cannot be scheduled (see problem()).
     const std::optional<core::FeedSchedule>& schedule() const { return m_schedule; }
     /// Machining times of the schedule and of constant fmin and fmax (when the model has a job), s.
@@ -84,6 +95,8 @@ public:
     QDoubleSpinBox* feedStepBox() const { return m_feedStep; }
     QDoubleSpinBox* minLengthBox() const { return m_minLength; }
     QComboBox* dialectBox() const { return m_dialect; }
+    QComboBox* switchBox() const { return m_switch; }
+    QPushButton* refineButton() const { return m_refine; }
     QLabel* resultLabel() const { return m_result; }
     DeformationModelPanel* modelPanel() const { return m_modelPanel; }
 
@@ -105,12 +118,19 @@ private:
     void updateProgram();
     void showResult();
     void showModelSummary();
+    void showRefineProgress(int round, int barsDone, int bars);
+    bool checkMisses() const;
+    QString refinementLine() const;
 
     AppContext& m_context;
     FeedModelTask* m_task;
     std::optional<config::FeedSchedulingSetup> m_preset;  ///< the built-in feed-scheduling set-up
     QString m_presetProblem;
     std::optional<config::DeformationModelFile> m_model;
+    std::optional<core::DeformationSamples> m_samples;           ///< the measurements m_model was fitted on
+    std::optional<config::DeformationModelFile> m_refinedModel;  ///< the local model of the last refinement
+    std::optional<core::FeedScheduleRequest> m_refinedFor;       ///< the pass it was refined for
+    std::optional<core::FeedRefinement> m_refinement;
     std::optional<config::FeedSchedulingSetup> m_modelSetup;  ///< the simulator the model came from, if known
     std::optional<core::FeedSchedule> m_schedule;
     std::optional<core::MachiningTimes> m_times;
@@ -142,7 +162,9 @@ private:
     QDoubleSpinBox* m_minLength;
     QLabel* m_dialectLabel;
     QComboBox* m_dialect;
+    QComboBox* m_switch;
     QPushButton* m_checkButton;
+    QPushButton* m_refine;
     QPushButton* m_save;
     QLabel* m_levelTitle;
     QLabel* m_levelValue;

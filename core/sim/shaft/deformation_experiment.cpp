@@ -57,4 +57,38 @@ DeformationSamples runDeformationExperiment(const LatheSetup& setup, const Defor
     return s;
 }
 
+DeformationSamples runTargetedBars(const LatheSetup& setup, double depthMm, const std::vector<RefinementBar>& bars,
+                                   std::uint64_t seed, std::int64_t firstBar,
+                                   const DeformationExperimentProgress& progress) {
+    if (bars.empty() || bars.size() > 1000)
+        throw std::invalid_argument("a targeted experiment needs 1 .. 1000 bars (got " + std::to_string(bars.size()) +
+                                    ")");
+    const LathePass pass(setup, depthMm);
+    const LatheMicrometerModel micrometer(setup.micrometer, seed);
+    const double nominal = setup.workpiece.finishDiameterMm;
+    Eigen::Index rows = 0;
+    for (const RefinementBar& b : bars)
+        rows += static_cast<Eigen::Index>(b.zMm.size());
+    DeformationSamples s;
+    s.depthMm = Eigen::VectorXd::Constant(rows, depthMm);
+    s.feedMmPerRev.resize(rows);
+    s.zMm.resize(rows);
+    s.deformationUm.resize(rows);
+    Eigen::Index row = 0;
+    for (std::size_t k = 0; k < bars.size(); ++k) {
+        const RefinementBar& bar = bars[k];
+        const std::int64_t number = firstBar + static_cast<std::int64_t>(k);
+        for (std::size_t i = 0; i < bar.zMm.size(); ++i) {
+            const double trueDiameter = nominal + 2.0 * pass.deformationMm(bar.zMm[i], bar.feedMmPerRev);
+            const double read = micrometer.readMm(trueDiameter, number, static_cast<int>(i));
+            s.feedMmPerRev(row) = bar.feedMmPerRev;
+            s.zMm(row) = bar.zMm[i];
+            s.deformationUm(row) = 1000.0 * 0.5 * (read - nominal);
+            ++row;
+        }
+        if (progress && !progress(k + 1, bars.size())) throw DeformationExperimentStopped();
+    }
+    return s;
+}
+
 }  // namespace tt::core

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/control/feed_refinement_design.h"
 #include "core/model/deformation_model.h"
 #include "core/sim/shaft/lathe_setup.h"
 
@@ -39,5 +40,17 @@ public:
 /// `progress` returns false.
 DeformationSamples runDeformationExperiment(const LatheSetup& setup, const DeformationExperimentPlan& plan,
                                             const DeformationExperimentProgress& progress = {});
+
+/// Turns the bars of a targeted experiment (FeedRefinementRound) at depth `depthMm`, each at its feed
+/// along its whole length, and gauges each at its own positions with the set-up's micrometer, as
+/// runDeformationExperiment does. The bars are numbered from `firstBar` for the micrometer's noise
+/// streams (each bar and gauge point its own stream), so bars of different rounds share no noise with
+/// each other or with the grid experiment (bars 1 .. 2500). Rows in the order of the bars and their
+/// points; `progress` is called after each bar. Throws std::invalid_argument on a depth or feed outside
+/// the pass's limits, a position off the shaft, no bars or more than 1000; DeformationExperimentStopped
+/// when `progress` returns false.
+DeformationSamples runTargetedBars(const LatheSetup& setup, double depthMm, const std::vector<RefinementBar>& bars,
+                                   std::uint64_t seed, std::int64_t firstBar,
+                                   const DeformationExperimentProgress& progress = {});
 
 }  // namespace tt::core

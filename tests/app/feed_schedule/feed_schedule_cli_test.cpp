@@ -133,6 +133,113 @@ TEST_F(FeedScheduleCommands, ScheduleHoldsTheLevelOnTheSimulatorAndSavesTime) {
     EXPECT_GT(verify.value(QStringLiteral("fmax_excess_pct")).toDouble(), 10.0);
 }
 
+TEST_F(FeedScheduleCommands, VerifyOutsideTheBandExitsThreeNamingTheWorstPointAndProposes) {
+    // a = 0.5 mm at Y1 with the paper's rule: a level of about 6.5 µm against the model's error there.
+    const QString file = model();
+    QStringList args = presetRequest(file);
+    args[args.indexOf(QStringLiteral("--depth")) + 1] = QStringLiteral("0.5");
+    args << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--verify")
+         << QStringLiteral("--json");
+    const CliResult r = runTrueturn(args);
+    ASSERT_EQ(r.exitCode, 3) << qPrintable(r.err);
+    EXPECT_EQ(r.err.trimmed().count(QLatin1Char('\n')), 0) << qPrintable(r.err);
+    const QJsonObject j = r.json();  // the JSON is written all the same
+    const QJsonObject verify = j.value(QStringLiteral("verify")).toObject();
+    const double worst = verify.value(QStringLiteral("max_deviation_pct")).toDouble();
+    EXPECT_GT(worst, 10.0);
+    EXPECT_FALSE(verify.value(QStringLiteral("within_10_pct")).toBool());
+    const QString where =
+        QStringLiteral("z = %1 mm").arg(verify.value(QStringLiteral("worst_z")).toDouble(), 0, 'f', 1);
+    EXPECT_TRUE(r.err.contains(where)) << qPrintable(r.err) << " / " << qPrintable(where);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("%1 % off Yc").arg(worst, 0, 'f', 2))) << qPrintable(r.err);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("--refine"))) << qPrintable(r.err);
+    // The proposal: bars at 0.5 mm with their gauge points, and the band the plan expects.
+    const QJsonObject proposal = j.value(QStringLiteral("proposal")).toObject();
+    EXPECT_DOUBLE_EQ(proposal.value(QStringLiteral("depth_mm")).toDouble(), 0.5);
+    const QJsonArray bars = proposal.value(QStringLiteral("bars")).toArray();
+    ASSERT_GE(bars.size(), 1);
+    EXPECT_EQ(proposal.value(QStringLiteral("bar_count")).toInt(), bars.size());
+    EXPECT_EQ(bars.first().toObject().value(QStringLiteral("z")).toArray().size(), 33);
+    EXPECT_LT(proposal.value(QStringLiteral("half_width_after_um")).toDouble(),
+              proposal.value(QStringLiteral("half_width_before_um")).toDouble());
+    EXPECT_FALSE(j.contains(QStringLiteral("refine")));
+    // Inside the band the command exits 0 and proposes nothing (the preset's own request).
+    QStringList ok = presetRequest(file);
+    ok << QStringLiteral("--level-fraction") << QStringLiteral("0.5") << QStringLiteral("--verify")
+       << QStringLiteral("--json");
+    const CliResult held = runTrueturn(ok);
+    ASSERT_EQ(held.exitCode, 0) << qPrintable(held.err);
+    EXPECT_TRUE(held.err.isEmpty()) << qPrintable(held.err);
+    EXPECT_FALSE(held.json().contains(QStringLiteral("proposal")));
+}
+
+TEST_F(FeedScheduleCommands, RefineClosesTheLoopAndSaysHowItGotThere) {
+    const QString file = model();
+    QStringList args = presetRequest(file);
+    args[args.indexOf(QStringLiteral("--depth")) + 1] = QStringLiteral("0.5");
+    args[args.indexOf(QStringLiteral("--feed-step")) + 1] = QStringLiteral("0.01");
+    const QString refined = path(QStringLiteral("refined.json"));
+    const QString program = path(QStringLiteral("pass.nc"));
+    args << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--switch")
+         << QStringLiteral("centred") << QStringLiteral("--verify") << QStringLiteral("--refine")
+         << QStringLiteral("--experiment") << path(QStringLiteral("experiment.csv"))
+         << QStringLiteral("--refined-model") << refined << QStringLiteral("--gcode") << program
+         << QStringLiteral("--json");
+    const CliResult r = runTrueturn(args);
+    ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+    const QJsonObject j = r.json();
+    EXPECT_EQ(j.value(QStringLiteral("switch")).toString(), QStringLiteral("centred"));
+    const QJsonObject refine = j.value(QStringLiteral("refine")).toObject();
+    const QJsonArray rounds = refine.value(QStringLiteral("rounds")).toArray();
+    EXPECT_GT(refine.value(QStringLiteral("initial")).toObject().value(QStringLiteral("max_deviation_pct")).toDouble(),
+              10.0);
+    ASSERT_GE(rounds.size(), 1);
+    EXPECT_EQ(refine.value(QStringLiteral("rounds_run")).toInt(), rounds.size());
+    EXPECT_LE(rounds.size(), refine.value(QStringLiteral("max_rounds")).toInt());
+    EXPECT_EQ(refine.value(QStringLiteral("max_rounds")).toInt(), 3);
+    int bars = 0;
+    for (const QJsonValue& v : rounds) {
+        const QJsonObject round = v.toObject();
+        bars += round.value(QStringLiteral("plan")).toObject().value(QStringLiteral("bar_count")).toInt();
+        EXPECT_TRUE(round.contains(QStringLiteral("verify")) || round.contains(QStringLiteral("problem")));
+    }
+    EXPECT_EQ(refine.value(QStringLiteral("bars")).toInt(), bars);
+    EXPECT_TRUE(refine.value(QStringLiteral("within_10_pct")).toBool());
+    // The result is the last round's: the schedule's verify is that round's.
+    const QJsonObject last = rounds.last().toObject().value(QStringLiteral("verify")).toObject();
+    EXPECT_DOUBLE_EQ(j.value(QStringLiteral("verify")).toObject().value(QStringLiteral("max_deviation_pct")).toDouble(),
+                     last.value(QStringLiteral("max_deviation_pct")).toDouble());
+    EXPECT_LE(last.value(QStringLiteral("max_deviation_pct")).toDouble(), 10.0);
+    // The refined model file: one depth, cubic in f and z; the program names it.
+    QFile saved(refined);
+    ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+    const QJsonObject m = QJsonDocument::fromJson(saved.readAll()).object();
+    EXPECT_EQ(m.value(QStringLiteral("term_set")).toString(), QStringLiteral("cubic-fz"));
+    const QJsonObject a = m.value(QStringLiteral("factors")).toObject().value(QStringLiteral("a_mm")).toObject();
+    EXPECT_DOUBLE_EQ(a.value(QStringLiteral("min")).toDouble(), 0.5);
+    EXPECT_DOUBLE_EQ(a.value(QStringLiteral("max")).toDouble(), 0.5);
+    QFile nc(program);
+    ASSERT_TRUE(nc.open(QIODevice::ReadOnly));
+    EXPECT_TRUE(nc.readAll().contains("CUBIC-FZ"));  // comments are upper case
+    // It schedules on its own as a model file.
+    QStringList again = presetRequest(refined);
+    again[again.indexOf(QStringLiteral("--depth")) + 1] = QStringLiteral("0.5");
+    again << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--switch")
+          << QStringLiteral("centred");
+    EXPECT_EQ(runTrueturn(again).exitCode, 0);
+    // Refusals: --refine needs --verify; the limits of the options.
+    QStringList noVerify = presetRequest(file);
+    noVerify << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--refine");
+    expectRefused(noVerify, QStringLiteral("--refine needs --verify"));
+    QStringList rounds11 = noVerify;
+    rounds11 << QStringLiteral("--verify") << QStringLiteral("--refine-rounds") << QStringLiteral("11");
+    expectRefused(rounds11, QStringLiteral("--refine-rounds"));
+    QStringList badSwitch = presetRequest(file);
+    badSwitch << QStringLiteral("--level-fraction") << QStringLiteral("0") << QStringLiteral("--switch")
+              << QStringLiteral("middle");
+    expectRefused(badSwitch, QStringLiteral("--switch"));
+}
+
 TEST_F(FeedScheduleCommands, TextOutputAndTheLevelInMicrometres) {
     const QString file = model();
     const double y1 = 24.0;  // below Y1 (about 24.4 um): refused; 27 um inside [Y1, Y2]: scheduled

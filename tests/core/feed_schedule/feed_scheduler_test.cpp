@@ -71,6 +71,30 @@ TEST(FeedScheduler, FollowsThePapersStepsOnAHandModel) {
     EXPECT_DOUBLE_EQ(s.feedAtMm(0.0), 0.25);
 }
 
+// The centred switch on the same model: the feed f_{i-1} hands over to f_i where the mean of the two is Yc,
+// 100 (f_{i-1} + f_i) / 2 (1 + 0.01 z) = 30: 0.15 -> 0.20 at 1 + 0.01 z = 30 / 17.5 (z = 71.428571),
+// 0.20 -> 0.25 at 30 / 22.5 (z = 33.333333), 0.25 -> 0.30 at 30 / 27.5 (z = 9.090909); 0.30 -> 0.35 would be at
+// 30 / 32.5 < 1 (z < 0, beyond the end): 0.30 runs to z = 0. The sawtooth straddles Yc: each switch jumps from
+// 30 (1 - 0.05 / 0.35) = 25.714 to 30 (1 + 0.05 / 0.35) = 34.286 µm, +-14.29 % against the paper's 25 % below.
+TEST(FeedScheduler, CentredSwitchStraddlesTheLevelWithHalfTheDeviation) {
+    FeedScheduleRequest r = handRequest();
+    r.switchRule = FeedSwitchRule::Centred;
+    const FeedSchedule s = scheduleFeed(handModel(), r);
+    EXPECT_NEAR(s.levelUm, 30.0, 1e-12);
+    ASSERT_EQ(s.segments.size(), 4U);
+    expectSegment(s.segments[0], 100.0, 100.0 * (30.0 / 17.5 - 1.0), 0.15, 30.0, 15.0 * 30.0 / 17.5);
+    expectSegment(s.segments[1], 100.0 * (30.0 / 17.5 - 1.0), 100.0 * (30.0 / 22.5 - 1.0), 0.20, 20.0 * 30.0 / 17.5,
+                  20.0 * 30.0 / 22.5);
+    expectSegment(s.segments[2], 100.0 * (30.0 / 22.5 - 1.0), 100.0 * (30.0 / 27.5 - 1.0), 0.25, 25.0 * 30.0 / 22.5,
+                  25.0 * 30.0 / 27.5);
+    expectSegment(s.segments[3], 100.0 * (30.0 / 27.5 - 1.0), 0.0, 0.30, 30.0 * 30.0 / 27.5, 30.0);
+    EXPECT_NEAR(s.modelDeviationPct(), 100.0 * 0.05 / 0.35, 1e-9);
+    EXPECT_NEAR(scheduleFeed(handModel(), handRequest()).modelDeviationPct(), 25.0, 1e-9);  // 22.5 against 30
+    EXPECT_STREQ(feedSwitchRuleName(FeedSwitchRule::Centred), "centred");
+    EXPECT_EQ(feedSwitchRuleFromName("level"), FeedSwitchRule::AtLevel);
+    EXPECT_THROW(feedSwitchRuleFromName("middle"), std::invalid_argument);
+}
+
 TEST(FeedScheduler, MachiningTimesAgainstConstantFeeds) {
     // t = 60 L / (f n) at 600 rpm: 50/0.15 + 30/0.2 + 20/0.25 = 333.33 + 150 + 80 revolutions
     // -> 33.333 + 15 + 8 = 56.333 s; constant 0.1: 100 s; constant 0.4: 25 s.

@@ -12,6 +12,7 @@
 #include <QFile>
 #include <QJsonDocument>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTabWidget>
@@ -37,20 +38,27 @@ namespace {
 constexpr int kWidth = 1110;
 constexpr int kHeight = 640;
 
+/// Runs the event loop until `spy` has seen its signal, with no wall-clock limit of its own: on a loaded
+/// machine the worker takes what it takes, and a task that never ends is stopped by CTest's timeout.
+void waitFor(QSignalSpy& spy) {
+    while (spy.count() == 0)
+        spy.wait(1000);
+}
+
 class FeedScheduleToolTest : public ::testing::Test {
 protected:
     /// Waits for the task the tool started in its constructor (the built-in set-up's experiments): its
     /// end is reported through the event loop, which has not run since.
     static void waitForTask(FeedScheduleTool& tool) {
         QSignalSpy done(&tool, &FeedScheduleTool::taskFinished);
-        ASSERT_TRUE(done.wait(60000)) << "the task did not finish";
+        waitFor(done);
     }
     /// Starts a task with `start` and waits for its end (however fast the worker is).
     template <typename Start>
     static void runTask(FeedScheduleTool& tool, Start start) {
         QSignalSpy done(&tool, &FeedScheduleTool::taskFinished);
         start();
-        ASSERT_TRUE(done.count() > 0 || done.wait(60000)) << "the task did not finish";
+        waitFor(done);
     }
 
     QTemporaryDir dir;
@@ -230,6 +238,65 @@ TEST_F(FeedScheduleToolTest, LoadsAModelFileAndFitsACsv) {
     EXPECT_TRUE(tool.model()->job.has_value());  // the '# preset:' line names the set-up and its job
 }
 
+TEST_F(FeedScheduleToolTest, RefinesTheModelWhenTheCheckMisses) {
+    FeedScheduleTool tool(context);
+    tool.resize(kWidth, kHeight);
+    tool.show();
+    waitForTask(tool);
+    // a = 0.5 mm at Y1: a level of about 6.5 µm, next to the model's error of about 1.2 µm there.
+    tool.depthBox()->setValue(0.5);
+    tool.setLevelFraction(0.0);
+    EXPECT_FALSE(tool.refineButton()->isEnabled());  // nothing checked yet
+    runTask(tool, [&] { tool.checkOnSimulator(); });
+    ASSERT_TRUE(tool.check().has_value());
+    ASSERT_GT(tool.check()->maxDeviationPct, 10.0) << "the model alone held the band: nothing to refine";
+    EXPECT_TRUE(tool.resultLabel()->text().contains(QStringLiteral("outside ±10 %")))
+        << tool.resultLabel()->text().toStdString();
+    EXPECT_TRUE(tool.refineButton()->isEnabled());
+    EXPECT_TRUE(test::saveScreenshot(tool, QStringLiteral("feed_schedule_7_missed")));
+    const double missed = tool.check()->maxDeviationPct;
+
+    runTask(tool, [&] { tool.refineModel(); });
+    ASSERT_TRUE(tool.refinement().has_value()) << tool.resultLabel()->text().toStdString();
+    ASSERT_TRUE(tool.check().has_value());
+    EXPECT_LE(tool.check()->maxDeviationPct, 10.0);
+    EXPECT_NEAR(tool.refinement()->initialCheck.maxDeviationPct, missed, 1e-9);
+    EXPECT_GE(tool.refinement()->barCount(), 1);
+    ASSERT_NE(tool.activeModel(), nullptr);
+    EXPECT_NE(tool.activeModel(), &*tool.model());  // the schedule rests on the refined model now
+    EXPECT_EQ(tool.activeModel()->statistics.termSet, "cubic-fz");
+    EXPECT_FALSE(tool.refineButton()->isEnabled());
+    EXPECT_TRUE(tool.resultLabel()->text().contains(QStringLiteral("Refined in")))
+        << tool.resultLabel()->text().toStdString();
+    EXPECT_TRUE(tool.programText().contains(QStringLiteral("CUBIC-FZ")));  // the program names its model
+    EXPECT_TRUE(test::saveScreenshot(tool, QStringLiteral("feed_schedule_8_refined")));
+    // Another depth is outside the refined model: the fitted model takes over; back at 0.5 mm the refined one.
+    tool.depthBox()->setValue(1.5);
+    EXPECT_EQ(tool.activeModel(), &*tool.model());
+    tool.depthBox()->setValue(0.5);
+    EXPECT_NE(tool.activeModel(), &*tool.model());
+}
+
+TEST_F(FeedScheduleToolTest, ARefinementCanBeCancelled) {
+    FeedScheduleTool tool(context);
+    tool.resize(kWidth, kHeight);
+    tool.show();
+    waitForTask(tool);
+    tool.depthBox()->setValue(0.5);
+    tool.setLevelFraction(0.0);
+    runTask(tool, [&] { tool.checkOnSimulator(); });
+    ASSERT_TRUE(tool.refineButton()->isEnabled());
+    QSignalSpy done(&tool, &FeedScheduleTool::taskFinished);
+    tool.refineModel();
+    EXPECT_TRUE(tool.busy());
+    EXPECT_FALSE(tool.refineButton()->isEnabled());
+    tool.findChild<QPushButton*>(QStringLiteral("feedCancel"))->click();
+    waitFor(done);
+    EXPECT_FALSE(tool.refinement().has_value());
+    EXPECT_TRUE(tool.resultLabel()->text().contains(QStringLiteral("Stopped.")));
+    EXPECT_EQ(tool.activeModel(), &*tool.model());
+}
+
 TEST(FeedModelTask, CancelStopsTheExperiments) {
     // A large grid (2500 bars) so the task is certainly still running when it is cancelled.
     config::FeedSchedulingSetup setup =
@@ -245,7 +312,7 @@ TEST(FeedModelTask, CancelStopsTheExperiments) {
     task.simulateAndFit(setup, QStringLiteral("feed-scheduling"), core::DeformationTermSet::Quadratic, false);
     EXPECT_TRUE(task.busy());
     task.cancel();
-    ASSERT_TRUE(finished.wait(60000));
+    waitFor(finished);
     EXPECT_TRUE(finished.at(0).at(1).toBool());  // reported as cancelled
     EXPECT_FALSE(task.busy());
 }
