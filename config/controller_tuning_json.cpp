@@ -82,9 +82,8 @@ void readDisturbances(const JsonSection& tuning, core::RunToRunSetup& setup) {
     const QJsonValue value = tuning.value(QStringLiteral("disturbances"));
     const QString where = tuning.name() + QStringLiteral(".disturbances");
     if (!value.isArray() || value.toArray().size() != static_cast<qsizetype>(setup.plant.points.size()))
-        tuning.fail(QStringLiteral("disturbances"),
-                    "must be an array with one model per control point (" +
-                        std::to_string(setup.plant.points.size()) + ")");
+        tuning.fail(QStringLiteral("disturbances"), "must be an array with one model per control point (" +
+                                                        std::to_string(setup.plant.points.size()) + ")");
     const QJsonArray models = value.toArray();
     for (qsizetype i = 0; i < models.size(); ++i)
         setup.plant.points[static_cast<std::size_t>(i)].disturbance =

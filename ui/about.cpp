@@ -24,8 +24,8 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "ARMA identification of the disturbance from the history"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles, log-in and the audit trail"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode and an on-screen keypad"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, the command line and resume"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "Devices in a thread of their own: a busy window delays nothing"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, CLI and resume"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Devices in a thread of their own"),
 };
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.

@@ -4,9 +4,9 @@
 // run in core::runLatheStudy on the built-in simulated lathe, stepped by core::ShaftRunStepper like the
 // Run page's loop; the history is storage::SqlHistoryStore.
 #include <QFileInfo>
+#include <QString>
 #include <algorithm>
 #include <cmath>
-#include <QString>
 #include <memory>
 #include <optional>
 

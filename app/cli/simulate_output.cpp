@@ -105,7 +105,6 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
     printLine(QStringLiteral("largest mean error %1 mm at x = %2 mm").arg(value, 0, 'f', 4).arg(x, 0, 'f', 1));
 }
 
-
 QString alarmKindJson(const std::string& kind) {
     return QString::fromStdString(kind).replace(QLatin1Char('-'), QLatin1Char('_'));
 }
@@ -157,7 +156,6 @@ void printRobustText(const core::LatheStudyResult& r) {
     for (const core::RecordedAlarm& a : r.modelAlarms)
         printLine(QStringLiteral("alarm: ") + QString::fromStdString(core::describe(a.notice)));
 }
-
 
 }  // namespace
 

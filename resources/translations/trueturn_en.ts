@@ -1921,6 +1921,470 @@
     </message>
 </context>
 <context>
+    <name>tt::reports::ReportCharts</name>
+    <message>
+        <source>Individual diameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup means</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part in order</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>subgroup</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centre line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>control limits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>rule violations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>end of the baseline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup ranges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subgroup standard deviations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Moving ranges</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>spread, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fitted normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>x along the shaft, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tolerance band</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no tolerance stored</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pp</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Ppk</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>normal distribution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>percentiles (ISO 22514-2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Normality p (AD)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>σ within, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>σ overall, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mean, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tolerance, mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 at x = %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart, limits from %n parts</source>
+        <translation type="unfinished">
+            <numerusform>%1 chart, limits from %n part</numerusform>
+            <numerusform>%1 chart, limits from %n parts</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
+        <translation type="unfinished">
+            <numerusform>%1 chart of subgroups of %2, limits from %n subgroup</numerusform>
+            <numerusform>%1 chart of subgroups of %2, limits from %n subgroups</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>good %1 · rework %2 · scrap %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation type="unfinished">
+            <numerusform>… and %n more</numerusform>
+            <numerusform>… and %n more</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: parts %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::reports::ReportPdf</name>
+    <message>
+        <source>Quality report</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Job: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts stored: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, %1</source>
+        <translation type="unfinished">
+            <numerusform>%n part, %1</numerusform>
+            <numerusform>%n parts, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printed %1 UTC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>machine %1, job %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation type="unfinished">
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+            <numerusform>Rule violations (Western Electric): %n</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::BoringTargets</name>
+    <message>
+        <source>Station&apos;s PLC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The chosen CNC output is gone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::DeviceHost</name>
+    <message>
+        <source>TrueTurn is closing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device plugin %1 is not installed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this source runs no boring pass of its own</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the CNC output is no longer on the Devices page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this instrument is not on a calibration stand</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this stand has no screw jack</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this stand has no hydraulic jack</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this probe cannot take a table upload</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::DeviceHub</name>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (%1 more in error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 of %2 ready; %3 %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ready</source>
+        <translation type="unfinished">
+            <numerusform>%n ready</numerusform>
+            <numerusform>%n ready</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::LatheLink</name>
+    <message>
+        <source>the %1 “%2” is no longer on the Devices page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the Run page was closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a new run was started</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::LoopWorker</name>
+    <message>
+        <source>A run is already going; stop it first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run history cannot be opened: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The run cannot start: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
+        <translation type="unfinished">
+            <numerusform>%n gauge reading taken while the diameters were typed by hand was not used.</numerusform>
+            <numerusform>%n gauge readings taken while the diameters were typed by hand were not used.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No run is going: the diameters were not taken.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No part is on the machine.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The new controller tuning was not taken: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::MachineCatalog</name>
+    <message>
+        <source>Real lathe (Devices page)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>still connecting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>in error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::TerminalDevices</name>
+    <message>
+        <source>Simulated gauge micrometer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated probe mandrel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated drive-current readout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulated CNC output</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::About</name>
     <message>
         <source>In-process compensation of boring-bar deflection</source>
@@ -1991,7 +2455,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Resuming with plant-mismatch or integral-action settings</source>
+        <source>One run request for the Run page, CLI and resume</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Devices in a thread of their own</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2207,10 +2675,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The chosen CNC output is gone.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Choose where the deflection comes from.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2391,10 +2855,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Station&apos;s PLC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source> (measured)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2452,23 +2912,11 @@ L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The chosen source has no simulated pass.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Measured</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <source>Real (simulator)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No devices are configured.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -4253,10 +4701,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>simulated lathe</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Interrupted run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -4534,65 +4978,6 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     </message>
 </context>
 <context>
-    <name>tt::ui::LatheLink</name>
-    <message>
-        <source>ready</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>still connecting</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>in error</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the %1 “%2” is no longer on the Devices page</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>the Run page was closed</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>a new run was started</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>gauge</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>CNC output</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>tt::ui::LathePanel</name>
     <message>
         <source>No run on the lathe</source>
@@ -4694,44 +5079,6 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     </message>
     <message>
         <source>Cannot log in: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui::LoopWorker</name>
-    <message>
-        <source>A run is already going; stop it first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The run history cannot be opened: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The run cannot start: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
-        <translation>
-            <numerusform>%n gauge reading taken while the diameters were typed by hand was not used.</numerusform>
-            <numerusform>%n gauge readings taken while the diameters were typed by hand were not used.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>No run is going: the diameters were not taken.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The new controller tuning was not taken: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -5657,198 +6004,6 @@ Quit anyway?</source>
     </message>
 </context>
 <context>
-    <name>tt::ui::ReportCharts</name>
-    <message>
-        <source>Individual diameters</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Subgroup means</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>part in order</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>subgroup</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>diameter, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>diameter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>mean</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>centre line</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>control limits</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>rule violations</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>end of the baseline</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Subgroup ranges</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Subgroup standard deviations</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Moving ranges</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>spread, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Distribution</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>parts</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fitted normal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tolerance</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>nominal</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>x along the shaft, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tolerance band</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>measured</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Capability</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>no tolerance stored</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cpk</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Cpm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Pp</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Ppk</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>normal distribution</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>percentiles (ISO 22514-2)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Normality p (AD)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>σ within, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>σ overall, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Mean, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Tolerance, mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Point %1 at x = %2 mm</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%1 chart, limits from %n parts</source>
-        <translation>
-            <numerusform>%1 chart, limits from %n part</numerusform>
-            <numerusform>%1 chart, limits from %n parts</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
-        <translation>
-            <numerusform>%1 chart of subgroups of %2, limits from %n subgroup</numerusform>
-            <numerusform>%1 chart of subgroups of %2, limits from %n subgroups</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>good %1 · rework %2 · scrap %3</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>… and %n more</source>
-        <translation>
-            <numerusform>… and %n more</numerusform>
-            <numerusform>… and %n more</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>%1: parts %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
     <name>tt::ui::ReportFilterBar</name>
     <message>
         <source>all machines</source>
@@ -5916,59 +6071,6 @@ Quit anyway?</source>
     <message>
         <source>I-MR</source>
         <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui::ReportPdf</name>
-    <message>
-        <source>Quality report</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Machine: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Job: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Runs: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Parts stored: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>%n parts, %1</source>
-        <translation>
-            <numerusform>%n part, %1</numerusform>
-            <numerusform>%n parts, %1</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Printed %1 UTC</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>machine %1, job %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>Rule violations (Western Electric): %n</source>
-        <translation>
-            <numerusform>Rule violations (Western Electric): %n</numerusform>
-            <numerusform>Rule violations (Western Electric): %n</numerusform>
-        </translation>
     </message>
 </context>
 <context>
@@ -6263,10 +6365,6 @@ Quit anyway?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Real lathe (Devices page)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>CNC output</source>
         <translation type="unfinished"></translation>
     </message>
@@ -6363,15 +6461,7 @@ Quit anyway?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Press Start: each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Parts done: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The machine chosen is no longer offered; choose another.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -6399,30 +6489,15 @@ Quit anyway?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The machine of run %1 is not offered; it cannot be continued.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Continuing run %1 from part %2.</source>
         <translation type="unfinished"></translation>
     </message>
-</context>
-<context>
-    <name>tt::ui::TerminalDevices</name>
     <message>
-        <source>Simulated gauge micrometer</source>
+        <source>The machine “%1” is not offered; choose another.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Simulated probe mandrel</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulated drive-current readout</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Simulated CNC output</source>
+        <source>Choose a machine.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

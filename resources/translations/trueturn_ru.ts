@@ -1924,6 +1924,477 @@
     </message>
 </context>
 <context>
+    <name>tt::reports::ReportCharts</name>
+    <message>
+        <source>Individual diameters</source>
+        <translation>Отдельные диаметры</translation>
+    </message>
+    <message>
+        <source>Subgroup means</source>
+        <translation>Средние подгрупп</translation>
+    </message>
+    <message>
+        <source>part in order</source>
+        <translation>деталь по порядку</translation>
+    </message>
+    <message>
+        <source>subgroup</source>
+        <translation>подгруппа</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>diameter, mm</source>
+        <translation>диаметр, мм</translation>
+    </message>
+    <message>
+        <source>diameter</source>
+        <translation>диаметр</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>среднее</translation>
+    </message>
+    <message>
+        <source>centre line</source>
+        <translation>центральная линия</translation>
+    </message>
+    <message>
+        <source>control limits</source>
+        <translation>контрольные границы</translation>
+    </message>
+    <message>
+        <source>rule violations</source>
+        <translation>нарушения правил</translation>
+    </message>
+    <message>
+        <source>end of the baseline</source>
+        <translation>конец базового периода</translation>
+    </message>
+    <message>
+        <source>Subgroup ranges</source>
+        <translation>Размахи подгрупп</translation>
+    </message>
+    <message>
+        <source>Subgroup standard deviations</source>
+        <translation>Стандартные отклонения подгрупп</translation>
+    </message>
+    <message>
+        <source>Moving ranges</source>
+        <translation>Скользящие размахи</translation>
+    </message>
+    <message>
+        <source>spread, mm</source>
+        <translation>разброс, мм</translation>
+    </message>
+    <message>
+        <source>Distribution</source>
+        <translation>Распределение</translation>
+    </message>
+    <message>
+        <source>parts</source>
+        <translation>детали</translation>
+    </message>
+    <message>
+        <source>fitted normal</source>
+        <translation>нормальное распределение</translation>
+    </message>
+    <message>
+        <source>tolerance</source>
+        <translation>допуск</translation>
+    </message>
+    <message>
+        <source>nominal</source>
+        <translation>номинал</translation>
+    </message>
+    <message>
+        <source>x along the shaft, mm</source>
+        <translation>x вдоль вала, мм</translation>
+    </message>
+    <message>
+        <source>tolerance band</source>
+        <translation>поле допуска</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>измерено</translation>
+    </message>
+    <message>
+        <source>Capability</source>
+        <translation>Воспроизводимость</translation>
+    </message>
+    <message>
+        <source>no tolerance stored</source>
+        <translation>допуск не записан</translation>
+    </message>
+    <message>
+        <source>Cp</source>
+        <translation>Cp</translation>
+    </message>
+    <message>
+        <source>Cpk</source>
+        <translation>Cpk</translation>
+    </message>
+    <message>
+        <source>Cpm</source>
+        <translation>Cpm</translation>
+    </message>
+    <message>
+        <source>Pp</source>
+        <translation>Pp</translation>
+    </message>
+    <message>
+        <source>Ppk</source>
+        <translation>Ppk</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Метод</translation>
+    </message>
+    <message>
+        <source>normal distribution</source>
+        <translation>нормальное распределение</translation>
+    </message>
+    <message>
+        <source>percentiles (ISO 22514-2)</source>
+        <translation>процентили (ISO 22514-2)</translation>
+    </message>
+    <message>
+        <source>Normality p (AD)</source>
+        <translation>Нормальность p (AD)</translation>
+    </message>
+    <message>
+        <source>σ within, mm</source>
+        <translation>σ внутри подгрупп, мм</translation>
+    </message>
+    <message>
+        <source>σ overall, mm</source>
+        <translation>σ общая, мм</translation>
+    </message>
+    <message>
+        <source>Mean, mm</source>
+        <translation>Среднее, мм</translation>
+    </message>
+    <message>
+        <source>Tolerance, mm</source>
+        <translation>Допуск, мм</translation>
+    </message>
+    <message>
+        <source>Point %1 at x = %2 mm</source>
+        <translation>Точка %1 при x = %2 мм</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart, limits from %n parts</source>
+        <translation>
+            <numerusform>Карта %1, границы по %n детали</numerusform>
+            <numerusform>Карта %1, границы по %n деталям</numerusform>
+            <numerusform>Карта %1, границы по %n деталям</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
+        <translation>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппе</numerusform>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
+            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>good %1 · rework %2 · scrap %3</source>
+        <translation>годных %1 · доработка %2 · брак %3</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more</source>
+        <translation>
+            <numerusform>… и ещё %n</numerusform>
+            <numerusform>… и ещё %n</numerusform>
+            <numerusform>… и ещё %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: parts %2</source>
+        <translation>%1: детали %2</translation>
+    </message>
+</context>
+<context>
+    <name>tt::reports::ReportPdf</name>
+    <message>
+        <source>Quality report</source>
+        <translation>Отчёт о качестве</translation>
+    </message>
+    <message>
+        <source>Machine: %1</source>
+        <translation>Станок: %1</translation>
+    </message>
+    <message>
+        <source>Job: %1</source>
+        <translation>Задание: %1</translation>
+    </message>
+    <message>
+        <source>Runs: %1</source>
+        <translation>Серии: %1</translation>
+    </message>
+    <message>
+        <source>Parts stored: %1</source>
+        <translation>Детали записаны: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n parts, %1</source>
+        <translation>
+            <numerusform>%n деталь, %1</numerusform>
+            <numerusform>%n детали, %1</numerusform>
+            <numerusform>%n деталей, %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Printed %1 UTC</source>
+        <translation>Напечатано %1 UTC</translation>
+    </message>
+    <message>
+        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
+        <translation>Точка · x, мм · n · среднее, мм · Cpk · Ppk · нарушения правил · годных / доработка / брак</translation>
+    </message>
+    <message>
+        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
+        <translation>Проверил: ______________________   Дата: ____________   Подпись: ______________________</translation>
+    </message>
+    <message>
+        <source>machine %1, job %2</source>
+        <translation>станок %1, задание %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Rule violations (Western Electric): %n</source>
+        <translation>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+            <numerusform>Нарушения правил (WE): %n</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::BoringTargets</name>
+    <message>
+        <source>Station&apos;s PLC</source>
+        <translation>ПЛК стенда</translation>
+    </message>
+    <message>
+        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
+        <translation>Симулированный проход не может начаться: его сценарий или калибровка оправки отклонены.</translation>
+    </message>
+    <message>
+        <source>The chosen CNC output is gone.</source>
+        <translation>Выбранного выхода в ЧПУ больше нет.</translation>
+    </message>
+    <message>
+        <source>No devices are configured.</source>
+        <translation>Устройства не настроены.</translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::DeviceHost</name>
+    <message>
+        <source>TrueTurn is closing</source>
+        <translation>TrueTurn закрывается</translation>
+    </message>
+    <message>
+        <source>the device plugin %1 is not installed</source>
+        <translation>модуль устройств %1 не установлен</translation>
+    </message>
+    <message>
+        <source>this source runs no boring pass of its own</source>
+        <translation>у этого источника нет собственного прохода расточки</translation>
+    </message>
+    <message>
+        <source>the CNC output is no longer on the Devices page</source>
+        <translation>выхода на ЧПУ больше нет на странице «Устройства»</translation>
+    </message>
+    <message>
+        <source>this instrument is not on a calibration stand</source>
+        <translation>этот прибор не стоит на калибровочном стенде</translation>
+    </message>
+    <message>
+        <source>this stand has no screw jack</source>
+        <translation>у этого стенда нет винтового домкрата</translation>
+    </message>
+    <message>
+        <source>this stand has no hydraulic jack</source>
+        <translation>у этого стенда нет гидравлического домкрата</translation>
+    </message>
+    <message>
+        <source>this probe cannot take a table upload</source>
+        <translation>в эту оправку нельзя загрузить таблицу</translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::DeviceHub</name>
+    <message>
+        <source>ready</source>
+        <translation>готов</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>подключается</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>ошибка</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>закрыт</translation>
+    </message>
+    <message>
+        <source> (%1 more in error)</source>
+        <translation> (ещё с ошибкой: %1)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 ready; %3 %4</source>
+        <translation>готово %1 из %2; %3: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ready</source>
+        <translation>
+            <numerusform>%n готово</numerusform>
+            <numerusform>%n готовы</numerusform>
+            <numerusform>%n готово</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::LatheLink</name>
+    <message>
+        <source>the %1 “%2” is no longer on the Devices page</source>
+        <translation>%1 «%2» удалён со страницы «Устройства»</translation>
+    </message>
+    <message>
+        <source>the Run page was closed</source>
+        <translation>страница «Работа» закрыта</translation>
+    </message>
+    <message>
+        <source>a new run was started</source>
+        <translation>начата новая серия</translation>
+    </message>
+    <message>
+        <source>gauge</source>
+        <translation>микрометр</translation>
+    </message>
+    <message>
+        <source>CNC output</source>
+        <translation>Выход в ЧПУ</translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::LoopWorker</name>
+    <message>
+        <source>A run is already going; stop it first.</source>
+        <translation>Серия уже выполняется; сначала остановите её.</translation>
+    </message>
+    <message>
+        <source>The run history cannot be opened: %1</source>
+        <translation>Не удаётся открыть историю серий: %1</translation>
+    </message>
+    <message>
+        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
+        <translation>Запуск невозможен: выход ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 обтачивает %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
+    </message>
+    <message>
+        <source>The run cannot start: %1</source>
+        <translation>Серию невозможно запустить: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
+        <translation>
+            <numerusform>%n показание микрометра, снятое во время ручного ввода диаметров, не использовано.</numerusform>
+            <numerusform>%n показания микрометра, снятые во время ручного ввода диаметров, не использованы.</numerusform>
+            <numerusform>%n показаний микрометра, снятых во время ручного ввода диаметров, не использованы.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No run is going: the diameters were not taken.</source>
+        <translation>Серия не выполняется: диаметры не приняты.</translation>
+    </message>
+    <message>
+        <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
+        <translation>Деталь %1 не ожидает ввода диаметров; ничего не принято.</translation>
+    </message>
+    <message>
+        <source>No part is on the machine.</source>
+        <translation>На станке нет детали.</translation>
+    </message>
+    <message>
+        <source>The new controller tuning was not taken: %1</source>
+        <translation>Новая настройка регулятора не принята: %1</translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::MachineCatalog</name>
+    <message>
+        <source>Real lathe (Devices page)</source>
+        <translation>Реальный станок</translation>
+    </message>
+    <message>
+        <source>each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
+        <translation>коррекции каждой детали уходят в ЧПУ; вы обрабатываете деталь и нажимаете «Деталь готова».</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>готов</translation>
+    </message>
+    <message>
+        <source>still connecting</source>
+        <translation>ещё подключается</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>закрыт</translation>
+    </message>
+    <message>
+        <source>in error</source>
+        <translation>в состоянии ошибки</translation>
+    </message>
+    <message>
+        <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
+        <translation>Выход в ЧПУ не выбран. Добавьте выход коррекции (файл G-кода или Modbus) на странице «Устройства» и выберите его в поле «Выход в ЧПУ».</translation>
+    </message>
+    <message>
+        <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
+        <translation>Выбранного выхода в ЧПУ больше нет на странице «Устройства»; выберите другой.</translation>
+    </message>
+    <message>
+        <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
+        <translation>Выход в ЧПУ «%1» %2: %3. Проверьте его на странице «Устройства».</translation>
+    </message>
+    <message>
+        <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
+        <translation>Выбранного микрометра больше нет на странице «Устройства»; выберите другой или вводите диаметры вручную.</translation>
+    </message>
+    <message>
+        <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
+        <translation>Микрометр «%1» %2: %3. Проверьте его на странице «Устройства» или выберите ручной ввод диаметров.</translation>
+    </message>
+</context>
+<context>
+    <name>tt::runtime::TerminalDevices</name>
+    <message>
+        <source>Simulated gauge micrometer</source>
+        <translation>Симулятор микрометра</translation>
+    </message>
+    <message>
+        <source>Simulated probe mandrel</source>
+        <translation>Симулятор оправки-датчика</translation>
+    </message>
+    <message>
+        <source>Simulated drive-current readout</source>
+        <translation>Симулятор датчика тока привода</translation>
+    </message>
+    <message>
+        <source>Simulated CNC output</source>
+        <translation>Симулятор выхода в ЧПУ</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::About</name>
     <message>
         <source>Run-to-run LQG control of the shaft profile</source>
@@ -1994,8 +2465,12 @@
         <translation>Безопасный регулятор при несоответствии модели (сейчас удержание)</translation>
     </message>
     <message>
-        <source>Resuming with plant-mismatch or integral-action settings</source>
-        <translation>Продолжение запуска с рассогласованием объекта или интегралом</translation>
+        <source>One run request for the Run page, CLI and resume</source>
+        <translation>Один запрос прогона: страница «Работа», CLI, продолжение</translation>
+    </message>
+    <message>
+        <source>Devices in a thread of their own</source>
+        <translation>Устройства в собственном потоке</translation>
     </message>
 </context>
 <context>
@@ -2215,10 +2690,6 @@
         <translation>Нет выхода в ЧПУ для динамического смещения по X: добавьте его на странице «Устройства».</translation>
     </message>
     <message>
-        <source>The chosen CNC output is gone.</source>
-        <translation>Выбранного выхода в ЧПУ больше нет.</translation>
-    </message>
-    <message>
         <source>Choose where the deflection comes from.</source>
         <translation>Выберите источник прогиба.</translation>
     </message>
@@ -2399,10 +2870,6 @@
         <translation>Стенд: %1</translation>
     </message>
     <message>
-        <source>Station&apos;s PLC</source>
-        <translation>ПЛК стенда</translation>
-    </message>
-    <message>
         <source>k %1 N/mm%2 · k_p %3 N/A
 L/d %4</source>
         <translation>k %1 Н/мм%2 · k_p %3 Н/А
@@ -2461,24 +2928,12 @@ L/d %4</translation>
         <translation> мс</translation>
     </message>
     <message>
-        <source>The chosen source has no simulated pass.</source>
-        <translation>У выбранного источника нет симулированного прохода.</translation>
-    </message>
-    <message>
-        <source>The simulated pass cannot begin: its scenario or its mandrel&apos;s calibration is refused.</source>
-        <translation>Симулированный проход не может начаться: его сценарий или калибровка оправки отклонены.</translation>
-    </message>
-    <message>
         <source>Measured</source>
         <translation>Измеренный</translation>
     </message>
     <message>
         <source>Real (simulator)</source>
         <translation>Истинный</translation>
-    </message>
-    <message>
-        <source>No devices are configured.</source>
-        <translation>Устройства не настроены.</translation>
     </message>
     <message>
         <source>boring bar: %1</source>
@@ -4283,10 +4738,6 @@ Runs are not recorded until this is fixed (Settings shows where the history is k
         <translation>Серия %1 (%2, %3, сделано %4 из %5 деталей) была прервана. Продолжить её с детали %6?</translation>
     </message>
     <message>
-        <source>simulated lathe</source>
-        <translation>модель станка</translation>
-    </message>
-    <message>
         <source>Interrupted run</source>
         <translation>Прерванная серия</translation>
     </message>
@@ -4566,65 +5017,6 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     </message>
 </context>
 <context>
-    <name>tt::ui::LatheLink</name>
-    <message>
-        <source>ready</source>
-        <translation>готов</translation>
-    </message>
-    <message>
-        <source>still connecting</source>
-        <translation>ещё подключается</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>закрыт</translation>
-    </message>
-    <message>
-        <source>in error</source>
-        <translation>в состоянии ошибки</translation>
-    </message>
-    <message>
-        <source>the %1 “%2” is no longer on the Devices page</source>
-        <translation>%1 «%2» удалён со страницы «Устройства»</translation>
-    </message>
-    <message>
-        <source>the Run page was closed</source>
-        <translation>страница «Работа» закрыта</translation>
-    </message>
-    <message>
-        <source>No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and choose it under CNC output.</source>
-        <translation>Выход в ЧПУ не выбран. Добавьте выход коррекции (файл G-кода или Modbus) на странице «Устройства» и выберите его в поле «Выход в ЧПУ».</translation>
-    </message>
-    <message>
-        <source>The CNC output chosen is no longer on the Devices page; choose another.</source>
-        <translation>Выбранного выхода в ЧПУ больше нет на странице «Устройства»; выберите другой.</translation>
-    </message>
-    <message>
-        <source>The CNC output “%1” is %2: %3. Check it on the Devices page.</source>
-        <translation>Выход в ЧПУ «%1» %2: %3. Проверьте его на странице «Устройства».</translation>
-    </message>
-    <message>
-        <source>The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.</source>
-        <translation>Выбранного микрометра больше нет на странице «Устройства»; выберите другой или вводите диаметры вручную.</translation>
-    </message>
-    <message>
-        <source>The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.</source>
-        <translation>Микрометр «%1» %2: %3. Проверьте его на странице «Устройства» или выберите ручной ввод диаметров.</translation>
-    </message>
-    <message>
-        <source>a new run was started</source>
-        <translation>начата новая серия</translation>
-    </message>
-    <message>
-        <source>gauge</source>
-        <translation>микрометр</translation>
-    </message>
-    <message>
-        <source>CNC output</source>
-        <translation>выход в ЧПУ</translation>
-    </message>
-</context>
-<context>
     <name>tt::ui::LathePanel</name>
     <message>
         <source>No run on the lathe</source>
@@ -4728,45 +5120,6 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     <message>
         <source>Cannot log in: %1</source>
         <translation>Не удаётся войти: %1</translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui::LoopWorker</name>
-    <message>
-        <source>A run is already going; stop it first.</source>
-        <translation>Серия уже выполняется; сначала остановите её.</translation>
-    </message>
-    <message>
-        <source>The run history cannot be opened: %1</source>
-        <translation>Не удаётся открыть историю серий: %1</translation>
-    </message>
-    <message>
-        <source>The run cannot start: %1</source>
-        <translation>Серию невозможно запустить: %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n gauge reading(s) taken while the diameters were typed by hand were not used.</source>
-        <translation>
-            <numerusform>%n показание микрометра, снятое во время ручного ввода диаметров, не использовано.</numerusform>
-            <numerusform>%n показания микрометра, снятые во время ручного ввода диаметров, не использованы.</numerusform>
-            <numerusform>%n показаний микрометра, снятых во время ручного ввода диаметров, не использованы.</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>No run is going: the diameters were not taken.</source>
-        <translation>Серия не выполняется: диаметры не приняты.</translation>
-    </message>
-    <message>
-        <source>Part %1 is not the part waiting for its diameters; nothing was taken.</source>
-        <translation>Деталь %1 не ожидает ввода диаметров; ничего не принято.</translation>
-    </message>
-    <message>
-        <source>The run cannot start: the CNC output “%1” writes programs for a diameter of %2 mm, the set-up %3 turns %4 mm; correct the nominal diameter on the Devices page or choose another set-up</source>
-        <translation>Запуск невозможен: выход ЧПУ «%1» пишет программы для диаметра %2 мм, а наладка %3 обтачивает %4 мм; исправьте номинальный диаметр на странице «Устройства» или выберите другую наладку</translation>
-    </message>
-    <message>
-        <source>The new controller tuning was not taken: %1</source>
-        <translation>Новая настройка регулятора не принята: %1</translation>
     </message>
 </context>
 <context>
@@ -5696,201 +6049,6 @@ Quit anyway?</source>
     </message>
 </context>
 <context>
-    <name>tt::ui::ReportCharts</name>
-    <message>
-        <source>Individual diameters</source>
-        <translation>Отдельные диаметры</translation>
-    </message>
-    <message>
-        <source>Subgroup means</source>
-        <translation>Средние подгрупп</translation>
-    </message>
-    <message>
-        <source>part in order</source>
-        <translation>деталь по порядку</translation>
-    </message>
-    <message>
-        <source>subgroup</source>
-        <translation>подгруппа</translation>
-    </message>
-    <message>
-        <source>mm</source>
-        <translation>мм</translation>
-    </message>
-    <message>
-        <source>diameter, mm</source>
-        <translation>диаметр, мм</translation>
-    </message>
-    <message>
-        <source>diameter</source>
-        <translation>диаметр</translation>
-    </message>
-    <message>
-        <source>mean</source>
-        <translation>среднее</translation>
-    </message>
-    <message>
-        <source>centre line</source>
-        <translation>центральная линия</translation>
-    </message>
-    <message>
-        <source>control limits</source>
-        <translation>контрольные границы</translation>
-    </message>
-    <message>
-        <source>rule violations</source>
-        <translation>нарушения правил</translation>
-    </message>
-    <message>
-        <source>end of the baseline</source>
-        <translation>конец базового периода</translation>
-    </message>
-    <message>
-        <source>Subgroup ranges</source>
-        <translation>Размахи подгрупп</translation>
-    </message>
-    <message>
-        <source>Subgroup standard deviations</source>
-        <translation>Стандартные отклонения подгрупп</translation>
-    </message>
-    <message>
-        <source>Moving ranges</source>
-        <translation>Скользящие размахи</translation>
-    </message>
-    <message>
-        <source>spread, mm</source>
-        <translation>разброс, мм</translation>
-    </message>
-    <message>
-        <source>Distribution</source>
-        <translation>Распределение</translation>
-    </message>
-    <message>
-        <source>parts</source>
-        <translation>детали</translation>
-    </message>
-    <message>
-        <source>fitted normal</source>
-        <translation>нормальное распределение</translation>
-    </message>
-    <message>
-        <source>tolerance</source>
-        <translation>допуск</translation>
-    </message>
-    <message>
-        <source>nominal</source>
-        <translation>номинал</translation>
-    </message>
-    <message>
-        <source>x along the shaft, mm</source>
-        <translation>x вдоль вала, мм</translation>
-    </message>
-    <message>
-        <source>tolerance band</source>
-        <translation>поле допуска</translation>
-    </message>
-    <message>
-        <source>measured</source>
-        <translation>измерено</translation>
-    </message>
-    <message>
-        <source>Capability</source>
-        <translation>Воспроизводимость</translation>
-    </message>
-    <message>
-        <source>no tolerance stored</source>
-        <translation>допуск не записан</translation>
-    </message>
-    <message>
-        <source>Cp</source>
-        <translation>Cp</translation>
-    </message>
-    <message>
-        <source>Cpk</source>
-        <translation>Cpk</translation>
-    </message>
-    <message>
-        <source>Cpm</source>
-        <translation>Cpm</translation>
-    </message>
-    <message>
-        <source>Pp</source>
-        <translation>Pp</translation>
-    </message>
-    <message>
-        <source>Ppk</source>
-        <translation>Ppk</translation>
-    </message>
-    <message>
-        <source>Method</source>
-        <translation>Метод</translation>
-    </message>
-    <message>
-        <source>normal distribution</source>
-        <translation>нормальное распределение</translation>
-    </message>
-    <message>
-        <source>percentiles (ISO 22514-2)</source>
-        <translation>процентили (ISO 22514-2)</translation>
-    </message>
-    <message>
-        <source>Normality p (AD)</source>
-        <translation>Нормальность p (AD)</translation>
-    </message>
-    <message>
-        <source>σ within, mm</source>
-        <translation>σ внутри подгрупп, мм</translation>
-    </message>
-    <message>
-        <source>σ overall, mm</source>
-        <translation>σ общая, мм</translation>
-    </message>
-    <message>
-        <source>Mean, mm</source>
-        <translation>Среднее, мм</translation>
-    </message>
-    <message>
-        <source>Tolerance, mm</source>
-        <translation>Допуск, мм</translation>
-    </message>
-    <message>
-        <source>Point %1 at x = %2 mm</source>
-        <translation>Точка %1 при x = %2 мм</translation>
-    </message>
-    <message numerus="yes">
-        <source>%1 chart, limits from %n parts</source>
-        <translation>
-            <numerusform>Карта %1, границы по %n детали</numerusform>
-            <numerusform>Карта %1, границы по %n деталям</numerusform>
-            <numerusform>Карта %1, границы по %n деталям</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%1 chart of subgroups of %2, limits from %n subgroups</source>
-        <translation>
-            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппе</numerusform>
-            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
-            <numerusform>Карта %1 подгрупп по %2, границы по %n подгруппам</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>good %1 · rework %2 · scrap %3</source>
-        <translation>годных %1 · доработка %2 · брак %3</translation>
-    </message>
-    <message numerus="yes">
-        <source>… and %n more</source>
-        <translation>
-            <numerusform>… и ещё %n</numerusform>
-            <numerusform>… и ещё %n</numerusform>
-            <numerusform>… и ещё %n</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>%1: parts %2</source>
-        <translation>%1: детали %2</translation>
-    </message>
-</context>
-<context>
     <name>tt::ui::ReportFilterBar</name>
     <message>
         <source>all machines</source>
@@ -5959,61 +6117,6 @@ Quit anyway?</source>
     <message>
         <source>I-MR</source>
         <translation>I-MR</translation>
-    </message>
-</context>
-<context>
-    <name>tt::ui::ReportPdf</name>
-    <message>
-        <source>Quality report</source>
-        <translation>Отчёт о качестве</translation>
-    </message>
-    <message>
-        <source>Machine: %1</source>
-        <translation>Станок: %1</translation>
-    </message>
-    <message>
-        <source>Job: %1</source>
-        <translation>Задание: %1</translation>
-    </message>
-    <message>
-        <source>Runs: %1</source>
-        <translation>Серии: %1</translation>
-    </message>
-    <message>
-        <source>Parts stored: %1</source>
-        <translation>Детали записаны: %1</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n parts, %1</source>
-        <translation>
-            <numerusform>%n деталь, %1</numerusform>
-            <numerusform>%n детали, %1</numerusform>
-            <numerusform>%n деталей, %1</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Printed %1 UTC</source>
-        <translation>Напечатано %1 UTC</translation>
-    </message>
-    <message>
-        <source>Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap</source>
-        <translation>Точка · x, мм · n · среднее, мм · Cpk · Ppk · нарушения правил · годных / доработка / брак</translation>
-    </message>
-    <message>
-        <source>Checked by: ______________________   Date: ____________   Signature: ______________________</source>
-        <translation>Проверил: ______________________   Дата: ____________   Подпись: ______________________</translation>
-    </message>
-    <message>
-        <source>machine %1, job %2</source>
-        <translation>станок %1, задание %2</translation>
-    </message>
-    <message numerus="yes">
-        <source>Rule violations (Western Electric): %n</source>
-        <translation>
-            <numerusform>Нарушения правил (WE): %n</numerusform>
-            <numerusform>Нарушения правил (WE): %n</numerusform>
-            <numerusform>Нарушения правил (WE): %n</numerusform>
-        </translation>
     </message>
 </context>
 <context>
@@ -6310,10 +6413,6 @@ Quit anyway?</source>
         <translation>Станок</translation>
     </message>
     <message>
-        <source>Real lathe (Devices page)</source>
-        <translation>Реальный станок</translation>
-    </message>
-    <message>
         <source>CNC output</source>
         <translation>Выход в ЧПУ</translation>
     </message>
@@ -6410,16 +6509,8 @@ Quit anyway?</source>
         <translation>Диаметры: ручной ввод</translation>
     </message>
     <message>
-        <source>Press Start: each part&apos;s corrections go to the CNC; you machine the part and press Part finished.</source>
-        <translation>Нажмите «Пуск»: коррекции каждой детали передаются в ЧПУ; обработайте деталь и нажмите «Деталь готова».</translation>
-    </message>
-    <message>
         <source>Parts done: %1</source>
         <translation>Готово деталей: %1</translation>
-    </message>
-    <message>
-        <source>The machine chosen is no longer offered; choose another.</source>
-        <translation>Выбранный станок больше не предлагается; выберите другой.</translation>
     </message>
     <message>
         <source>Machine: %1 (its own CNC, gauge and part cycle)</source>
@@ -6446,31 +6537,16 @@ Quit anyway?</source>
         <translation>Серия уже выполняется; сначала остановите её.</translation>
     </message>
     <message>
-        <source>The machine of run %1 is not offered; it cannot be continued.</source>
-        <translation>Станок серии %1 недоступен; её нельзя продолжить.</translation>
-    </message>
-    <message>
         <source>Continuing run %1 from part %2.</source>
         <translation>Серия %1 продолжается с детали %2.</translation>
     </message>
-</context>
-<context>
-    <name>tt::ui::TerminalDevices</name>
     <message>
-        <source>Simulated gauge micrometer</source>
-        <translation>Симулятор микрометра</translation>
+        <source>The machine “%1” is not offered; choose another.</source>
+        <translation>Станок «%1» не предлагается; выберите другой.</translation>
     </message>
     <message>
-        <source>Simulated probe mandrel</source>
-        <translation>Симулятор оправки-датчика</translation>
-    </message>
-    <message>
-        <source>Simulated drive-current readout</source>
-        <translation>Симулятор датчика тока привода</translation>
-    </message>
-    <message>
-        <source>Simulated CNC output</source>
-        <translation>Симулятор выхода в ЧПУ</translation>
+        <source>Choose a machine.</source>
+        <translation>Выберите станок.</translation>
     </message>
 </context>
 <context>

@@ -10,17 +10,13 @@ namespace tt::runtime {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("tt::runtime::BoringTargets", text);
-}
-
 BoringTarget ownPass(DeviceHub* hub) {
     BoringTarget t;
     t.key = QStringLiteral("station");
-    t.name = tr("Station's PLC");
+    t.name = QCoreApplication::translate("tt::runtime::BoringTargets", "Station's PLC");
     t.can = {true, true, true, false, false};
-    t.prepare = [hub](const BoringSource& source, core::BoringRunChoices& choices,
-                      const core::BoringScenario& scenario, double) -> PreparedStation {
+    t.prepare = [hub](const BoringSource& source, core::BoringRunChoices& choices, const core::BoringScenario& scenario,
+                      double) -> PreparedStation {
         core::BoringScenario pass = scenario;
         pass.plcCycleS = choices.plcCycleS;
         choices.plane = 0;           // the pass's mandrel is calibrated with plane 1 along X
@@ -29,7 +25,9 @@ BoringTarget ownPass(DeviceHub* hub) {
             return {hub->beginBoringPass(source.deviceId, pass), [] { return std::optional<double>(); }};
         } catch (const std::exception&) {
             throw std::invalid_argument(
-                tr("The simulated pass cannot begin: its scenario or its mandrel's calibration is refused.")
+                QCoreApplication::translate(
+                    "tt::runtime::BoringTargets",
+                    "The simulated pass cannot begin: its scenario or its mandrel's calibration is refused.")
                     .toStdString());
         }
     };
@@ -45,11 +43,15 @@ BoringTarget cncOutput(DeviceHub* hub, const DeviceView& output) {
                                       const core::BoringScenario&, double heldOffsetMm) -> PreparedStation {
         const DeviceView* v = hub->view(id);
         if (!v || v->kind != devices::DeviceKind::CorrectionOutput)
-            throw std::invalid_argument(tr("The chosen CNC output is gone.").toStdString());
+            throw std::invalid_argument(
+                QCoreApplication::translate("tt::runtime::BoringTargets", "The chosen CNC output is gone.")
+                    .toStdString());
         choices.heldOffsetMm = heldOffsetMm;
         std::shared_ptr<core::RelayedBoringStation> station =
             hub->connectBoring(source.deviceId, source.method, id, choices.plcCycleS);
-        if (!station) throw std::invalid_argument(tr("No devices are configured.").toStdString());
+        if (!station)
+            throw std::invalid_argument(
+                QCoreApplication::translate("tt::runtime::BoringTargets", "No devices are configured.").toStdString());
         return {station, [hub, station] {
                     hub->disconnectBoring();
                     return station->outputRelay().confirmedOffsetMm();

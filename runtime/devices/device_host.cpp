@@ -85,8 +85,7 @@ DeviceView DeviceHost::snapshot(const QString& id, const QString& name, const QS
 }
 
 std::optional<DeviceView> DeviceHost::view(const QString& id) const {
-    if (id == kTrialDeviceId && m_trial)
-        return snapshot(id, id, m_trialPlugin, m_trialKind, m_trialSettings, *m_trial);
+    if (id == kTrialDeviceId && m_trial) return snapshot(id, id, m_trialPlugin, m_trialKind, m_trialSettings, *m_trial);
     const devices::DeviceEntry* e = m_manager->entry(id);
     if (!e) return std::nullopt;
     return snapshot(e->id, e->name, e->pluginId, e->kind, e->settings, *e->device);
@@ -202,7 +201,7 @@ std::vector<std::chrono::steady_clock::time_point> DeviceHost::boringWriteTimes(
 }
 
 std::shared_ptr<core::BoringStation> DeviceHost::beginBoringPass(const QString& sourceId,
-                                                                const core::BoringScenario& scenario) {
+                                                                 const core::BoringScenario& scenario) {
     devices::Device* d = m_manager->device(sourceId);
     devices::SimulatedInstrument* sim = d ? devices::simulatedInstrument(*d) : nullptr;
     devices::BoringTruth* truth = sim ? sim->boringTruth() : nullptr;

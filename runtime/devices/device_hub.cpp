@@ -42,7 +42,9 @@ DeviceHub::DeviceHub(const core::Clock* clock, QObject* parent) : QObject(parent
         m_plugins = m_host->manager().plugins();
     });
     connect(m_host, &DeviceHost::viewsChanged, this, &DeviceHub::takeChanges);
-    connect(m_host, &DeviceHost::listChanged, this, &DeviceHub::takeList);
+    // A list that changed in the device thread is fetched fresh when the news arrives: an older copy queued
+    // behind a newer one must not bring back instances that are gone.
+    connect(m_host, &DeviceHost::listChanged, this, &DeviceHub::sync);
 }
 
 DeviceHub::~DeviceHub() {
@@ -74,6 +76,17 @@ void DeviceHub::onDeviceThread(const std::function<void()>& work) {
 }
 
 void DeviceHub::takeList(const QList<DeviceView>& views) {
+    // The same instances as before (a late copy of a list already taken, a sync): only their snapshots changed.
+    auto identity = [](const QList<DeviceView>& list) {
+        QList<QPair<QString, quintptr>> ids;
+        for (const DeviceView& v : list)
+            ids.append({v.id, v.instance});
+        return ids;
+    };
+    if (identity(views) == identity(m_views)) {
+        takeChanges(views);
+        return;
+    }
     m_views = views;
     emit devicesChanged();
 }
@@ -291,8 +304,7 @@ bool DeviceHub::latheConnected() {
     return connected;
 }
 
-std::shared_ptr<core::RelayedBoringStation> DeviceHub::connectBoring(const QString& sourceId,
-                                                                     core::BoringMethod method,
+std::shared_ptr<core::RelayedBoringStation> DeviceHub::connectBoring(const QString& sourceId, core::BoringMethod method,
                                                                      const QString& outputId, double plcCycleS) {
     std::shared_ptr<core::RelayedBoringStation> station;
     onDeviceThread([&] { station = m_host->connectBoring(sourceId, method, outputId, plcCycleS); });
@@ -310,7 +322,7 @@ std::vector<std::chrono::steady_clock::time_point> DeviceHub::boringWriteTimes()
 }
 
 std::shared_ptr<core::BoringStation> DeviceHub::beginBoringPass(const QString& sourceId,
-                                                               const core::BoringScenario& scenario) {
+                                                                const core::BoringScenario& scenario) {
     std::shared_ptr<core::BoringStation> pass;
     onDeviceThread([&] { pass = m_host->beginBoringPass(sourceId, scenario); });
     return pass;

@@ -23,21 +23,21 @@ struct DeviceView {
     QString name;
     QString pluginId;
     devices::DeviceKind kind = devices::DeviceKind::Gauge;
-    QVariantMap settings;  ///< validated, with defaults filled in
+    QVariantMap settings;   ///< validated, with defaults filled in
     quintptr instance = 0;  ///< tells instances apart: another value, another instance (its settings were replaced)
     core::DeviceHealth health{core::DeviceState::Disconnected, {}};
     QString liveValue;  ///< "26.812 mm"
     QString lastError;
     QList<devices::DeviceStatistic> statistics;
     // ---- capabilities ----
-    std::optional<devices::FaultSwitches> faults;  ///< the instrument has fault switches (a simulated one)
-    bool runsBoringPass = false;                   ///< it runs a simulated boring pass of its own (BoringTruth)
-    bool standBendsBar = false;                    ///< it sits on a stand with a screw jack (probe calibration)
-    bool standAppliesLoad = false;                 ///< it sits on a stand with a hydraulic jack (k_p calibration)
-    bool uploadsTable = false;                     ///< it takes a linearisation table (probe mandrels)
-    std::optional<devices::MandrelInfo> mandrel;   ///< what the mandrel says about itself
+    std::optional<devices::FaultSwitches> faults;    ///< the instrument has fault switches (a simulated one)
+    bool runsBoringPass = false;                     ///< it runs a simulated boring pass of its own (BoringTruth)
+    bool standBendsBar = false;                      ///< it sits on a stand with a screw jack (probe calibration)
+    bool standAppliesLoad = false;                   ///< it sits on a stand with a hydraulic jack (k_p calibration)
+    bool uploadsTable = false;                       ///< it takes a linearisation table (probe mandrels)
+    std::optional<devices::MandrelInfo> mandrel;     ///< what the mandrel says about itself
     std::optional<devices::MandrelTableInfo> table;  ///< the table it reports
-    devices::TableUploadStatus upload;                ///< the running or last table upload
+    devices::TableUploadStatus upload;               ///< the running or last table upload
 };
 
 /// The tone and one line for the status bar over every device (DeviceManager's summary, from snapshots).

@@ -1,9 +1,9 @@
 #include "runtime/devices/lathe_link.h"
 
 #include <QMetaObject>
+#include <optional>
 #include <type_traits>
 #include <variant>
-#include <optional>
 
 #include "devices/api/device_manager.h"
 

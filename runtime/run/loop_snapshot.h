@@ -15,11 +15,11 @@ namespace tt::runtime {
 /// The loop as the page shows it, sent by the loop thread after every change.
 struct LoopSnapshot {
     core::LoopState state = core::LoopState::Idle;
-    core::Notice status;                 ///< why the loop is in its state (worded by ui/run/notice_text.h)
-    qint64 nextPart = 1;                 ///< the part that will be started next
-    qint64 partsFinished = 0;            ///< in this session
-    std::optional<qint64> awaitingPart;  ///< the part waiting longest for its diameters
-    int nextPoint = 0;                   ///< its next control point
+    core::Notice status;                  ///< why the loop is in its state (worded by ui/run/notice_text.h)
+    qint64 nextPart = 1;                  ///< the part that will be started next
+    qint64 partsFinished = 0;             ///< in this session
+    std::optional<qint64> awaitingPart;   ///< the part waiting longest for its diameters
+    int nextPoint = 0;                    ///< its next control point
     std::optional<qint64> partOnMachine;  ///< machines whose cycle the operator runs: the part being machined
     bool manualEntry = false;
     double machineS = 0.0;  ///< the machine's time (simulated, or the wall clock since the run started), s

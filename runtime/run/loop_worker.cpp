@@ -242,8 +242,8 @@ void LoopWorker::shutdown() {
 void LoopWorker::tick() {
     if (!m_run) return;
     // Speed 0: as fast as the timer lets it (kMaxStepsPerTick events a tick).
-    const double until = m_pace && m_pace->speed() > 0.0 ? m_pace->machineAt(wallS())
-                                                          : std::numeric_limits<double>::infinity();
+    const double until =
+        m_pace && m_pace->speed() > 0.0 ? m_pace->machineAt(wallS()) : std::numeric_limits<double>::infinity();
     m_run->stepper->advanceTo(until, kMaxStepsPerTick);
     publish();
     if (m_run->engine->state() == core::LoopState::Idle) m_timer->stop();

@@ -9,20 +9,16 @@ namespace tt::runtime {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("tt::runtime::MachineCatalog", text);
-}
-
 QString stateWord(core::DeviceState state) {
     switch (state) {
         case core::DeviceState::Ready:
-            return tr("ready");
+            return QCoreApplication::translate("tt::runtime::MachineCatalog", "ready");
         case core::DeviceState::Connecting:
-            return tr("still connecting");
+            return QCoreApplication::translate("tt::runtime::MachineCatalog", "still connecting");
         case core::DeviceState::Disconnected:
-            return tr("closed");
+            return QCoreApplication::translate("tt::runtime::MachineCatalog", "closed");
         case core::DeviceState::Error:
-            return tr("in error");
+            return QCoreApplication::translate("tt::runtime::MachineCatalog", "in error");
     }
     return {};
 }
@@ -31,19 +27,27 @@ QString stateWord(core::DeviceState state) {
 QString devicesProblem(const DeviceHub* hub, const RunRequest& request) {
     const DeviceView* output = hub && !request.cncOutput.isEmpty() ? hub->view(request.cncOutput) : nullptr;
     if (!hub || request.cncOutput.isEmpty())
-        return tr("No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and "
-                  "choose it under CNC output.");
+        return QCoreApplication::translate(
+            "tt::runtime::MachineCatalog",
+            "No CNC output is chosen. Add a G-code file or Modbus correction output on the Devices page and "
+            "choose it under CNC output.");
     if (!output || output->kind != devices::DeviceKind::CorrectionOutput)
-        return tr("The CNC output chosen is no longer on the Devices page; choose another.");
+        return QCoreApplication::translate("tt::runtime::MachineCatalog",
+                                           "The CNC output chosen is no longer on the Devices page; choose another.");
     if (!output->health.ready())
-        return tr("The CNC output “%1” is %2: %3. Check it on the Devices page.")
+        return QCoreApplication::translate("tt::runtime::MachineCatalog",
+                                           "The CNC output “%1” is %2: %3. Check it on the Devices page.")
             .arg(output->name, stateWord(output->health.state), QString::fromStdString(output->health.message));
     if (request.gauge.isEmpty()) return {};
     const DeviceView* gauge = hub->view(request.gauge);
     if (!gauge || gauge->kind != devices::DeviceKind::Gauge)
-        return tr("The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.");
+        return QCoreApplication::translate(
+            "tt::runtime::MachineCatalog",
+            "The gauge chosen is no longer on the Devices page; choose another or type the diameters by hand.");
     if (!gauge->health.ready())
-        return tr("The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.")
+        return QCoreApplication::translate(
+                   "tt::runtime::MachineCatalog",
+                   "The gauge “%1” is %2: %3. Check it on the Devices page, or choose to type the diameters by hand.")
             .arg(gauge->name, stateWord(gauge->health.state), QString::fromStdString(gauge->health.message));
     return {};
 }
@@ -77,8 +81,10 @@ MachineCatalog::MachineCatalog(DeviceHub* hub) : m_hub(hub) {}
 MachineOffer MachineCatalog::devicesLathe() const {
     MachineOffer m;
     m.key = kDevicesLatheKey;
-    m.name = tr("Real lathe (Devices page)");
-    m.description = tr("each part's corrections go to the CNC; you machine the part and press Part finished.");
+    m.name = QCoreApplication::translate("tt::runtime::MachineCatalog", "Real lathe (Devices page)");
+    m.description = QCoreApplication::translate(
+        "tt::runtime::MachineCatalog",
+        "each part's corrections go to the CNC; you machine the part and press Part finished.");
     m.can.usesDevices = true;
     m.can.operatorCycle = true;
     DeviceHub* hub = m_hub;

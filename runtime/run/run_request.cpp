@@ -70,7 +70,8 @@ public:
     std::optional<std::int64_t> whole(const char* key) const {
         const std::optional<double> v = number(key);
         if (!v) return std::nullopt;
-        if (std::floor(*v) != *v || std::abs(*v) > 9.007199254740992e15) refuse(field(key), "must be a whole number");
+        if (std::floor(*v) != *v) refuse(field(key), "must be a whole number");
+        if (std::abs(*v) >= 9.2e18) refuse(field(key), "is too large");
         return static_cast<std::int64_t>(*v);
     }
     std::optional<bool> flag(const char* key) const {
@@ -91,8 +92,7 @@ private:
 
 void readController(const Reader& r, RunRequest& q) {
     try {
-        q.controller =
-            core::controllerKindFromName(r.text("controller", QStringLiteral("lqg")).toStdString());
+        q.controller = core::controllerKindFromName(r.text("controller", QStringLiteral("lqg")).toStdString());
     } catch (const std::invalid_argument&) {
         refuse("controller", "must be one of lqg, ewma, dewma, open");
     }
@@ -153,8 +153,7 @@ void readRun(const Reader& r, RunRequest& q) {
 void validatePlant(const RunRequest& q, const config::LoopScenario& scenario) {
     const RequestedPlant& p = q.plant;
     if (p.gainFactor)
-        requireRange("plant_mismatch.gain_factor", *p.gainFactor, core::kMinPlantGainFactor,
-                     core::kMaxPlantGainFactor);
+        requireRange("plant_mismatch.gain_factor", *p.gainFactor, core::kMinPlantGainFactor, core::kMaxPlantGainFactor);
     if (p.delayParts && (*p.delayParts < scenario.delay() || *p.delayParts > core::kMaxDelay))
         refuse("plant_mismatch.delay", std::to_string(*p.delayParts) + " is outside the model's delay " +
                                            std::to_string(scenario.delay()) + " .. " + std::to_string(core::kMaxDelay));
@@ -321,9 +320,9 @@ config::LoopScenario scenarioOf(const RunRequest& q) {
     core::PlantMismatch& m = scenario.plantMismatch;
     if (q.plant.gainFactor) m.gainFactor = *q.plant.gainFactor;
     if (q.plant.delayParts) m.delayParts = q.plant.delayParts;
-    if (q.plant.step) m.step = core::PlantStep{q.plant.step->atPart, q.plant.step->sizeMm,
-                                               q.plant.step->point ? std::optional<int>(*q.plant.step->point - 1)
-                                                                   : std::nullopt};
+    if (q.plant.step)
+        m.step = core::PlantStep{q.plant.step->atPart, q.plant.step->sizeMm,
+                                 q.plant.step->point ? std::optional<int>(*q.plant.step->point - 1) : std::nullopt};
     return scenario;
 }
 

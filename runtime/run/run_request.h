@@ -55,10 +55,10 @@ struct RunRequest {
     QString gauge;                       ///< and the gauge's; empty: diameters typed in by hand
     // ---- the set-up and its control ----
     QString preset = QStringLiteral("paper-2012");  ///< preset name or JSON file
-    std::optional<int> delay;                        ///< transport delay z, parts (1..8)
+    std::optional<int> delay;                       ///< transport delay z, parts (1..8)
     core::ControllerKind controller = core::ControllerKind::Lqg;
-    std::optional<double> ewmaWeight;  ///< EWMA lambda in (0, 1]
-    bool ewmaAuto = false;             ///< the best EWMA lambda on a grid
+    std::optional<double> ewmaWeight;   ///< EWMA lambda in (0, 1]
+    bool ewmaAuto = false;              ///< the best EWMA lambda on a grid
     std::optional<double> driftWeight;  ///< double EWMA's lambda2 in (0, 1)
     std::optional<bool> integral;       ///< the LQG's integral action
     std::optional<double> integralWeight;

@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "core/loop/loop_events.h"
-#include "runtime/run/loop_worker.h"
 #include "runtime/run/loop_snapshot.h"
+#include "runtime/run/loop_worker.h"
 
 namespace tt::runtime {
 

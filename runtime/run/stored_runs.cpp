@@ -19,8 +19,8 @@ RunRequest fromGuiSettings(const QJsonObject& o) {
     q.preset = o.value(QStringLiteral("preset")).toString();
     q.delay = o.value(QStringLiteral("delay")).toInt();
     q.controller = core::controllerKindFromName(o.value(QStringLiteral("controller")).toString().toStdString());
-    if (const QJsonValue w = o.value(QStringLiteral("ewma_weight")); w.isDouble() && q.controller != core::ControllerKind::Lqg &&
-                                                                      q.controller != core::ControllerKind::Open)
+    if (const QJsonValue w = o.value(QStringLiteral("ewma_weight"));
+        w.isDouble() && q.controller != core::ControllerKind::Lqg && q.controller != core::ControllerKind::Open)
         q.ewmaWeight = w.toDouble();
     q.seed = o.value(QStringLiteral("seed")).toString().toULongLong();
     if (o.contains(QStringLiteral("last_part"))) q.endPart = o.value(QStringLiteral("last_part")).toInteger();
@@ -75,8 +75,8 @@ RunRequest requestOfStoredRun(const core::RunSummary& run) {
             throw RunRequestError("source", "the run was not started by TrueTurn's Run page or 'trueturn simulate'");
         validate(q);
     } catch (const RunRequestError& e) {
-        throw RunRequestError(e.field, std::string("the settings stored with ") + which + " cannot be used: " +
-                                           e.what());
+        throw RunRequestError(e.field,
+                              std::string("the settings stored with ") + which + " cannot be used: " + e.what());
     } catch (const std::invalid_argument& e) {
         throw RunRequestError("source", "the settings stored with " + which + " are damaged: " + e.what());
     }

@@ -16,7 +16,7 @@ import sys
 GUI_MODULES = ("QtGui", "QtWidgets", "QtPrintSupport")
 BRANCH_NAMES = re.compile(r"\b(realLatheChosen|kOwnPass|onSourcesPass|boringTruth|kDevicesMachineKey|kBuiltInLatheKey|"
                           r"kDevicesLatheKey)\b")
-MACHINE_KEYS = re.compile(r'"(simulated-lathe|devices-lathe|real-lathe|real|station)"')
+MACHINE_KEYS = re.compile(r'"(simulated-lathe|devices-lathe|real-lathe|real)"')
 KEY_COMPARED = re.compile(r"\bmachine\w*(\(\))?\s*(==|!=)\s*(QStringLiteral|QLatin1String|u\"|\")")
 
 

@@ -44,7 +44,8 @@ inline int interruptedSimulate(const QString& exe, const QStringList& arguments,
     static const QRegularExpression done(QStringLiteral("closed loop: part (\\d+) of"));
     auto partsDone = [&] {
         int most = 0;
-        for (auto it = done.globalMatch(err); it.hasNext();) most = std::max(most, it.next().captured(1).toInt());
+        for (auto it = done.globalMatch(err); it.hasNext();)
+            most = std::max(most, it.next().captured(1).toInt());
         return most;
     };
     while (partsDone() < afterParts && process.state() == QProcess::Running) {

@@ -17,12 +17,12 @@
 
 #include "config/boring_config.h"
 #include "core/storage/tool_store.h"
+#include "plot/chart.h"
+#include "runtime/boring/compensation_session.h"
+#include "runtime/devices/boring_link.h"
 #include "runtime/devices/device_hub.h"
 #include "ui/app_state.h"
-#include "runtime/devices/boring_link.h"
-#include "runtime/boring/compensation_session.h"
 #include "ui/boring/hold_reason.h"
-#include "plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -34,7 +34,7 @@ const int kSpeeds[] = {1, 5, 10, 20, 50};  ///< a source's own pass: PLC cycles 
 constexpr int kDefaultSpeed = 2;
 /// The CNC output entry of a source's own simulated pass (its PLC), offered when the source has one.
 /// The tool entry of a source's own simulated pass (the scenario's bar).
-const QString kPassTool = QStringLiteral("own-bar");
+const QString kPassTool = QStringLiteral("station");
 
 const QColor kMeasured(21, 101, 192);
 const QColor kOffset(46, 125, 50);
@@ -444,7 +444,8 @@ bool BoringPanel::start() {
     }
     const std::optional<runtime::BoringTarget> target = currentTarget();
     if (!target) {
-        showProblem(tr("Cannot start: %1").arg(tr("No CNC output for the dynamic X offset: add one on the Devices page.")));
+        showProblem(
+            tr("Cannot start: %1").arg(tr("No CNC output for the dynamic X offset: add one on the Devices page.")));
         return false;
     }
     if (!sourceDevice()) {
@@ -751,7 +752,8 @@ void BoringPanel::retranslate() {
     if (passTool >= 0)
         m_tool->setItemText(passTool, tr("Station: %1").arg(QString::fromStdString(m_scenario.tool.name)));
     if (const std::optional<SourceChoice> source = currentSource(); source && !m_running)
-        m_targets = runtime::boringTargets(m_devices, source->deviceId, m_scenarioProblem.isEmpty());  // names in the new language
+        m_targets = runtime::boringTargets(m_devices, source->deviceId,
+                                           m_scenarioProblem.isEmpty());  // names in the new language
     for (int i = 0; i < m_output->count() && i < m_targets.size(); ++i)
         m_output->setItemText(i, m_targets[i].name);
     if (const std::optional<core::ToolRecord> tool = currentTool()) {

@@ -12,8 +12,8 @@
 
 #include "core/model/tool_stiffness.h"
 #include "core/run/boring_run.h"
-#include "ui/app_context.h"
 #include "runtime/boring/boring_targets.h"
+#include "ui/app_context.h"
 #include "ui/boring/boring_trace.h"
 
 class QCheckBox;
@@ -139,7 +139,7 @@ private:
     AppContext& m_context;
     QPointer<runtime::DeviceHub> m_devices;
     QList<runtime::BoringTarget> m_targets;  ///< where the offset can go for the chosen source
-    core::BoringScenario m_scenario;  ///< the heavy-boring preset: defaults, and what a source's own pass bores
+    core::BoringScenario m_scenario;         ///< the heavy-boring preset: defaults, and what a source's own pass bores
     QString m_scenarioProblem;
     std::vector<core::ToolRecord> m_tools;
     QString m_toolProblem;

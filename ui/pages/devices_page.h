@@ -88,7 +88,7 @@ private:
     QString m_savedName;
 
     // Test connection.
-    QString m_testTarget;  ///< the id of the instance tested (the trial one for typed settings); empty: none
+    QString m_testTarget;      ///< the id of the instance tested (the trial one for typed settings); empty: none
     QString m_testStartValue;  ///< the live value before the test: a new one proves the device answers
     QTimer m_testTimer;
     QElapsedTimer m_testClock;

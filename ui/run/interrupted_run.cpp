@@ -16,10 +16,6 @@ namespace tt::ui {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("tt::ui::InterruptedRun", text);
-}
-
 /// The machine of the run in words: the lathe's name in the history, else the offer's name.
 QString machineOf(AppContext& context, const runtime::InterruptedRun& run) {
     if (!run.point.run.description.machine.empty()) return QString::fromStdString(run.point.run.description.machine);
@@ -44,14 +40,19 @@ bool offerInterruptedRun(AppContext& context, MainWindow& window) {
     const std::optional<runtime::InterruptedRun> run = findInterruptedRun(context);
     if (!run) return false;
     const core::RunSummary& summary = run->point.run;
-    const QString planned = run->request.endPart ? QString::number(*run->request.endPart) : tr("no end");
-    const QString question = tr("Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?")
-                                 .arg(summary.runId)
-                                 .arg(machineOf(context, *run), run->request.preset)
-                                 .arg(summary.partCount)
-                                 .arg(planned)
-                                 .arg(run->nextPart());
-    if (context.prompt->ask(&window, tr("Interrupted run"), question) != Prompt::Answer::Yes) return false;
+    const QString planned = run->request.endPart ? QString::number(*run->request.endPart)
+                                                 : QCoreApplication::translate("tt::ui::InterruptedRun", "no end");
+    const QString question =
+        QCoreApplication::translate("tt::ui::InterruptedRun",
+                                    "Run %1 (%2, %3, %4 of %5 parts done) was interrupted. Continue it from part %6?")
+            .arg(summary.runId)
+            .arg(machineOf(context, *run), run->request.preset)
+            .arg(summary.partCount)
+            .arg(planned)
+            .arg(run->nextPart());
+    if (context.prompt->ask(&window, QCoreApplication::translate("tt::ui::InterruptedRun", "Interrupted run"),
+                            question) != Prompt::Answer::Yes)
+        return false;
     window.showPage(PageId::Run);
     auto* page = qobject_cast<RunPage*>(window.page(PageId::Run));
     if (!page) return false;

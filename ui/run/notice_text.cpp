@@ -68,10 +68,10 @@ QString stateText(const core::Notice& n) {
 QString mismatchText(const core::Notice& n) {
     const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
                                             : QCoreApplication::translate("Notice", "variance");
-    const QString then = n.cause == "hold"
-                             ? QCoreApplication::translate(
-                                   "Notice", "The CNC keeps the last correction until the run is restarted")
-                             : QCoreApplication::translate("Notice", "The controller goes on");
+    const QString then =
+        n.cause == "hold"
+            ? QCoreApplication::translate("Notice", "The CNC keeps the last correction until the run is restarted")
+            : QCoreApplication::translate("Notice", "The controller goes on");
     return QCoreApplication::translate("Notice",
                                        "The plant no longer matches the controller's model (part %1, point "
                                        "%2): the %3 test of the innovations over %4 parts is %5, above its "

@@ -515,9 +515,8 @@ bool ShaftRunPanel::launch(const runtime::RunRequest& request, std::optional<qin
         refuseStart(tr("The machine “%1” is not offered; choose another.").arg(request.machine));
         return false;
     }
-    const runtime::DeviceView* output = m_context.devices && !request.cncOutput.isEmpty()
-                                            ? m_context.devices->view(request.cncOutput)
-                                            : nullptr;
+    const runtime::DeviceView* output =
+        m_context.devices && !request.cncOutput.isEmpty() ? m_context.devices->view(request.cncOutput) : nullptr;
     runtime::RunStart start{request, offer->name, output ? output->name : QString(), offer->can, {}};
     try {
         start.make = offer->prepare(request);

@@ -117,9 +117,9 @@ private:
     runtime::LoopSnapshot m_snapshot;
     bool m_haveRun = false;
     runtime::RunLayout m_layout;
-    QList<runtime::MachineOffer> m_offers;          ///< every machine a run can go on
+    QList<runtime::MachineOffer> m_offers;             ///< every machine a run can go on
     std::optional<runtime::MachineOffer> m_onMachine;  ///< the machine of the run started last
-    runtime::RunRequest m_running;                  ///< the request of the run started last
+    runtime::RunRequest m_running;                     ///< the request of the run started last
 
     QPushButton* m_start;
     QPushButton* m_pause;

@@ -51,13 +51,14 @@ TEST_F(RunControl, AResumedRunAskingForTooManyPartsIsRefusedBeforeItStarts) {
     // The settings stored with the run were edited to 1e18 parts: the resume used to run for ever.
     const QString db = path(QStringLiteral("history.sqlite"));
     storeRun(db, 100);
-    sql(db, QStringLiteral("UPDATE runs SET status = 'running', settings = json_set(settings, '$.parts', "
+    sql(db, QStringLiteral("UPDATE runs SET status = 'running', settings = json_set(settings, '$.request.end_part', "
                            "1000000000000000000)"));
     expectRefused({QStringLiteral("simulate"), QStringLiteral("--db"), db, QStringLiteral("--resume")},
-                  QStringLiteral("the limit is 2 .. 10000000 parts"));
-    sql(db, QStringLiteral("UPDATE runs SET settings = json_set(settings, '$.parts', 100, '$.warmup', 5000000)"));
+                  QStringLiteral("end_part: 1000000000000000000 is outside 1 .. 11000000"));
+    sql(db, QStringLiteral("UPDATE runs SET settings = json_set(settings, '$.request.end_part', 100, "
+                           "'$.request.warmup_parts', 5000000)"));
     expectRefused({QStringLiteral("simulate"), QStringLiteral("--db"), db, QStringLiteral("--resume")},
-                  QStringLiteral("the limit is 0 .. 1000000 parts"));
+                  QStringLiteral("warmup_parts: 5000000 is outside 0 .. 1000000"));
 }
 
 TEST_F(RunControl, ResumeNamesTheRunToContinue) {

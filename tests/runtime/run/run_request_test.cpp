@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 
 #include "config/controller_tuning_json.h"
+#include "config/plant_config.h"
 #include "runtime/run/stored_runs.h"
 
 namespace tt::runtime {

@@ -232,8 +232,8 @@ TEST_F(BoringPanelTest, ASourceWithoutAPassOfItsOwnNeedsAToolAndACncOutput) {
     const QString output = addSimulator(devices::DeviceKind::CorrectionOutput, QStringLiteral("PLC"));
     ASSERT_TRUE(panel.selectOutput(QStringLiteral("dev:%1").arg(output)));
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs))
+        << panel.headline().toStdString() << ": " << panel.reason().toStdString();
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("drive current read-out is silent or disconnected")))
         << panel.reason().toStdString();
     panel.stop();
@@ -260,13 +260,17 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
         << panel.reason().toStdString();
     ASSERT_TRUE(panel.stats().forceN.has_value());
     EXPECT_NEAR(*panel.stats().forceN, 90.0, 5.0);
-    std::optional<double> plcOffsetMm;
-    manager.withDevice(output, [&](devices::Device& d) {
-        if (const auto* plc = dynamic_cast<devices::SimulatedOutput*>(&d)) plcOffsetMm = plc->plcOffsetMm();
-    });
+    // What the simulated CNC holds, read in the device thread.
+    auto plcOffsetMm = [&] {
+        std::optional<double> held;
+        manager.withDevice(output, [&](devices::Device& d) {
+            if (const auto* plc = dynamic_cast<devices::SimulatedOutput*>(&d)) held = plc->plcOffsetMm();
+        });
+        return held;
+    };
     // What the CNC holds: the offsets reach it through the relay, at most one PLC cycle behind.
-    ASSERT_TRUE(plcOffsetMm.has_value());
-    EXPECT_NEAR(*plcOffsetMm, panel.stats().offsetMm, stepLimitMm(panel) + 1e-9);
+    ASSERT_TRUE(plcOffsetMm().has_value());
+    EXPECT_NEAR(*plcOffsetMm(), panel.stats().offsetMm, stepLimitMm(panel) + 1e-9);
     EXPECT_LE(panel.stats().largestStepMm, stepLimitMm(panel) + 1e-9);
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_5_devices")));
 
@@ -275,32 +279,31 @@ TEST_F(BoringPanelTest, DevicesDriveTheOffsetIntoTheCncAndASilentDriveHoldsIt) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return panel.headline() == QStringLiteral("Holding"); }, tt::test::kPatientWaitMs));
     EXPECT_TRUE(panel.reason().contains(QStringLiteral("silent"))) << panel.reason().toStdString();
     QTest::qWait(100);  // the last offset before the hold reaches the CNC
-    const double held = *plc->plcOffsetMm();
+    const double held = *plcOffsetMm();
     QTest::qWait(300);
-    EXPECT_DOUBLE_EQ(*plc->plcOffsetMm(), held);
+    EXPECT_DOUBLE_EQ(*plcOffsetMm(), held);
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
     EXPECT_TRUE(test::saveScreenshot(panel, QStringLiteral("boring_panel_6_devices_silent")));
 
     panel.stop();
-    EXPECT_DOUBLE_EQ(*plc->plcOffsetMm(), held);  // stopping does not move the tool
+    EXPECT_DOUBLE_EQ(*plcOffsetMm(), held);  // stopping does not move the tool
     // A new run starts from the offset the CNC holds, not from 0 (no jump of the tool).
     test::setFault(manager, drive, &devices::FaultSwitches::silent, false);
     ASSERT_TRUE(panel.start()) << panel.reason().toStdString();
     EXPECT_DOUBLE_EQ(panel.stats().offsetMm, held);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, tt::test::kPatientWaitMs))
-        << panel.reason().toStdString();
-    EXPECT_GE(*plc->plcOffsetMm(), held - 1e-9);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return panel.stats().sentCycles > 5; }, tt::test::kPatientWaitMs)) << panel.reason().toStdString();
+    EXPECT_GE(*plcOffsetMm(), held - 1e-9);
     EXPECT_LE(panel.stats().largestStepMm, stepLimitMm(panel) + 1e-9);
     panel.stop();
-    const double heldAgain = *plc->plcOffsetMm();
+    const double heldAgain = *plcOffsetMm();
     ASSERT_TRUE(panel.zeroButton()->isEnabled());
     prompt.answers.push_back(Prompt::Answer::No);
     EXPECT_FALSE(panel.zeroOffset());
-    EXPECT_DOUBLE_EQ(*plc->plcOffsetMm(), heldAgain);
+    EXPECT_DOUBLE_EQ(*plcOffsetMm(), heldAgain);
     prompt.answers.push_back(Prompt::Answer::Yes);
     EXPECT_TRUE(panel.zeroOffset());
     EXPECT_TRUE(prompt.lastText.contains(QStringLiteral("out of the bore")));
-    EXPECT_DOUBLE_EQ(*plc->plcOffsetMm(), 0.0);
+    EXPECT_DOUBLE_EQ(*plcOffsetMm(), 0.0);
     EXPECT_FALSE(panel.zeroButton()->isEnabled());
 }
 

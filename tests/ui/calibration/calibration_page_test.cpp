@@ -431,14 +431,11 @@ TEST_F(CalibrationPageTest, KpWizardRefusesLoadsThatDoNotFitAndAFailedVerificati
 }
 
 TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBackItsCrc) {
-    devices::SteadyClock clock;
-    devices::SimulatorPlugin plugin;
-    std::unique_ptr<devices::Device> device =
-        plugin.create(devices::DeviceKind::Probe, {}, devices::DeviceContext{&clock});
-    device->open();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return device->health().ready(); }, tt::test::kPatientWaitMs))
-        << device->health().message;
-    DeviceCalibrationProbe probe(*device, QStringLiteral("Mandrel on the simulator"), 12);
+    runtime::DeviceHub hub;
+    const QString id = hub.addDevice(QStringLiteral("simulator"), devices::DeviceKind::Probe, QStringLiteral("M"), {});
+    hub.openAll();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return hub.view(id)->health.ready(); }, tt::test::kPatientWaitMs)) << hub.view(id)->health.message;
+    DeviceCalibrationProbe probe(hub, id, QStringLiteral("Mandrel on the simulator"), 12);
     ASSERT_TRUE(probe.canUpload());
     EXPECT_TRUE(probe.hasJack());
     ASSERT_TRUE(QTest::qWaitFor([&] { return probe.port().takeSample().has_value(); }, tt::test::kPatientWaitMs));
@@ -458,17 +455,24 @@ TEST(DeviceCalibrationProbe, UploadsThroughTheDevicesSimulatedMandrelAndReadsBac
                                 tt::test::kPatientWaitMs))
         << probe.uploadStatus().message;
     probe.requestReadback();
-    ASSERT_TRUE(probe.readback().has_value());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return probe.readback() && probe.readback()->version == 4; }, 3000));
     EXPECT_EQ(probe.readback()->version, 4);
     EXPECT_EQ(probe.readback()->crc32c, crc);  // probe protocol 2 reads back the CRC-32C
     EXPECT_TRUE(probe.readback()->valid);
     EXPECT_TRUE(probe.readback()->matches(4, image));
     EXPECT_THROW(probe.startUpload(image, 5, crc ^ 1), std::invalid_argument);
     // Its stand's screw jack, released by whoever engaged it.
+    auto engaged = [&] {
+        bool on = false;
+        hub.withDevice(id, [&](devices::Device& d) {
+            on = devices::simulatedInstrument(d)->calibrationStand()->engaged();
+        });
+        return on;
+    };
     probe.bendBar(0, 0.1);
-    EXPECT_TRUE(device->calibrationStand()->engaged());
+    EXPECT_TRUE(engaged());
     probe.releaseJack();
-    EXPECT_FALSE(device->calibrationStand()->engaged());
+    EXPECT_FALSE(engaged());
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 // the 16-bit table over probe protocol 2 with the read-back of its CRC-32C.
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <QAbstractButton>
 #include <QCheckBox>
 #include <QComboBox>
@@ -20,6 +22,7 @@
 #include "core/model/tool_table.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/tool_store.h"
+#include "devices/api/simulated_instrument.h"
 #include "runtime/devices/device_hub.h"
 #include "devices/simulator/simulated_drive.h"
 #include "screenshots.h"
@@ -117,7 +120,6 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
     const QString id =
         add(devices::DeviceKind::DriveCurrent, QStringLiteral("Cross feed X"),
             {{QStringLiteral("pollMs"), 10}, {QStringLiteral("periodS"), 0.2}, {QStringLiteral("stand"), false}});
-    double loadN = 0.0;
     std::atomic<double> loadN{0.0};  // set here, read by the drive in the device thread
     manager.withDevice(id, [&loadN](devices::Device& d) {
         devices::simulatedInstrument(d)->simulationInputs().setDriveSource(

@@ -32,7 +32,7 @@
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
-#include "ui/devices/terminal_devices.h"
+#include "runtime/devices/terminal_devices.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
@@ -168,10 +168,10 @@ protected:
     void SetUp() override {
         QSettings().clear();
         ASSERT_TRUE(language.apply(QStringLiteral("ru")));
-        devices = std::make_unique<TerminalDevices>(kBuildPlugins);
+        devices = std::make_unique<runtime::TerminalDevices>(kBuildPlugins);
         ASSERT_TRUE(language.apply(QStringLiteral("en")));
         context =
-            AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices->manager()};
+            AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices->hub()};
         recordFinishedRun();
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
@@ -260,7 +260,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    std::unique_ptr<TerminalDevices> devices;
+    std::unique_ptr<runtime::TerminalDevices> devices;
     AppContext context;
 };
 

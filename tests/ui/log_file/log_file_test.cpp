@@ -9,6 +9,7 @@
 #include <QLoggingCategory>
 #include <QTemporaryDir>
 
+#include "runtime/log_categories.h"
 #include "ui/log_categories.h"
 
 namespace tt::ui {

@@ -395,7 +395,7 @@ TEST_F(RealLatheTest, ABusyWindowLosesNoGaugeReadingAndDelaysNoCorrection) {
     const std::vector<double> turned = machine(1);
     page.shaft().lathePanel()->finishedButton()->click();
     ASSERT_TRUE(waitFor([&] { return session.snapshot().awaitingPart == 1; }));
-    std::vector<QByteArray> frames;  // the DATA button's frames of the five readings, made in this thread
+    std::vector<std::vector<std::uint8_t>> frames;  // the DATA button's frames of the five readings
     for (double d : turned) {
         micrometer.setSource([d] { return d; });
         frames.push_back(micrometer.pressDataButton());
@@ -403,7 +403,7 @@ TEST_F(RealLatheTest, ABusyWindowLosesNoGaugeReadingAndDelaysNoCorrection) {
     const int before = readingsAccepted();
     const QDateTime blockStart = QDateTime::currentDateTime();
     std::thread operatorHand([&] {
-        for (const QByteArray& frame : frames) {
+        for (const std::vector<std::uint8_t>& frame : frames) {
             pty.send(frame);
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }

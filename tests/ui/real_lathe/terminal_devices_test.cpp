@@ -14,7 +14,7 @@
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
-#include "ui/devices/terminal_devices.h"
+#include "runtime/devices/terminal_devices.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/devices_page.h"
@@ -39,7 +39,7 @@ protected:
 TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStartsRestoreWhatWasSaved) {
     QStringList firstIds;
     {
-        TerminalDevices devices(kBuildPlugins);
+        runtime::TerminalDevices devices(kBuildPlugins);
         EXPECT_TRUE(devices.firstStart());
         EXPECT_TRUE(devices.problems().isEmpty()) << devices.problems().join(QStringLiteral("; ")).toStdString();
         runtime::DeviceHub& m = devices.hub();
@@ -47,12 +47,12 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         for (devices::DeviceKind kind : devices::allDeviceKinds()) {
             const QStringList ofKind = m.devicesOfKind(kind);
             ASSERT_EQ(ofKind.size(), 1) << devices::kindKey(kind).toStdString();
-            const devices::DeviceEntry* e = m.entry(ofKind.front());
-            EXPECT_EQ(e->pluginId, QStringLiteral("simulator"));
-            EXPECT_TRUE(QTest::qWaitFor([&] { return e->device->health().ready(); }, tt::test::kPatientWaitMs))
-                << "opened: " << e->device->health().message;
+            const QString id = ofKind.front();
+            EXPECT_EQ(m.view(id)->pluginId, QStringLiteral("simulator"));
+            EXPECT_TRUE(QTest::qWaitFor([&] { return m.view(id)->health.ready(); }, tt::test::kPatientWaitMs))
+                << "opened: " << m.view(id)->health.message;
         }
-        EXPECT_EQ(m.entry(m.devicesOfKind(devices::DeviceKind::Gauge).front())->name,
+        EXPECT_EQ(m.view(m.devicesOfKind(devices::DeviceKind::Gauge).front())->name,
                   QStringLiteral("Simulated gauge micrometer"));
         EXPECT_EQ(m.summary().text, QStringLiteral("4 ready"));
         firstIds = m.deviceIds();
@@ -60,7 +60,7 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
         m.removeDevice(m.devicesOfKind(devices::DeviceKind::Probe).front());
     }
     {
-        TerminalDevices devices(kBuildPlugins);
+        runtime::TerminalDevices devices(kBuildPlugins);
         EXPECT_FALSE(devices.firstStart());
         QStringList expected = firstIds;
         expected.removeAt(1);  // the probe
@@ -71,21 +71,21 @@ TEST_F(TerminalDevicesTest, AFirstStartGetsOneOpenSimulatorPerKindAndLaterStarts
             devices.hub().removeDevice(id);
     }
     {
-        TerminalDevices devices(kBuildPlugins);
+        runtime::TerminalDevices devices(kBuildPlugins);
         EXPECT_FALSE(devices.firstStart()) << "an empty list is a choice, not a first start";
         EXPECT_TRUE(devices.hub().deviceIds().isEmpty());
     }
 }
 
 TEST_F(TerminalDevicesTest, APluginFolderThatIsMissingIsReportedAndTheSimulatorStillWorks) {
-    TerminalDevices devices(QStringLiteral("/nonexistent/trueturn/plugins"));
+    runtime::TerminalDevices devices(QStringLiteral("/nonexistent/trueturn/plugins"));
     ASSERT_EQ(devices.problems().size(), 1);
     EXPECT_TRUE(devices.problems().front().contains(QStringLiteral("does not exist")));
     EXPECT_EQ(devices.hub().deviceIds().size(), 4);
 }
 
 TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
-    TerminalDevices devices(kBuildPlugins);
+    runtime::TerminalDevices devices(kBuildPlugins);
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
@@ -94,7 +94,7 @@ TEST_F(TerminalDevicesTest, EveryPageSeesTheSameDevicesAndTheBadgeFollowsThem) {
     MainWindow window(context);
     ASSERT_TRUE(QTest::qWaitFor([&] { return devices.hub().summary().text == QStringLiteral("4 ready"); }, tt::test::kPatientWaitMs));
     auto* devicesPage = static_cast<DevicesPage*>(window.page(PageId::Devices));
-    EXPECT_EQ(&devicesPage->manager(), &devices.hub());
+    EXPECT_EQ(&devicesPage->hub(), &devices.hub());
     EXPECT_EQ(state.deviceTone(), AppState::Tone::Ok);
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("DeviceBadge"))->text(), QStringLiteral("Devices: ready"));
     EXPECT_EQ(window.findChild<QLabel*>(QStringLiteral("statusDevices"))->text(), QStringLiteral("Devices: 4 ready"));

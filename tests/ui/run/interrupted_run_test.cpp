@@ -137,7 +137,7 @@ TEST_F(InterruptedRunTest, ARunCutOffOnTheCommandLineContinuesOnTheRunPageWithIt
                QStringList{QStringLiteral("simulate")} + run + QStringList{QStringLiteral("--db"), whole});
     ASSERT_TRUE(left.waitForFinished(-1));
     ASSERT_EQ(left.exitCode(), 0) << left.readAllStandardError().toStdString();
-    ASSERT_EQ(test::interruptedSimulate(QStringLiteral(TRUETURN_EXE),
+    ASSERT_EQ(tt::test::interruptedSimulate(QStringLiteral(TRUETURN_EXE),
                                         run + QStringList{QStringLiteral("--db"), context.databasePath,
                                                           QStringLiteral("--speed"), QStringLiteral("18000")},
                                         40),
@@ -152,8 +152,8 @@ TEST_F(InterruptedRunTest, ARunCutOffOnTheCommandLineContinuesOnTheRunPageWithIt
     ASSERT_TRUE(offerInterruptedRun(context, window));
     ASSERT_TRUE(waitFor([&] { return context.data().history()->runs().front().status == "complete"; }, 300000))
         << core::describe(page->session().snapshot().status);
-    const std::vector<double> a = test::storedDiameters(whole);
-    const std::vector<double> b = test::storedDiameters(context.databasePath);
+    const std::vector<double> a = tt::test::storedDiameters(whole);
+    const std::vector<double> b = tt::test::storedDiameters(context.databasePath);
     ASSERT_EQ(a.size(), 150u * 5u);
     ASSERT_EQ(b.size(), a.size());
     for (std::size_t i = 0; i < a.size(); ++i)
@@ -185,7 +185,7 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
     ASSERT_TRUE(simulate.waitForStarted(tt::test::kPatientWaitMs));
     ASSERT_TRUE(waitFor(
         [&] {
-            const std::optional<InterruptedRun> run = findInterruptedRun(context);
+            const std::optional<runtime::InterruptedRun> run = findInterruptedRun(context);
             return run && run->point.lastPartNumber >= 5;
         },
         tt::test::kPatientWaitMs));
@@ -195,8 +195,8 @@ TEST_F(InterruptedRunTest, ARunOfTheCommandLineCutOffByCtrlCIsOfferedAndContinue
 
     const std::optional<runtime::InterruptedRun> found = findInterruptedRun(context);
     ASSERT_TRUE(found.has_value());
-    EXPECT_EQ(found->settings.lastPartNumber, std::optional<qint64>(400)) << "warm-up 0 + 400 parts";
-    EXPECT_EQ(found->settings.seed, 3u);
+    EXPECT_EQ(found->request.endPart, std::optional<std::int64_t>(400)) << "warm-up 0 + 400 parts";
+    EXPECT_EQ(found->request.seed, 3u);
     const qint64 runId = found->point.run.runId;
     const qint64 next = found->nextPart();
     MainWindow window(context);

@@ -18,7 +18,7 @@ namespace {
 using BoringHeader = test::TerminalWindowTest;
 
 TEST_F(BoringHeader, TheHeaderSaysWhatTheCompensationDoes) {
-    runtime::DeviceHub& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->hub();
     const QString drive = manager.devicesOfKind(devices::DeviceKind::DriveCurrent).value(0);
     ASSERT_FALSE(drive.isEmpty()) << "the first start's simulated drive read-out";
     auto window = openWindow();

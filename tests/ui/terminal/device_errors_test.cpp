@@ -50,7 +50,7 @@ TEST_F(DeviceErrors, ARefusedModbusConnectionIsTheLastError) {
     ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
     const int port = ntohs(address.sin_port);
     ::close(fd);
-    runtime::DeviceHub& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->hub();
     const QString id =
         manager.addDevice(QStringLiteral("modbus"), devices::DeviceKind::DriveCurrent, QStringLiteral("Spindle drive"),
                           {{QStringLiteral("transport"), QStringLiteral("tcp")},
@@ -71,7 +71,7 @@ TEST_F(DeviceErrors, ARefusedModbusConnectionIsTheLastError) {
 }
 
 TEST_F(DeviceErrors, AnUnpluggedSimulatorNoLongerSaysConnected) {
-    runtime::DeviceHub& manager = devices->manager();
+    runtime::DeviceHub& manager = devices->hub();
     const QString id = manager.devicesOfKind(devices::DeviceKind::Gauge).value(0);
     ASSERT_FALSE(id.isEmpty()) << "the first start's simulated gauge";
     auto window = openWindow();

@@ -8,7 +8,7 @@
 
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
-#include "ui/devices/terminal_devices.h"
+#include "runtime/devices/terminal_devices.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
 
@@ -21,9 +21,9 @@ class TerminalWindowTest : public ::testing::Test {
 protected:
     void SetUp() override {
         QSettings().clear();
-        devices = std::make_unique<TerminalDevices>(QStringLiteral(TRUETURN_BINARY_DIR "/lib/trueturn/plugins"));
+        devices = std::make_unique<runtime::TerminalDevices>(QStringLiteral(TRUETURN_BINARY_DIR "/lib/trueturn/plugins"));
         context =
-            AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices->manager()};
+            AppContext{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices->hub()};
     }
     void TearDown() override { language.apply(QStringLiteral("en")); }
 
@@ -39,7 +39,7 @@ protected:
     ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    std::unique_ptr<TerminalDevices> devices;
+    std::unique_ptr<runtime::TerminalDevices> devices;
     AppContext context;
 };
 
