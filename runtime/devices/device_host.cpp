@@ -1,5 +1,6 @@
 #include "runtime/devices/device_host.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "devices/api/simulated_instrument.h"
@@ -57,6 +58,9 @@ DeviceHost::DeviceHost(const core::Clock* clock) : m_manager(std::make_unique<de
     });
     m_calibrationPump.setInterval(kCalibrationPumpMs);
     connect(&m_calibrationPump, &QTimer::timeout, this, &DeviceHost::pumpCalibration);
+    m_statisticsRefresh.setInterval(kStatisticsRefreshMs);
+    connect(&m_statisticsRefresh, &QTimer::timeout, this, &DeviceHost::refreshStatistics);
+    m_statisticsRefresh.start();
     m_lathe = new LatheLink(m_manager.get(), this);
     m_boring = new BoringLink(m_manager.get(), this);
 }
@@ -103,6 +107,22 @@ void DeviceHost::onDeviceChanged(const QString& id) {
     pumpCalibration();
     m_dirty.insert(id);
     if (!m_flush.isActive()) m_flush.start();
+}
+
+void DeviceHost::refreshStatistics() {
+    auto sameAs = [](const QList<devices::DeviceStatistic>& a, const QList<devices::DeviceStatistic>& b) {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                          [](const auto& x, const auto& y) { return x.label == y.label && x.value == y.value; });
+    };
+    for (const QString& id : m_manager->deviceIds()) {
+        devices::Device* d = m_manager->device(id);
+        if (!d) continue;
+        QList<devices::DeviceStatistic> now = d->statistics();
+        if (sameAs(now, m_statisticsShown.value(id))) continue;
+        m_statisticsShown.insert(id, std::move(now));
+        m_dirty.insert(id);
+    }
+    if (!m_dirty.isEmpty() && !m_flush.isActive()) m_flush.start();
 }
 
 void DeviceHost::flushViews() {
@@ -277,7 +297,19 @@ void DeviceHost::pumpCalibration() {
         devices::Device* d = m_manager->device(link->deviceId());
         if (!d || d->deflectionProbe()) pass(d ? d->deflectionProbe() : nullptr, link->probe());
         if (!d || d->driveCurrentReadout()) pass(d ? d->driveCurrentReadout() : nullptr, link->drive());
+        if (d) showUploadProgress(link->deviceId(), *d);
     }
+}
+
+void DeviceHost::showUploadProgress(const QString& id, devices::Device& device) {
+    const devices::TableUploadTarget* target = device.tableUploadTarget();
+    if (!target) return;
+    const devices::TableUploadStatus now = target->uploadStatus();
+    const devices::TableUploadStatus shown = m_uploadShown.value(id);
+    if (now.phase == shown.phase && now.progress == shown.progress && now.message == shown.message) return;
+    m_uploadShown.insert(id, now);
+    m_dirty.insert(id);
+    if (!m_flush.isActive()) m_flush.start();
 }
 
 }  // namespace tt::runtime

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QObject>
+#include <QHash>
 #include <QSet>
 #include <QString>
 #include <QTimer>
@@ -91,6 +92,9 @@ public:
 
     /// Minimum time between two snapshots of a changing device, ms.
     static constexpr int kViewFlushMs = 50;
+    /// How often the counters of the Devices page (frames, readings, lost) are looked at, ms: they change
+    /// without a state change, so no device announces them.
+    static constexpr int kStatisticsRefreshMs = 250;
 
 signals:
     /// Snapshots of the instances that changed (state, live value, last error, counters).
@@ -104,6 +108,10 @@ private:
     void onDeviceChanged(const QString& id);
     void flushViews();
     void pumpCalibration();
+    /// Marks for the next flush every device whose counters moved since they were last shown.
+    void refreshStatistics();
+    /// Marks a mandrel's view for the next flush when its table upload moved on.
+    void showUploadProgress(const QString& id, devices::Device& device);
     devices::Device* deviceOrTrial(const QString& id) const;
     devices::CalibrationStand& stand(const QString& id) const;
 
@@ -118,6 +126,10 @@ private:
     std::vector<std::weak_ptr<CalibrationLink>> m_calibration;
     QTimer m_calibrationPump;
     QSet<QString> m_dirty;
+    QTimer m_statisticsRefresh;
+    QHash<QString, QList<devices::DeviceStatistic>> m_statisticsShown;
+    /// The table upload each calibrated mandrel last showed: a change marks its view for the next flush.
+    QHash<QString, devices::TableUploadStatus> m_uploadShown;
     QTimer m_flush;
 };
 
