@@ -282,6 +282,8 @@ void pass(std::string& out, const ParametricProgramJob& job, const Units& u) {
            fixed(job.feedPerMinute ? u.length(job.feed) : u.length(job.feed), job.feedPerMinute ? 3 : 6) + "\n";
     for (std::size_t i = 1; i < job.pathZMm.size(); ++i)
         out += "G1 X" + xWord(job, u, i) + " Z" + u.z(job.pathZMm[i]) + "\n";
+    // The tool stops at the end of the cut before it leaves the part (no spiral mark on the shoulder).
+    out += "G4 P0.05\n";
     out += "G0 X" + fixed(safe, u.decimals()) + "\n";
     out += "G0 Z" + approachZ + "\n";
     if (job.spindleRpm > 0) out += "M5\n";
@@ -294,7 +296,7 @@ std::string writeParametricProgram(const ParametricProgramJob& job) {
     const Units u(job);
     std::string out = "%\n";
     header(out, job, u);
-    const std::string tolerance = fixed(u.length(job.blendToleranceMm), u.decimals() + 1);
+    const std::string tolerance = fixed(u.length(job.blendToleranceMm), u.decimals() + 2);
     out += std::string("G18 G40 G90 ") + (job.conventions.inch ? "G20" : "G21") +
            (job.conventions.diameterMode ? " G7" : " G8") + (job.feedPerMinute ? " G94" : " G95") + " G64 P" +
            tolerance + " Q" + tolerance + "\n";

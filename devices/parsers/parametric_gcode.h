@@ -45,7 +45,7 @@ struct ParametricProgramJob {
     double clearanceMm = 2.0;                  ///< radial and axial clearance of approach and retract, mm
     double largestTotalMm = 0.5;               ///< the program refuses to cut with a parameter beyond this (radial mm)
     /// Path blending tolerance (G64 P and Q), mm: the cutter leaves the programmed path by at most this.
-    double blendToleranceMm = 0.0001;
+    double blendToleranceMm = 0.00002;
     int programNumber = 1001;
     std::vector<std::string> notes;  ///< one comment line each at the top (printable ASCII, upper-cased)
 };
@@ -55,7 +55,8 @@ struct ParametricProgramJob {
 /// set, every correction within largestTotalMm, else ABORT with the reason), the part number cleared, the
 /// slopes, the spindle, the approach a clearance before z = 0 outside the part, one G1 per path sample whose
 /// X is the nominal plus the feed-forward plus the Hermite cubic through the parameters (held at the end
-/// values outside the control points, as the approximation unit does), the retract, M5, M2. Throws
+/// values outside the control points, as the approximation unit does), a dwell of 0.05 s at the end of the cut,
+/// the retract, M5, M2. Throws
 /// std::invalid_argument, in the user's terms, for a bad job.
 std::string writeParametricProgram(const ParametricProgramJob& job);
 

@@ -149,7 +149,7 @@ TEST_F(CncProgram, TheWearProgramCutsTheNominalPathWithTheWearEntryApplied) {
         write(QStringLiteral("wear.tbl"), "T1 P1 X0 Z0 D0.8 ;finishing tool\nT10001 P2 X0.0004 Z0 ;wear of T1\n");
     const Interpreted run = interpret(out, wearTools, parameters({}, false, 0));
     ASSERT_EQ(run.exitCode, 0) << qPrintable(run.out.right(2000));
-    EXPECT_TRUE(run.out.contains(QStringLiteral("USE_TOOL_LENGTH_OFFSET(0.0004, 0.0000, 0.0000"))) << qPrintable(run.out.left(3000));
+    EXPECT_TRUE(run.out.contains(QStringLiteral("USE_TOOL_LENGTH_OFFSET(0.0004 0.0000 0.0000"))) << qPrintable(run.out.left(3000));
     const tt::config::LoopScenario scenario = tt::config::loadLoopScenario(QStringLiteral("paper-2012-group1"));
     const auto nominal = tt::core::partCorrectionFor(scenario.loopConfig(true, std::nullopt), 1,
                                                      std::vector<double>(kCorrectionsMm.size(), 0.0));

@@ -89,12 +89,19 @@ TEST_P(ProfilePath, EachCorrectionLandsOnTheExecutedPathAtItsControlPointWithinO
     ASSERT_TRUE(cut.has_value());
     ASSERT_TRUE(cut->write.applied()) << cut->write.message;
     ASSERT_EQ(cut->write.readBackMm, cut->write.writtenMm) << "read back equal to what was written";
+    double worstUm = 0.0;
     for (std::size_t i = 0; i < kCorrectionsMm.size(); ++i) {
         EXPECT_NEAR(cut->write.writtenMm[i], kCorrectionsMm[i], 2.6e-5) << "six decimals of the program's unit";
         // Diameter = 2 x radius; 1 um on diameter.
-        EXPECT_NEAR(2.0 * pointPart(*cut, cut->loop.pointZMm[i]), 2.0 * cut->write.writtenMm[i], 0.001)
+        const double onDiameter = 2.0 * pointPart(*cut, cut->loop.pointZMm[i]);
+        EXPECT_NEAR(onDiameter, 2.0 * cut->write.writtenMm[i], 0.001)
             << "point " << i + 1 << " at z = " << cut->loop.pointZMm[i] << " mm";
+        worstUm = std::max(worstUm, 1000.0 * std::fabs(onDiameter - 2.0 * cut->write.writtenMm[i]));
+        std::string key(1, 'z');
+        key += std::to_string(static_cast<int>(cut->loop.pointZMm[i]));
+        RecordProperty(key, std::to_string(1000.0 * (onDiameter - 2.0 * cut->write.writtenMm[i])));
     }
+    RecordProperty("largest_difference_on_diameter_um", std::to_string(worstUm));
 }
 
 class WearPath : public ::testing::TestWithParam<Conventions> {};
@@ -109,8 +116,16 @@ TEST_P(WearPath, TheWearCorrectionLandsOnTheExecutedPathWithinOneMicrometreOnDia
     ASSERT_EQ(cut->write.writtenMm.size(), 1u);
     EXPECT_NEAR(cut->write.writtenMm[0], mean, 2.6e-5) << "wear mode writes the mean correction";
     EXPECT_EQ(cut->write.readBackMm, cut->write.writtenMm);
-    for (const double z : cut->loop.pointZMm)
-        EXPECT_NEAR(2.0 * pointPart(*cut, z), 2.0 * cut->write.writtenMm[0], 0.001) << "at z = " << z << " mm";
+    double worstUm = 0.0;
+    for (const double z : cut->loop.pointZMm) {
+        const double onDiameter = 2.0 * pointPart(*cut, z);
+        EXPECT_NEAR(onDiameter, 2.0 * cut->write.writtenMm[0], 0.001) << "at z = " << z << " mm";
+        worstUm = std::max(worstUm, 1000.0 * std::fabs(onDiameter - 2.0 * cut->write.writtenMm[0]));
+        std::string key(1, 'z');
+        key += std::to_string(static_cast<int>(z));
+        RecordProperty(key, std::to_string(1000.0 * (onDiameter - 2.0 * cut->write.writtenMm[0])));
+    }
+    RecordProperty("largest_difference_on_diameter_um", std::to_string(worstUm));
 }
 
 const Conventions kConventions[] = {

@@ -26,7 +26,7 @@ int count(const std::string& text, const std::string& what) {
 TEST(ParametricGCode, GuardsTheCutReadsEachParameterAndClearsThePartNumber) {
     const std::string p = writeParametricProgram(job());
     EXPECT_EQ(p.rfind("%\n", 0), 0u);
-    EXPECT_NE(p.find("G18 G40 G90 G21 G8 G95 G64 P0.0001000 Q0.0001000\n"), std::string::npos);
+    EXPECT_NE(p.find("G18 G40 G90 G21 G8 G95 G64 P0.00002000 Q0.00002000\n"), std::string::npos);
     EXPECT_NE(p.find("T1 M6 G43\n"), std::string::npos);
     EXPECT_NE(p.find("O100 if [#505 LT 1]\n(ABORT, TRUETURN: NO CORRECTIONS WERE WRITTEN FOR THIS PART"),
               std::string::npos);
