@@ -60,7 +60,7 @@ public:
 
     /// Problems worth an alarm since the last call, each naming LinuxCNC's host and what failed: the runtime
     /// records them as alarms of the run (kind "machine").
-    std::vector<std::string> takeIncidents() { return m_session.takeIncidents(); }
+    std::vector<std::string> takeIncidents();
     /// Every write tried since the last call (applied or not): the runtime stores them with the run.
     std::vector<WriteRecord> takeWrites() { return m_session.takeWrites(); }
     /// What the session knows (health, machine state, counters).
@@ -115,6 +115,7 @@ private:
     std::map<std::int64_t, core::PartCorrection> m_cutting;  ///< parts given to LinuxCNC, not yet cut
     std::deque<core::FinishedPart> m_finished;
     std::deque<std::pair<std::int64_t, core::CorrectionPath>> m_executed;
+    std::vector<std::string> m_incidents;  ///< the machine's own (a cut not sampled over the whole part)
 };
 
 }  // namespace tt::devices::linuxcnc

@@ -75,6 +75,13 @@ std::optional<core::FinishedPart> LinuxCncLathe::Cycle::takeFinishedPart() {
     return part;
 }
 
+std::vector<std::string> LinuxCncLathe::takeIncidents() {
+    std::vector<std::string> incidents = m_session.takeIncidents();
+    incidents.insert(incidents.end(), m_incidents.begin(), m_incidents.end());
+    m_incidents.clear();
+    return incidents;
+}
+
 void LinuxCncLathe::pump() {
     for (const PartResult& result : m_session.takeResults())
         finish(result);
@@ -87,7 +94,10 @@ void LinuxCncLathe::finish(const PartResult& result) {
     core::PartCorrection executedCorrection{result.partNumber, commanded.pointZMm, commanded.pointCorrectionMm,
                                             executed(result, commanded.path)};
     if (executedCorrection.path.zMm.empty()) {
-        // The samples do not cover the part (a program that was not ours ran): cut it again.
+        // The samples do not cover the part (the sampling stopped for long, or a program that was not ours ran).
+        m_incidents.push_back("LinuxCNC at " + m_options.session.controller.endpoint.text() + ": part " +
+                              std::to_string(result.partNumber) +
+                              ": its path was not seen over the whole part; it is not counted and is cut again");
         m_session.submit(partJob(commanded));
         return;
     }

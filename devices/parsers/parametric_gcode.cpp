@@ -278,8 +278,12 @@ void pass(std::string& out, const ParametricProgramJob& job, const Units& u) {
     if (job.spindleRpm > 0) out += "G97 S" + std::to_string(job.spindleRpm) + " M3\n";
     out += "G0 X" + fixed(safe, u.decimals()) + " Z" + approachZ + "\n";
     out += "G0 X" + xWord(job, u, 0) + "\n";
-    out += "G1 Z" + u.z(job.pathZMm.front()) + " F" +
-           fixed(job.feedPerMinute ? u.length(job.feed) : u.length(job.feed), job.feedPerMinute ? 3 : 6) + "\n";
+    // Onto the part's start at the path's first X, with a dwell in the air half the clearance before it (where the
+    // path starts is then surely seen by whoever watches the tool's position).
+    out += "G1 Z" + u.z(job.pathZMm.front() - 0.5 * job.clearanceMm) + " F" +
+           fixed(u.length(job.feed), job.feedPerMinute ? 3 : 6) + "\n";
+    out += "G4 P0.05\n";
+    out += "G1 Z" + u.z(job.pathZMm.front()) + "\n";
     for (std::size_t i = 1; i < job.pathZMm.size(); ++i)
         out += "G1 X" + xWord(job, u, i) + " Z" + u.z(job.pathZMm[i]) + "\n";
     // The tool stops at the end of the cut before it leaves the part (no spiral mark on the shoulder).

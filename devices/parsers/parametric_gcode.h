@@ -53,7 +53,8 @@ struct ParametricProgramJob {
 /// The program text. Structure: header comments (units, X mode, parameters and their meaning), G18 G40 G90,
 /// the units and X mode, G64 P Q, the tool (T M6 G43, G43.2 H), guards (the part-number parameter must be
 /// set, every correction within largestTotalMm, else ABORT with the reason), the part number cleared, the
-/// slopes, the spindle, the approach a clearance before z = 0 outside the part, one G1 per path sample whose
+/// slopes, the spindle, the approach a clearance before z = 0 outside the part (a 0.05 s dwell half-way at the
+/// path's first X), one G1 per path sample whose
 /// X is the nominal plus the feed-forward plus the Hermite cubic through the parameters (held at the end
 /// values outside the control points, as the approximation unit does), a dwell of 0.05 s at the end of the cut,
 /// the retract, M5, M2. Throws

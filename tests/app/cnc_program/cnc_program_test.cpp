@@ -89,13 +89,16 @@ protected:
         const tt::core::PartCorrection reference =
             tt::core::partCorrectionFor(scenario.loopConfig(true, std::nullopt), 7, kCorrectionsMm);
         const auto& zs = reference.path.zMm;
-        // The feed to the start of the cut, then one move per sample after the first.
-        ASSERT_EQ(run.feeds.size(), zs.size()) << qPrintable(run.out.right(2000));
+        // The feed to half the clearance before the part, to the start of the cut, then one move per sample after
+        // the first.
+        ASSERT_EQ(run.feeds.size(), zs.size() + 1) << qPrintable(run.out.right(2000));
+        EXPECT_NEAR(run.feeds[0].z, 1.0, 6e-5) << "half the 2 mm clearance before z = 0 (machine Z = -z)";
         double worst = 0.0;
         for (std::size_t i = 0; i < zs.size(); ++i) {
-            EXPECT_NEAR(run.feeds[i].z, -zs[i], 6e-5) << "sample " << i;
+            const Move& m = run.feeds[i + 1];
+            EXPECT_NEAR(m.z, -zs[i], 6e-5) << "sample " << i;
             const double x = 0.5 * scenario.nominalDiameterMm + reference.path.xCorrectionMm[i];
-            worst = std::max(worst, std::fabs(run.feeds[i].x - x));
+            worst = std::max(worst, std::fabs(m.x - x));
         }
         // rs274 prints four decimals: 0.05 um of rounding, nothing else.
         EXPECT_LE(worst, 6e-5) << "largest difference from the approximation unit's path, mm";
@@ -153,9 +156,9 @@ TEST_F(CncProgram, TheWearProgramCutsTheNominalPathWithTheWearEntryApplied) {
     const tt::config::LoopScenario scenario = tt::config::loadLoopScenario(QStringLiteral("paper-2012-group1"));
     const auto nominal = tt::core::partCorrectionFor(scenario.loopConfig(true, std::nullopt), 1,
                                                      std::vector<double>(kCorrectionsMm.size(), 0.0));
-    ASSERT_EQ(run.feeds.size(), nominal.path.zMm.size());
-    for (std::size_t i = 0; i < run.feeds.size(); i += 50)
-        EXPECT_NEAR(run.feeds[i].x * 25.4, 13.5 + nominal.path.xCorrectionMm[i], 25.4 * 6e-5) << "sample " << i;
+    ASSERT_EQ(run.feeds.size(), nominal.path.zMm.size() + 1);
+    for (std::size_t i = 0; i < nominal.path.zMm.size(); i += 50)
+        EXPECT_NEAR(run.feeds[i + 1].x * 25.4, 13.5 + nominal.path.xCorrectionMm[i], 25.4 * 6e-5) << "sample " << i;
 }
 
 TEST_F(CncProgram, RefusesBadOptionsWithOneLine) {

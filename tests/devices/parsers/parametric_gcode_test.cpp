@@ -34,6 +34,8 @@ TEST(ParametricGCode, GuardsTheCutReadsEachParameterAndClearsThePartNumber) {
     EXPECT_NE(p.find("\n#505=0\n"), std::string::npos);
     EXPECT_LT(p.find("\n#505=0\n"), p.find("G1 ")) << "cleared before the cut";
     EXPECT_EQ(count(p, "\nG1 X"), 650) << "one move per path sample after the first";
+    EXPECT_NE(p.find("G1 Z1.000000 F0.250000\nG4 P0.05\nG1 Z0.000000\n"), std::string::npos)
+        << "onto the part with a dwell in the air";
     // At a control point the path is the parameter itself.
     EXPECT_NE(p.find("G1 X[13.5000000+1.000000000*#502] Z-162.500000\n"), std::string::npos);
     // Before the first and after the last point the end values are held.
