@@ -124,6 +124,10 @@ TEST(LinuxCncLoop, SixtyPartsThroughLinuxCncMatchTheBuiltInLatheAndEveryWriteIsR
     const Eigen::VectorXd builtInMean = core::profileStatistics(reference.pointDeviationMm, from, kParts).meanMm;
     const Eigen::VectorXd linuxCncMean = core::profileStatistics(collector.deviations, from, kParts).meanMm;
     for (Eigen::Index i = 0; i < builtInMean.size(); ++i) {
+        std::string key = "point";
+        key += std::to_string(i + 1);
+        RecordProperty(key + "_builtin_um", std::to_string(1000.0 * builtInMean(i)));
+        RecordProperty(key + "_linuxcnc_um", std::to_string(1000.0 * linuxCncMean(i)));
         const double allowed = std::max(0.1 * std::fabs(builtInMean(i)), 0.002);
         EXPECT_NEAR(linuxCncMean(i), builtInMean(i), allowed)
             << "point " << i + 1 << ": systematic error through LinuxCNC " << linuxCncMean(i) * 1000.0
