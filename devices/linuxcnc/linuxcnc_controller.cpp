@@ -102,8 +102,8 @@ MachineStatus LinuxCncController::status() {
     const auto joints = static_cast<std::size_t>(std::max(1, m_options.joints));
     if (homed.size() < joints) {
         m_link.close();
-        throw LinuxCncError(FailureKind::Garbage, where() + " reports " + std::to_string(homed.size()) +
-                                                      " joints; " + std::to_string(joints) + " must be homed");
+        throw LinuxCncError(FailureKind::Garbage, where() + " reports " + std::to_string(homed.size()) + " joints; " +
+                                                      std::to_string(joints) + " must be homed");
     }
     s.homed.assign(homed.begin(), homed.begin() + static_cast<std::ptrdiff_t>(joints));
     return s;
@@ -121,8 +121,7 @@ void LinuxCncController::setMode(TaskMode mode) {
         if (value(taskMode(m_link.request("get mode", t))) == mode) return;
         pause(5);
     }
-    throw LinuxCncError(FailureKind::Refused,
-                        where() + " did not change to " + std::string(modeName(mode)) + " mode");
+    throw LinuxCncError(FailureKind::Refused, where() + " did not change to " + std::string(modeName(mode)) + " mode");
 }
 
 bool LinuxCncController::tryMdi(const std::string& line, int timeoutMs, std::string& why) {
@@ -139,7 +138,8 @@ void LinuxCncController::mdi(const std::string& line, int timeoutMs) {
 }
 
 std::array<double, 2> LinuxCncController::positionMm() {
-    const std::array<double, 6> p = value(position(m_link.request("get abs_act_pos", m_options.replyTimeoutMs), "ABS_ACT_POS"));
+    const std::array<double, 6> p =
+        value(position(m_link.request("get abs_act_pos", m_options.replyTimeoutMs), "ABS_ACT_POS"));
     const double mm = millimetresPer(m_identity.machineUnits);
     return {p[0] * mm, p[2] * mm};
 }

@@ -22,8 +22,8 @@ struct ControllerOptions {
 
 /// What the shell says about itself when TrueTurn connects.
 struct Identity {
-    std::string server;    ///< the server name of HELLO ACK ("EMCNETSVR")
-    std::string protocol;  ///< its protocol version ("1.1")
+    std::string server;                                  ///< the server name of HELLO ACK ("EMCNETSVR")
+    std::string protocol;                                ///< its protocol version ("1.1")
     LinearUnits machineUnits = LinearUnits::Millimetre;  ///< the units positions come in
 };
 

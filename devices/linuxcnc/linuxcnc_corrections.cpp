@@ -108,8 +108,8 @@ void CorrectionWriter::writeProfile(LinuxCncController& controller, WriteRecord&
     for (const std::string& line : w.lines) {
         if (!controller.tryMdi(line, t, why)) {
             record.outcome = WriteOutcome::Refused;
-            record.message = "part " + std::to_string(record.partNumber) + ": LinuxCNC refused the corrections (" +
-                             why + ")";
+            record.message =
+                "part " + std::to_string(record.partNumber) + ": LinuxCNC refused the corrections (" + why + ")";
             return;
         }
     }
@@ -152,16 +152,17 @@ void CorrectionWriter::writeWear(LinuxCncController& controller, WriteRecord& re
         if (controller.tryMdi(w.verify[i], t, why)) continue;
         if (i + 1 < w.verify.size() || !isDivisionByZero(why)) {
             record.outcome = WriteOutcome::Refused;
-            record.message = "part " + std::to_string(record.partNumber) + ": LinuxCNC refused '" + w.verify[i] +
-                             "' (" + why + ")";
+            record.message =
+                "part " + std::to_string(record.partNumber) + ": LinuxCNC refused '" + w.verify[i] + "' (" + why + ")";
             return;
         }
         const std::vector<double> held = controller.readParameters({kReferenceParameter, "#5420"});
         const double radial = held[0] - held[1];  // a radius, in the program's units
         record.readBackMm = {m_settings.conventions.inch ? radial * 25.4 : radial};
         record.outcome = WriteOutcome::Differs;
-        record.message = "part " + std::to_string(record.partNumber) + ": wrote the wear " + valuesText(record.writtenMm) +
-                         " but LinuxCNC applies " + valuesText(record.readBackMm) + "; not applied";
+        record.message = "part " + std::to_string(record.partNumber) + ": wrote the wear " +
+                         valuesText(record.writtenMm) + " but LinuxCNC applies " + valuesText(record.readBackMm) +
+                         "; not applied";
         return;
     }
     record.readBackMm = record.writtenMm;

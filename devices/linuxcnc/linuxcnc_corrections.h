@@ -24,9 +24,9 @@ CorrectionMode correctionModeFromName(const std::string& name);
 /// What is written where, and the limits checked before every write.
 struct CorrectionSettings {
     CorrectionMode mode = CorrectionMode::Profile;
-    int firstParameter = 500;  ///< profile: #first .. #first+N-1, the part number at #first+N
-    int toolNumber = 1;        ///< the tool that cuts the part (its offset is applied by G43)
-    int wearTool = 10001;      ///< wear: the tool-table entry holding the X wear (G43.2 H<wearTool>)
+    int firstParameter = 500;        ///< profile: #first .. #first+N-1, the part number at #first+N
+    int toolNumber = 1;              ///< the tool that cuts the part (its offset is applied by G43)
+    int wearTool = 10001;            ///< wear: the tool-table entry holding the X wear (G43.2 H<wearTool>)
     ProgramConventions conventions;  ///< the part program's units and X mode the values are written in
     double largestStepMm = 0.1;      ///< largest change of a value from the last written one, radial mm
     double largestTotalMm = 0.5;     ///< largest value, radial mm
@@ -44,12 +44,12 @@ enum class WriteOutcome {
 /// One write, for the history: what was asked, written and read back, and whether it counts as applied.
 struct WriteRecord {
     std::int64_t partNumber = 0;
-    double timeS = 0.0;                  ///< when, s since the Unix epoch
-    std::vector<double> requestedMm;     ///< radial mm: one per control point (profile) or one (wear)
-    std::vector<double> writtenMm;       ///< as written, after rounding to the program's six decimals
-    std::vector<double> readBackMm;      ///< what LinuxCNC holds (empty when nothing was written or read)
+    double timeS = 0.0;               ///< when, s since the Unix epoch
+    std::vector<double> requestedMm;  ///< radial mm: one per control point (profile) or one (wear)
+    std::vector<double> writtenMm;    ///< as written, after rounding to the program's six decimals
+    std::vector<double> readBackMm;   ///< what LinuxCNC holds (empty when nothing was written or read)
     WriteOutcome outcome = WriteOutcome::Refused;
-    std::string message;                 ///< in the user's terms: what was written, or why it was not applied
+    std::string message;  ///< in the user's terms: what was written, or why it was not applied
     bool applied() const { return outcome == WriteOutcome::Verified; }
 };
 

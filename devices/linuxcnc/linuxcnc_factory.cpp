@@ -14,22 +14,25 @@ QList<SettingIssue> LinuxCncFactory::validate(DeviceKind kind, const QVariantMap
     QList<SettingIssue> issues = DevicePlugin::validate(kind, settings, depth);
     const QVariantMap v = withDefaults(settingsSchema(kind), settings);
     if (v.value(QStringLiteral("host")).toString().trimmed().isEmpty())
-        issues.append({QStringLiteral("host"),
-                       QCoreApplication::translate("LinuxCnc", "Host: enter the IP address or name of the LinuxCNC computer")});
+        issues.append(
+            {QStringLiteral("host"),
+             QCoreApplication::translate("LinuxCnc", "Host: enter the IP address or name of the LinuxCNC computer")});
     for (const char* key : {"connectPassword", "enablePassword", "clientName"}) {
         const QString value = v.value(QLatin1String(key)).toString();
         if (value.isEmpty() || value.contains(QLatin1Char(' ')))
-            issues.append({QLatin1String(key), QCoreApplication::translate(
-                                                   "LinuxCnc", "%1: one word without spaces (the remote shell splits at spaces)")
-                                                   .arg(QLatin1String(key))});
+            issues.append(
+                {QLatin1String(key), QCoreApplication::translate(
+                                         "LinuxCnc", "%1: one word without spaces (the remote shell splits at spaces)")
+                                         .arg(QLatin1String(key))});
     }
     if (v.value(QStringLiteral("largestStepMm")).toDouble() > v.value(QStringLiteral("largestTotalMm")).toDouble())
         issues.append({QStringLiteral("largestStepMm"),
                        QCoreApplication::translate("LinuxCnc", "Largest step: must not exceed the largest total")});
     const QString program = v.value(QStringLiteral("programPath")).toString().trimmed();
     if (!program.isEmpty() && !program.startsWith(QLatin1Char('/')))
-        issues.append({QStringLiteral("programPath"),
-                       QCoreApplication::translate("LinuxCnc", "Part program: an absolute path on the LinuxCNC computer")});
+        issues.append(
+            {QStringLiteral("programPath"),
+             QCoreApplication::translate("LinuxCnc", "Part program: an absolute path on the LinuxCNC computer")});
     return issues;
 }
 

@@ -1,12 +1,12 @@
 #include "devices/linuxcnc/linuxcnc_lathe.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
-#include <unistd.h>
 
 #include "core/control/profile_interpolation.h"
 #include "devices/linuxcnc/linuxcnc_program.h"
@@ -35,8 +35,9 @@ void writeFileAtomically(const std::string& path, const std::string& program) {
 LinuxCncLathe::LinuxCncLathe(const core::ShaftScenario& scenario, std::uint64_t seed, LinuxCncLatheOptions options)
     : m_options(std::move(options)), m_scenario(scenario), m_session(m_options.session) {
     if (!scenario.lathe)
-        throw std::invalid_argument("the LinuxCNC lathe needs a scenario with a physical lathe (a preset with a "
-                                    "\"lathe\" section, such as paper-2012-group1)");
+        throw std::invalid_argument(
+            "the LinuxCNC lathe needs a scenario with a physical lathe (a preset with a "
+            "\"lathe\" section, such as paper-2012-group1)");
     if (m_options.programFolder.empty() || !std::filesystem::is_directory(m_options.programFolder))
         throw std::invalid_argument("the LinuxCNC lathe's program folder '" + m_options.programFolder +
                                     "' is not a folder");
@@ -49,11 +50,11 @@ LinuxCncLathe::LinuxCncLathe(const core::ShaftScenario& scenario, std::uint64_t 
     spec.timing.perPointS = m_options.perPointS;
     m_shop = std::make_unique<core::LatheShop>(spec, m_clock);
     m_shop->station().setKeptParts(kKeptParts);
-    m_programPath = (std::filesystem::path(m_options.programFolder) /
-                     ("trueturn-" + correctionModeName(m_options.session.corrections.mode) + "-" +
-                      std::to_string(::getpid()) + "-" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) +
-                      ".ngc"))
-                        .string();
+    m_programPath =
+        (std::filesystem::path(m_options.programFolder) /
+         ("trueturn-" + correctionModeName(m_options.session.corrections.mode) + "-" + std::to_string(::getpid()) +
+          "-" + std::to_string(reinterpret_cast<std::uintptr_t>(this)) + ".ngc"))
+            .string();
     m_session.start();
 }
 

@@ -28,8 +28,8 @@ struct LinuxCncLatheOptions {
     double zOriginMm = 0.0;         ///< machine Z of the part's left end
     int zDirection = -1;            ///< machine Z = zOrigin + zDirection * z
     double clearanceMm = 2.0;
-    double measureStartS = 0.2;     ///< the simulated gauge: from a part's end to its first reading, wall s
-    double perPointS = 0.05;        ///< between readings, wall s
+    double measureStartS = 0.2;  ///< the simulated gauge: from a part's end to its first reading, wall s
+    double perPointS = 0.05;     ///< between readings, wall s
 };
 
 /// "LinuxCNC lathe": a real CNC controller machines every part. TrueTurn writes the corrections into LinuxCNC

@@ -33,8 +33,8 @@ core::OutputResult LinuxCncLathe::Output::sendPartCorrection(const core::PartCor
         return {false, "the corrections do not fit the run's control points and path"};
     const std::vector<double> values = valuesToWrite(correction, c.mode);
     if (const std::string problem = limitProblem(values, l.m_lastAccepted, c); !problem.empty())
-        return {false, "LinuxCNC at " + l.m_options.session.controller.endpoint.text() + ": part " + std::to_string(correction.partNumber) + ": " + problem +
-                           "; nothing written"};
+        return {false, "LinuxCNC at " + l.m_options.session.controller.endpoint.text() + ": part " +
+                           std::to_string(correction.partNumber) + ": " + problem + "; nothing written"};
     l.m_pending = correction;
     l.m_lastAccepted = values;
     return {true, {}};

@@ -1,9 +1,6 @@
 #include "devices/linuxcnc/linuxcnc_link.h"
 
 #include <arpa/inet.h>
-#include <cerrno>
-#include <chrono>
-#include <cstring>
 #include <fcntl.h>
 #include <netdb.h>
 #include <netinet/in.h>
@@ -11,6 +8,9 @@
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
+#include <cerrno>
+#include <chrono>
+#include <cstring>
 
 namespace tt::devices::linuxcnc {
 
@@ -126,8 +126,8 @@ std::string LinuxCncLink::nextLine(const std::string& request, int timeoutMs) {
         const int ready = poll(&p, 1, remainingMs(deadline));
         if (ready < 0 && errno == EINTR) continue;
         if (ready == 0)
-            fail(FailureKind::Timeout, "LinuxCNC at " + m_endpoint.text() + " did not answer '" + request + "' within " +
-                                           std::to_string(timeoutMs) + " ms");
+            fail(FailureKind::Timeout, "LinuxCNC at " + m_endpoint.text() + " did not answer '" + request +
+                                           "' within " + std::to_string(timeoutMs) + " ms");
         const ssize_t n = ::recv(m_fd, buffer, sizeof buffer, 0);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
@@ -138,8 +138,8 @@ std::string LinuxCncLink::nextLine(const std::string& request, int timeoutMs) {
         for (std::string& line : m_framer.feed(std::string_view(buffer, static_cast<std::size_t>(n))))
             m_lines.push_back(std::move(line));
         if (m_framer.corrupt())
-            fail(FailureKind::Garbage, "LinuxCNC at " + m_endpoint.text() + ": " + m_framer.problem() +
-                                           " (answering '" + request + "')");
+            fail(FailureKind::Garbage,
+                 "LinuxCNC at " + m_endpoint.text() + ": " + m_framer.problem() + " (answering '" + request + "')");
     }
     std::string line = std::move(m_lines.front());
     m_lines.pop_front();

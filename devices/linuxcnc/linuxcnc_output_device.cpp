@@ -8,33 +8,31 @@ namespace tt::devices::linuxcnc {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("LinuxCnc", text);
-}
-
 QString yesNo(bool value) {
-    return value ? tr("yes") : tr("no");
+    return value ? QCoreApplication::translate("LinuxCnc", "yes") : QCoreApplication::translate("LinuxCnc", "no");
 }
 
 QString machineWords(const MachineStatus& s) {
-    if (s.estop) return tr("E-stop on");
-    return s.machineOn ? tr("on") : tr("off");
+    if (s.estop) return QCoreApplication::translate("LinuxCnc", "E-stop on");
+    return s.machineOn ? QCoreApplication::translate("LinuxCnc", "on") : QCoreApplication::translate("LinuxCnc", "off");
 }
 
 QString programWords(ProgramStatus p) {
     switch (p) {
         case ProgramStatus::Idle:
-            return tr("idle");
+            return QCoreApplication::translate("LinuxCnc", "idle");
         case ProgramStatus::Running:
-            return tr("running");
+            return QCoreApplication::translate("LinuxCnc", "running");
         case ProgramStatus::Paused:
-            return tr("paused");
+            return QCoreApplication::translate("LinuxCnc", "paused");
     }
     return {};
 }
 
 QString unitsWords(LinearUnits u) {
-    return u == LinearUnits::Inch ? tr("inch") : (u == LinearUnits::Centimetre ? tr("cm") : tr("mm"));
+    return u == LinearUnits::Inch ? QCoreApplication::translate("LinuxCnc", "inch")
+                                  : (u == LinearUnits::Centimetre ? QCoreApplication::translate("LinuxCnc", "cm")
+                                                                  : QCoreApplication::translate("LinuxCnc", "mm"));
 }
 
 }  // namespace
@@ -45,9 +43,13 @@ core::DeviceHealth LinuxCncCycle::health() const {
 
 core::OutputResult LinuxCncCycle::startPart(std::int64_t partNumber) {
     if (m_device.m_programPath.isEmpty())
-        return {false, tr("no part program is set for LinuxCNC; the operator runs the parts").toStdString()};
+        return {false, QCoreApplication::translate("LinuxCnc",
+                                                   "no part program is set for LinuxCNC; the operator runs the parts")
+                           .toStdString()};
     if (!m_device.m_pending)
-        return {false, tr("no corrections were sent for part %1").arg(partNumber).toStdString()};
+        return {false, QCoreApplication::translate("LinuxCnc", "no corrections were sent for part %1")
+                           .arg(partNumber)
+                           .toStdString()};
     PartJob job;
     job.correction = *m_device.m_pending;
     job.correction.partNumber = partNumber;
@@ -82,7 +84,8 @@ LinuxCncOutputDevice::~LinuxCncOutputDevice() {
 }
 
 void LinuxCncOutputDevice::open() {
-    setState(core::DeviceState::Connecting, tr("connecting to %1").arg(endpointText(m_settings)));
+    setState(core::DeviceState::Connecting,
+             QCoreApplication::translate("LinuxCnc", "connecting to %1").arg(endpointText(m_settings)));
     m_session.start();
     m_poll.start();
 }
@@ -106,7 +109,7 @@ void LinuxCncOutputDevice::refresh() {
     if (s.lastWrite) {
         setLiveValue(QString::fromStdString(s.lastWrite->message));
     } else if (s.status && s.positionMm) {
-        setLiveValue(tr("%1; X %2 Z %3 mm")
+        setLiveValue(QCoreApplication::translate("LinuxCnc", "%1; X %2 Z %3 mm")
                          .arg(programWords(s.status->program))
                          .arg((*s.positionMm)[0], 0, 'f', 3)
                          .arg((*s.positionMm)[1], 0, 'f', 3));
@@ -122,9 +125,10 @@ core::OutputResult LinuxCncOutputDevice::refuse(const QString& message) {
 core::OutputResult LinuxCncOutputDevice::sendPartCorrection(const core::PartCorrection& correction) {
     const CorrectionSettings& c = m_session.settings().corrections;
     const std::vector<double> values = valuesToWrite(correction, c.mode);
-    if (values.empty()) return refuse(tr("part %1: no corrections").arg(correction.partNumber));
+    if (values.empty())
+        return refuse(QCoreApplication::translate("LinuxCnc", "part %1: no corrections").arg(correction.partNumber));
     if (const std::string problem = limitProblem(values, m_lastAccepted, c); !problem.empty())
-        return refuse(tr("%1: part %2: %3; nothing written")
+        return refuse(QCoreApplication::translate("LinuxCnc", "%1: part %2: %3; nothing written")
                           .arg(endpointText(m_settings))
                           .arg(correction.partNumber)
                           .arg(QString::fromStdString(problem)));
@@ -135,36 +139,49 @@ core::OutputResult LinuxCncOutputDevice::sendPartCorrection(const core::PartCorr
 }
 
 core::OutputResult LinuxCncOutputDevice::sendDynamicOffset(double) {
-    return refuse(tr("LinuxCNC takes corrections between parts; a dynamic X offset needs a PLC (Modbus output)"));
+    return refuse(QCoreApplication::translate(
+        "LinuxCnc", "LinuxCNC takes corrections between parts; a dynamic X offset needs a PLC (Modbus output)"));
 }
 
 QList<DeviceStatistic> LinuxCncOutputDevice::statistics() const {
     const SessionSnapshot s = m_session.snapshot();
     QList<DeviceStatistic> out;
     if (s.identity)
-        out << DeviceStatistic{tr("LinuxCNC"), tr("remote shell %1, protocol %2")
-                                                   .arg(QString::fromStdString(s.identity->server),
-                                                        QString::fromStdString(s.identity->protocol))}
-            << DeviceStatistic{tr("Machine units"), unitsWords(s.identity->machineUnits)};
+        out << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "LinuxCNC"),
+                               QCoreApplication::translate("LinuxCnc", "remote shell %1, protocol %2")
+                                   .arg(QString::fromStdString(s.identity->server),
+                                        QString::fromStdString(s.identity->protocol))}
+            << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Machine units"),
+                               unitsWords(s.identity->machineUnits)};
     if (s.status)
-        out << DeviceStatistic{tr("Machine"), machineWords(*s.status)}
-            << DeviceStatistic{tr("Homed"), yesNo(s.status->allHomed())}
-            << DeviceStatistic{tr("Program"), programWords(s.status->program)};
+        out << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Machine"), machineWords(*s.status)}
+            << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Homed"), yesNo(s.status->allHomed())}
+            << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Program"), programWords(s.status->program)};
     if (s.positionMm)
-        out << DeviceStatistic{tr("Position"), tr("X %1 Z %2 mm")
-                                                   .arg((*s.positionMm)[0], 0, 'f', 3)
-                                                   .arg((*s.positionMm)[1], 0, 'f', 3)};
+        out << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Position"),
+                               QCoreApplication::translate("LinuxCnc", "X %1 Z %2 mm")
+                                   .arg((*s.positionMm)[0], 0, 'f', 3)
+                                   .arg((*s.positionMm)[1], 0, 'f', 3)};
     const CorrectionSettings& c = m_session.settings().corrections;
-    out << DeviceStatistic{tr("Program units"), QStringLiteral("%1, %2").arg(
-                                                     c.conventions.inch ? tr("inch (G20)") : tr("mm (G21)"),
-                                                     c.conventions.diameterMode ? tr("diameter (G7)") : tr("radius (G8)"))};
-    out << DeviceStatistic{tr("Writes verified"), QString::number(s.counters.writesVerified)}
-        << DeviceStatistic{tr("Writes refused"), QString::number(s.counters.writesRefused + m_refused)}
-        << DeviceStatistic{tr("Read-backs that differed"), QString::number(s.counters.readBacksDiffered)}
-        << DeviceStatistic{tr("Writes held (machine not ready)"), QString::number(s.counters.writesHeld)}
-        << DeviceStatistic{tr("Connection resets"), QString::number(s.counters.connectionResets)}
-        << DeviceStatistic{tr("Parts cut"), QString::number(s.counters.partsCut)}
-        << DeviceStatistic{tr("Parts aborted"), QString::number(s.counters.partsAborted)};
+    out << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Program units"),
+                           QStringLiteral("%1, %2").arg(
+                               c.conventions.inch ? QCoreApplication::translate("LinuxCnc", "inch (G20)")
+                                                  : QCoreApplication::translate("LinuxCnc", "mm (G21)"),
+                               c.conventions.diameterMode ? QCoreApplication::translate("LinuxCnc", "diameter (G7)")
+                                                          : QCoreApplication::translate("LinuxCnc", "radius (G8)"))};
+    out << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Writes verified"),
+                           QString::number(s.counters.writesVerified)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Writes refused"),
+                           QString::number(s.counters.writesRefused + m_refused)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Read-backs that differed"),
+                           QString::number(s.counters.readBacksDiffered)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Writes held (machine not ready)"),
+                           QString::number(s.counters.writesHeld)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Connection resets"),
+                           QString::number(s.counters.connectionResets)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Parts cut"), QString::number(s.counters.partsCut)}
+        << DeviceStatistic{QCoreApplication::translate("LinuxCnc", "Parts aborted"),
+                           QString::number(s.counters.partsAborted)};
     return out;
 }
 

@@ -14,11 +14,11 @@ struct ProgramOptions {
     /// G43.2 H<wearTool> (wear mode).
     int firstParameter = 500;
     ProgramConventions conventions;
-    double feed = 0.25;          ///< mm/rev (G95), or mm/min with feedPerMinute (G94)
+    double feed = 0.25;  ///< mm/rev (G95), or mm/min with feedPerMinute (G94)
     bool feedPerMinute = false;
     int spindleRpm = 546;
     int toolNumber = 1;
-    int wearTool = 10001;        ///< wear mode only
+    int wearTool = 10001;  ///< wear mode only
     double zOriginMm = 0.0;
     int zDirection = -1;
     double clearanceMm = 2.0;
@@ -29,7 +29,8 @@ struct ProgramOptions {
 
 /// The part program job of a run: the loop's control points, its interpolation (PCHIP computed in the program;
 /// the natural spline as fixed slope weights), the approximation unit's path grid (core::buildCorrectionPath,
-/// the same samples the CNC gets from a G-code file output) with its feed-forward and the nominal diameter. Throws std::invalid_argument on a bad loop configuration.
+/// the same samples the CNC gets from a G-code file output) with its feed-forward and the nominal diameter. Throws
+/// std::invalid_argument on a bad loop configuration.
 ParametricProgramJob programJob(const core::LoopConfig& loop, const ProgramOptions& options);
 
 }  // namespace tt::devices::linuxcnc

@@ -19,8 +19,8 @@ std::string statusWords(const MachineStatus& s) {
 
 LinuxCncSession::LinuxCncSession(SessionSettings settings)
     : m_settings(std::move(settings)), m_controller(m_settings.controller), m_writer(m_settings.corrections) {
-    m_snapshot.health = {core::DeviceState::Disconnected, "LinuxCNC at " + m_settings.controller.endpoint.text() +
-                                                              ": not connected"};
+    m_snapshot.health = {core::DeviceState::Disconnected,
+                         "LinuxCNC at " + m_settings.controller.endpoint.text() + ": not connected"};
 }
 
 LinuxCncSession::~LinuxCncSession() {
@@ -54,8 +54,8 @@ void LinuxCncSession::stop() {
         t.done.set_exception(std::make_exception_ptr(std::runtime_error("the LinuxCNC session was stopped")));
     m_tasks.clear();
     m_controller.disconnect();
-    m_snapshot.health = {core::DeviceState::Disconnected, "LinuxCNC at " + m_settings.controller.endpoint.text() +
-                                                              ": not connected"};
+    m_snapshot.health = {core::DeviceState::Disconnected,
+                         "LinuxCNC at " + m_settings.controller.endpoint.text() + ": not connected"};
     m_snapshot.busy = false;
 }
 

@@ -49,9 +49,9 @@ struct PartJob {
 /// A part LinuxCNC cut: the tool's path as sampled while the program ran.
 struct PartResult {
     std::int64_t partNumber = 0;
-    double finishedAtS = 0.0;                     ///< steady-clock time of the end, s
+    double finishedAtS = 0.0;                      ///< steady-clock time of the end, s
     std::vector<std::array<double, 2>> samplesMm;  ///< program coordinates: X (radius), Z, mm; changes only
-    WriteRecord write;                            ///< the verified write the part was cut with
+    WriteRecord write;                             ///< the verified write the part was cut with
 };
 
 /// A program event of the part cycle.
@@ -66,9 +66,9 @@ struct CycleEvent {
 /// Counters for the Devices page and the tests.
 struct SessionCounters {
     std::uint64_t writesVerified = 0;
-    std::uint64_t writesRefused = 0;    ///< refused by LinuxCNC or by the limits
+    std::uint64_t writesRefused = 0;  ///< refused by LinuxCNC or by the limits
     std::uint64_t readBacksDiffered = 0;
-    std::uint64_t writesHeld = 0;       ///< not written: E-stop, machine off, not homed, running
+    std::uint64_t writesHeld = 0;  ///< not written: E-stop, machine off, not homed, running
     std::uint64_t connectionResets = 0;
     std::uint64_t partsCut = 0;
     std::uint64_t partsAborted = 0;
@@ -163,8 +163,8 @@ private:
     std::vector<std::string> m_incidents;
     SessionSnapshot m_snapshot;
     std::atomic<int> m_backoffMs{200};
-    std::string m_heldReason;       ///< why the first job waits, reported once
-    std::int64_t m_cutting = 0;     ///< the part whose program runs (0: none)
+    std::string m_heldReason;    ///< why the first job waits, reported once
+    std::int64_t m_cutting = 0;  ///< the part whose program runs (0: none)
 };
 
 }  // namespace tt::devices::linuxcnc

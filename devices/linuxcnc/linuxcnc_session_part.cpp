@@ -24,7 +24,8 @@ std::string mm3(double v) {
 
 bool LinuxCncSession::doPart(PartJob& job) {
     const std::int64_t part = job.correction.partNumber;
-    const WriteRecord record = m_writer.write(m_controller, part, valuesToWrite(job.correction, m_writer.settings().mode));
+    const WriteRecord record =
+        m_writer.write(m_controller, part, valuesToWrite(job.correction, m_writer.settings().mode));
     const bool lone = job.programPath.empty();
     if (!record.applied()) {
         // A held part reports each new reason once (an E-stop is not repeated every 0.2 s).

@@ -8,58 +8,88 @@ namespace tt::devices::linuxcnc {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("LinuxCnc", text);
-}
-
 SettingsSchema connectionFields() {
     SettingsSchema s;
-    s << SettingField::text(QStringLiteral("host"), tr("Host"), QStringLiteral("127.0.0.1"),
-                            tr("IP address or name of the LinuxCNC computer (its remote shell, linuxcncrsh)."));
-    s << SettingField::integer(QStringLiteral("port"), tr("TCP port"), 5007, 1, 65535);
-    s << SettingField::text(QStringLiteral("connectPassword"), tr("Connect password"), QStringLiteral("EMC"),
-                            tr("linuxcncrsh --connectpw; sent in clear text."));
-    s << SettingField::text(QStringLiteral("enablePassword"), tr("Enable password"), QStringLiteral("EMCTOO"),
-                            tr("linuxcncrsh --enablepw: the right to command the machine; sent in clear text."));
-    s << SettingField::text(QStringLiteral("clientName"), tr("Client name"), QStringLiteral("TrueTurn"),
-                            tr("How TrueTurn introduces itself (one word)."));
-    s << SettingField::integer(QStringLiteral("connectTimeoutMs"), tr("Connect timeout"), 2000, 100, 60000, tr("ms"));
-    s << SettingField::integer(QStringLiteral("replyTimeoutMs"), tr("Reply timeout"), 3000, 100, 60000, tr("ms"),
-                               tr("A reply, a mode change or an MDI line; the connection is reset without it."));
-    s << SettingField::integer(QStringLiteral("joints"), tr("Joints to be homed"), 2, 1, 9, {},
-                               tr("A lathe: 2 (X and Z)."));
+    s << SettingField::text(
+        QStringLiteral("host"), QCoreApplication::translate("LinuxCnc", "Host"), QStringLiteral("127.0.0.1"),
+        QCoreApplication::translate("LinuxCnc",
+                                    "IP address or name of the LinuxCNC computer (its remote shell, linuxcncrsh)."));
+    s << SettingField::integer(QStringLiteral("port"), QCoreApplication::translate("LinuxCnc", "TCP port"), 5007, 1,
+                               65535);
+    s << SettingField::text(QStringLiteral("connectPassword"),
+                            QCoreApplication::translate("LinuxCnc", "Connect password"), QStringLiteral("EMC"),
+                            QCoreApplication::translate("LinuxCnc", "linuxcncrsh --connectpw; sent in clear text."));
+    s << SettingField::text(
+        QStringLiteral("enablePassword"), QCoreApplication::translate("LinuxCnc", "Enable password"),
+        QStringLiteral("EMCTOO"),
+        QCoreApplication::translate("LinuxCnc",
+                                    "linuxcncrsh --enablepw: the right to command the machine; sent in clear text."));
+    s << SettingField::text(QStringLiteral("clientName"), QCoreApplication::translate("LinuxCnc", "Client name"),
+                            QStringLiteral("TrueTurn"),
+                            QCoreApplication::translate("LinuxCnc", "How TrueTurn introduces itself (one word)."));
+    s << SettingField::integer(QStringLiteral("connectTimeoutMs"),
+                               QCoreApplication::translate("LinuxCnc", "Connect timeout"), 2000, 100, 60000,
+                               QCoreApplication::translate("LinuxCnc", "ms"));
+    s << SettingField::integer(
+        QStringLiteral("replyTimeoutMs"), QCoreApplication::translate("LinuxCnc", "Reply timeout"), 3000, 100, 60000,
+        QCoreApplication::translate("LinuxCnc", "ms"),
+        QCoreApplication::translate("LinuxCnc",
+                                    "A reply, a mode change or an MDI line; the connection is reset without it."));
+    s << SettingField::integer(QStringLiteral("joints"), QCoreApplication::translate("LinuxCnc", "Joints to be homed"),
+                               2, 1, 9, {}, QCoreApplication::translate("LinuxCnc", "A lathe: 2 (X and Z)."));
     return s;
 }
 
 SettingsSchema correctionFields() {
     SettingsSchema s;
     s << SettingField::choice(
-        QStringLiteral("mode"), tr("How the correction reaches the cut"),
-        {{QStringLiteral("profile"), tr("Profile: the control-point corrections as numbered parameters")},
-         {QStringLiteral("wear"), tr("Wear: one diameter correction as the tool's X wear")}},
+        QStringLiteral("mode"), QCoreApplication::translate("LinuxCnc", "How the correction reaches the cut"),
+        {{QStringLiteral("profile"),
+          QCoreApplication::translate("LinuxCnc", "Profile: the control-point corrections as numbered parameters")},
+         {QStringLiteral("wear"),
+          QCoreApplication::translate("LinuxCnc", "Wear: one diameter correction as the tool's X wear")}},
         QStringLiteral("profile"));
-    s << SettingField::integer(QStringLiteral("firstParameter"), tr("First parameter"), 500, 31, 4990, {},
-                               tr("#500 .. #504 hold the corrections, #505 the part number they are for."))
+    s << SettingField::integer(QStringLiteral("firstParameter"),
+                               QCoreApplication::translate("LinuxCnc", "First parameter"), 500, 31, 4990, {},
+                               QCoreApplication::translate(
+                                   "LinuxCnc", "#500 .. #504 hold the corrections, #505 the part number they are for."))
              .visibleWhen(QStringLiteral("mode"), {QStringLiteral("profile")});
-    s << SettingField::integer(QStringLiteral("toolNumber"), tr("Tool"), 1, 1, 99999);
-    s << SettingField::integer(QStringLiteral("wearTool"), tr("Wear entry (tool number)"), 10001, 1, 99999, {},
-                               tr("Its X wear is set by G10 L1; the part program applies it with G43.2 H<entry>."))
+    s << SettingField::integer(QStringLiteral("toolNumber"), QCoreApplication::translate("LinuxCnc", "Tool"), 1, 1,
+                               99999);
+    s << SettingField::integer(
+             QStringLiteral("wearTool"), QCoreApplication::translate("LinuxCnc", "Wear entry (tool number)"), 10001, 1,
+             99999, {},
+             QCoreApplication::translate(
+                 "LinuxCnc", "Its X wear is set by G10 L1; the part program applies it with G43.2 H<entry>."))
              .visibleWhen(QStringLiteral("mode"), {QStringLiteral("wear")});
-    s << SettingField::choice(QStringLiteral("xMode"), tr("X words of the part program"),
-                              {{QStringLiteral("diameter"), tr("Diameters (G7)")},
-                               {QStringLiteral("radius"), tr("Radii (G8)")}},
+    s << SettingField::choice(QStringLiteral("xMode"),
+                              QCoreApplication::translate("LinuxCnc", "X words of the part program"),
+                              {{QStringLiteral("diameter"), QCoreApplication::translate("LinuxCnc", "Diameters (G7)")},
+                               {QStringLiteral("radius"), QCoreApplication::translate("LinuxCnc", "Radii (G8)")}},
                               QStringLiteral("diameter"));
-    s << SettingField::choice(QStringLiteral("units"), tr("Units of the part program"),
-                              {{QStringLiteral("mm"), tr("Millimetres (G21)")}, {QStringLiteral("inch"), tr("Inches (G20)")}},
+    s << SettingField::choice(QStringLiteral("units"),
+                              QCoreApplication::translate("LinuxCnc", "Units of the part program"),
+                              {{QStringLiteral("mm"), QCoreApplication::translate("LinuxCnc", "Millimetres (G21)")},
+                               {QStringLiteral("inch"), QCoreApplication::translate("LinuxCnc", "Inches (G20)")}},
                               QStringLiteral("mm"));
-    s << SettingField::number(QStringLiteral("largestStepMm"), tr("Largest step"), 0.1, 0.0005, 5.0, tr("mm"), 4,
-                              tr("Largest change of a correction from part to part (radial); larger is never written."));
-    s << SettingField::number(QStringLiteral("largestTotalMm"), tr("Largest total"), 0.5, 0.001, 5.0, tr("mm"), 4,
-                              tr("Largest correction (radial); larger is never written."));
-    s << SettingField::text(QStringLiteral("programPath"), tr("Part program on the LinuxCNC computer"), QString(),
-                            tr("Empty: the operator runs the parts; TrueTurn writes between them."));
-    s << SettingField::boolean(QStringLiteral("pressCycleStart"), tr("TrueTurn presses cycle start"), false,
-                               tr("Otherwise the operator presses it after TrueTurn has written the corrections."));
+    s << SettingField::number(
+        QStringLiteral("largestStepMm"), QCoreApplication::translate("LinuxCnc", "Largest step"), 0.1, 0.0005, 5.0,
+        QCoreApplication::translate("LinuxCnc", "mm"), 4,
+        QCoreApplication::translate(
+            "LinuxCnc", "Largest change of a correction from part to part (radial); larger is never written."));
+    s << SettingField::number(
+        QStringLiteral("largestTotalMm"), QCoreApplication::translate("LinuxCnc", "Largest total"), 0.5, 0.001, 5.0,
+        QCoreApplication::translate("LinuxCnc", "mm"), 4,
+        QCoreApplication::translate("LinuxCnc", "Largest correction (radial); larger is never written."));
+    s << SettingField::text(
+        QStringLiteral("programPath"), QCoreApplication::translate("LinuxCnc", "Part program on the LinuxCNC computer"),
+        QString(),
+        QCoreApplication::translate("LinuxCnc", "Empty: the operator runs the parts; TrueTurn writes between them."));
+    s << SettingField::boolean(
+        QStringLiteral("pressCycleStart"), QCoreApplication::translate("LinuxCnc", "TrueTurn presses cycle start"),
+        false,
+        QCoreApplication::translate("LinuxCnc",
+                                    "Otherwise the operator presses it after TrueTurn has written the corrections."));
     return s;
 }
 
@@ -79,7 +109,11 @@ SessionSettings sessionSettings(const QVariantMap& given) {
                   v.value(QStringLiteral("port")).toInt()};
     c.connectPassword = v.value(QStringLiteral("connectPassword")).toString().toStdString();
     c.enablePassword = v.value(QStringLiteral("enablePassword")).toString().toStdString();
-    c.clientName = v.value(QStringLiteral("clientName")).toString().simplified().replace(QLatin1Char(' '), QLatin1Char('_')).toStdString();
+    c.clientName = v.value(QStringLiteral("clientName"))
+                       .toString()
+                       .simplified()
+                       .replace(QLatin1Char(' '), QLatin1Char('_'))
+                       .toStdString();
     c.connectTimeoutMs = v.value(QStringLiteral("connectTimeoutMs")).toInt();
     c.replyTimeoutMs = v.value(QStringLiteral("replyTimeoutMs")).toInt();
     c.joints = v.value(QStringLiteral("joints")).toInt();
@@ -110,7 +144,7 @@ QVariantMap settingsFromUrl(const QString& url, const QString& mode) {
 }
 
 QString endpointText(const QVariantMap& settings) {
-    return tr("LinuxCNC at %1:%2")
+    return QCoreApplication::translate("LinuxCnc", "LinuxCNC at %1:%2")
         .arg(settings.value(QStringLiteral("host")).toString())
         .arg(settings.value(QStringLiteral("port"), 5007).toInt());
 }

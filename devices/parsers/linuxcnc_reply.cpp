@@ -112,8 +112,8 @@ std::vector<std::string> ReplyFramer::feed(std::string_view bytes) {
         }
         if (m_buffer.size() >= m_maxLength) {
             m_corrupt = true;
-            m_problem = "a reply is longer than " + std::to_string(m_maxLength) + " characters ('" + shown(m_buffer) +
-                        "')";
+            m_problem =
+                "a reply is longer than " + std::to_string(m_maxLength) + " characters ('" + shown(m_buffer) + "')";
             break;
         }
         m_buffer += c;
@@ -148,7 +148,8 @@ ParseResult<Reply> parseReply(std::string_view line) {
             r.words = {words[2], words[3]};
             return ParseResult<Reply>::success(std::move(r));
         }
-        return refuse<Reply>("the hello reply '" + shown(line) + "' is neither HELLO ACK <server> <version> nor HELLO NAK");
+        return refuse<Reply>("the hello reply '" + shown(line) +
+                             "' is neither HELLO ACK <server> <version> nor HELLO NAK");
     }
     if ((words[0] == "SET" || words[0] == "GET") && words.size() == 3 && (words[2] == "ACK" || words[2] == "NAK")) {
         if (!validKey(words[1])) return refuse<Reply>("the acknowledgement '" + shown(line) + "' names no command");
@@ -203,8 +204,7 @@ ParseResult<double> number(std::string_view word) {
     if (*first == '+') ++first;
     double value = 0.0;
     const auto [end, ec] = std::from_chars(first, last, value, std::chars_format::fixed);
-    if (ec != std::errc() || end != last || first == last)
-        return refuse<double>(quoted(word) + " is not a number");
+    if (ec != std::errc() || end != last || first == last) return refuse<double>(quoted(word) + " is not a number");
     if (!std::isfinite(value)) return refuse<double>(quoted(word) + " is not a finite number");
     return ParseResult<double>::success(value);
 }

@@ -87,8 +87,7 @@ void checkJob(const ParametricProgramJob& job) {
         throw std::invalid_argument("G-code: the parameters #" + std::to_string(job.firstParameter) + " .. #" +
                                     std::to_string(job.firstParameter + job.pointZMm.size()) +
                                     " are not all within #31 .. #5000");
-    if (!(job.feed > 0.0 && std::isfinite(job.feed)) || (!job.feedPerMinute && job.feed > 5.0) ||
-        job.feed > 100000.0)
+    if (!(job.feed > 0.0 && std::isfinite(job.feed)) || (!job.feedPerMinute && job.feed > 5.0) || job.feed > 100000.0)
         throw std::invalid_argument("G-code: the feed must be in (0, 5] per revolution or (0, 100000] per minute");
     if (job.spindleRpm < 0 || job.spindleRpm > 10000)
         throw std::invalid_argument("G-code: the spindle speed must be 0 to 10000 rpm");
@@ -157,8 +156,7 @@ void header(std::string& out, const ParametricProgramJob& job, const Units& u) {
                 fixed(job.pointZMm[i], 3) + " MM");
     comment("  " + linuxcnc::parameterName(job.firstParameter + static_cast<int>(n)) +
             " THE PART NUMBER THEY ARE FOR; THE PROGRAM CLEARS IT AND REFUSES TO CUT WITHOUT IT");
-    comment(std::string("BETWEEN THE POINTS: ") +
-            (job.slopes == ParametricSlopes::Pchip ? "PCHIP" : "CUBIC SPLINE") +
+    comment(std::string("BETWEEN THE POINTS: ") + (job.slopes == ParametricSlopes::Pchip ? "PCHIP" : "CUBIC SPLINE") +
             " THROUGH THE CORRECTIONS, HELD AT THE END VALUES OUTSIDE THEM; LARGEST CORRECTION " +
             fixed(u.correction(job.largestTotalMm), u.decimals()));
 }
@@ -198,8 +196,8 @@ void pchipSlopes(std::string& out, const ParametricProgramJob& job, const Units&
         const std::string a = secantName(k - 1), b = secantName(k);
         const std::string w1 = fixed(2.0 * h[k] + h[k - 1], 9), w2 = fixed(h[k] + 2.0 * h[k - 1], 9);
         out += slopeName(k) + "=0\n";
-        out += oword(label) + " if [[[" + a + " GT 0] AND [" + b + " GT 0]] OR [[" + a + " LT 0] AND [" +
-               b + " LT 0]]]\n";
+        out +=
+            oword(label) + " if [[[" + a + " GT 0] AND [" + b + " GT 0]] OR [[" + a + " LT 0] AND [" + b + " LT 0]]]\n";
         out += slopeName(k) + "=[[" + w1 + "+" + w2 + "]/[" + w1 + "/" + a + "+" + w2 + "/" + b + "]]\n";
         out += oword(label++) + " endif\n";
     }
@@ -209,8 +207,8 @@ void pchipSlopes(std::string& out, const ParametricProgramJob& job, const Units&
         out += d + "=[[[" + fixed(2.0 * h1 + h2, 9) + "*" + del1 + "]-[" + fixed(h1, 9) + "*" + del2 + "]]/" +
                fixed(h1 + h2, 9) + "]\n";
         out += oword(label) + " if [" + signOf(d) + " NE " + signOf(del1) + "]\n" + d + "=0\n";
-        out += oword(label) + " elseif [[" + signOf(del1) + " NE " + signOf(del2) + "] AND [ABS[" + d +
-               "] GT ABS[3*" + del1 + "]]]\n" + d + "=[3*" + del1 + "]\n";
+        out += oword(label) + " elseif [[" + signOf(del1) + " NE " + signOf(del2) + "] AND [ABS[" + d + "] GT ABS[3*" +
+               del1 + "]]]\n" + d + "=[3*" + del1 + "]\n";
         out += oword(label++) + " endif\n";
     };
     end(0, h[0], h[1], 0, 1);

@@ -17,10 +17,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (std::string& line : framer.feed(bytes.substr(cut)))
         lines.push_back(std::move(line));
     if (framer.corrupt() && framer.problem().empty()) __builtin_trap();
-    static const char* const requests[] = {"get estop",        "get machine",        "get mode",
-                                           "get program_status", "get joint_homed",    "get abs_act_pos",
-                                           "get user_linear_units", "get error",       "get operator_display",
-                                           "set mdi G21",      "hello EMC TrueTurn 1.0", "get program_linear_units"};
+    static const char* const requests[] = {"get estop",
+                                           "get machine",
+                                           "get mode",
+                                           "get program_status",
+                                           "get joint_homed",
+                                           "get abs_act_pos",
+                                           "get user_linear_units",
+                                           "get error",
+                                           "get operator_display",
+                                           "set mdi G21",
+                                           "hello EMC TrueTurn 1.0",
+                                           "get program_linear_units"};
     for (const std::string& line : lines) {
         if (line.empty() || line.size() > 64) __builtin_trap();  // the framer never returns these
         for (const char* request : requests) {

@@ -75,10 +75,10 @@ protected:
     /// rs274's path against the approximation unit's for `preset`.
     void expectApproximationUnitsPath(const QString& preset, const QString& xMode) {
         const QString out = path(QStringLiteral("part.ngc"));
-        const CliResult r = runTrueturn({QStringLiteral("cnc-program"), QStringLiteral("--preset"), preset,
-                                         QStringLiteral("--dialect"), QStringLiteral("linuxcnc"),
-                                         QStringLiteral("--parametric"), QStringLiteral("500"), QStringLiteral("--x-mode"),
-                                         xMode, QStringLiteral("--out"), out, QStringLiteral("--json")});
+        const CliResult r =
+            runTrueturn({QStringLiteral("cnc-program"), QStringLiteral("--preset"), preset, QStringLiteral("--dialect"),
+                         QStringLiteral("linuxcnc"), QStringLiteral("--parametric"), QStringLiteral("500"),
+                         QStringLiteral("--x-mode"), xMode, QStringLiteral("--out"), out, QStringLiteral("--json")});
         ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
         EXPECT_EQ(r.json().value(QStringLiteral("parameters")).toObject().value(QStringLiteral("part_number")).toInt(),
                   505);
@@ -123,13 +123,15 @@ TEST_F(CncProgram, Rs274CutsTheNaturalSplineOfASetUpThatAsksForIt) {
 
 TEST_F(CncProgram, TheProgramRefusesToCutWithoutTheCorrectionsOfThePartOrWithOneBeyondTheLimit) {
     const QString out = path(QStringLiteral("part.ngc"));
-    ASSERT_EQ(runTrueturn({QStringLiteral("cnc-program"), QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"),
-                           QStringLiteral("--parametric"), QStringLiteral("500"), QStringLiteral("--out"), out})
-                  .exitCode,
-              0);
+    ASSERT_EQ(
+        runTrueturn({QStringLiteral("cnc-program"), QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"),
+                     QStringLiteral("--parametric"), QStringLiteral("500"), QStringLiteral("--out"), out})
+            .exitCode,
+        0);
     const Interpreted unset = interpret(out, tools(), parameters(kCorrectionsMm, true, 0));
     EXPECT_NE(unset.exitCode, 0);
-    EXPECT_TRUE(unset.out.contains(QStringLiteral("NO CORRECTIONS WERE WRITTEN FOR THIS PART"))) << qPrintable(unset.out);
+    EXPECT_TRUE(unset.out.contains(QStringLiteral("NO CORRECTIONS WERE WRITTEN FOR THIS PART")))
+        << qPrintable(unset.out);
     EXPECT_TRUE(unset.feeds.empty()) << "nothing is cut";
     std::vector<double> beyond = kCorrectionsMm;
     beyond[2] = 0.6;  // the set-up's limit is 0.5 mm radial
@@ -152,7 +154,8 @@ TEST_F(CncProgram, TheWearProgramCutsTheNominalPathWithTheWearEntryApplied) {
         write(QStringLiteral("wear.tbl"), "T1 P1 X0 Z0 D0.8 ;finishing tool\nT10001 P2 X0.0004 Z0 ;wear of T1\n");
     const Interpreted run = interpret(out, wearTools, parameters({}, false, 0));
     ASSERT_EQ(run.exitCode, 0) << qPrintable(run.out.right(2000));
-    EXPECT_TRUE(run.out.contains(QStringLiteral("USE_TOOL_LENGTH_OFFSET(0.0004 0.0000 0.0000"))) << qPrintable(run.out.left(3000));
+    EXPECT_TRUE(run.out.contains(QStringLiteral("USE_TOOL_LENGTH_OFFSET(0.0004 0.0000 0.0000")))
+        << qPrintable(run.out.left(3000));
     const tt::config::LoopScenario scenario = tt::config::loadLoopScenario(QStringLiteral("paper-2012-group1"));
     const auto nominal = tt::core::partCorrectionFor(scenario.loopConfig(true, std::nullopt), 1,
                                                      std::vector<double>(kCorrectionsMm.size(), 0.0));
@@ -163,8 +166,8 @@ TEST_F(CncProgram, TheWearProgramCutsTheNominalPathWithTheWearEntryApplied) {
 
 TEST_F(CncProgram, RefusesBadOptionsWithOneLine) {
     const QString out = path(QStringLiteral("p.ngc"));
-    const QStringList base{QStringLiteral("cnc-program"), QStringLiteral("--preset"), QStringLiteral("paper-2012-group1"),
-                           QStringLiteral("--out"), out};
+    const QStringList base{QStringLiteral("cnc-program"), QStringLiteral("--preset"),
+                           QStringLiteral("paper-2012-group1"), QStringLiteral("--out"), out};
     tt::test::expectRefused(base, QStringLiteral("--parametric"));
     tt::test::expectRefused(base + QStringList{QStringLiteral("--parametric"), QStringLiteral("500"),
                                                QStringLiteral("--wear-tool"), QStringLiteral("7")},
@@ -174,9 +177,10 @@ TEST_F(CncProgram, RefusesBadOptionsWithOneLine) {
     tt::test::expectRefused(base + QStringList{QStringLiteral("--parametric"), QStringLiteral("500"),
                                                QStringLiteral("--dialect"), QStringLiteral("fanuc")},
                             QStringLiteral("--dialect"));
-    tt::test::expectRefused({QStringLiteral("cnc-program"), QStringLiteral("--preset"), QStringLiteral("no-such-set-up"),
-                             QStringLiteral("--parametric"), QStringLiteral("500"), QStringLiteral("--out"), out},
-                            QStringLiteral("no-such-set-up"));
+    tt::test::expectRefused(
+        {QStringLiteral("cnc-program"), QStringLiteral("--preset"), QStringLiteral("no-such-set-up"),
+         QStringLiteral("--parametric"), QStringLiteral("500"), QStringLiteral("--out"), out},
+        QStringLiteral("no-such-set-up"));
 }
 
 }  // namespace

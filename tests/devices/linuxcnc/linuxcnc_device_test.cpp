@@ -37,14 +37,16 @@ TEST(LinuxCncSettings, ReadsALinuxCncUrlAndRefusesOthers) {
     EXPECT_EQ(s.value(QStringLiteral("host")).toString(), QStringLiteral("10.0.0.7"));
     EXPECT_EQ(s.value(QStringLiteral("port")).toInt(), 5008);
     EXPECT_EQ(s.value(QStringLiteral("mode")).toString(), QStringLiteral("wear"));
-    EXPECT_EQ(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://lathe-3")).value(QStringLiteral("port")).toInt(), 5007);
+    EXPECT_EQ(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://lathe-3")).value(QStringLiteral("port")).toInt(),
+              5007);
     EXPECT_EQ(linuxcnc::sessionSettings(s).corrections.mode, linuxcnc::CorrectionMode::Wear);
     EXPECT_EQ(linuxcnc::sessionSettings(s).corrections.firstParameter, 500);
     EXPECT_EQ(linuxcnc::sessionSettings(s).controller.endpoint.text(), "10.0.0.7:5008");
     EXPECT_THROW(linuxcnc::settingsFromUrl(QStringLiteral("modbus://10.0.0.7")), std::invalid_argument);
     EXPECT_THROW(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://")), std::invalid_argument);
     EXPECT_THROW(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://h:1/x")), std::invalid_argument);
-    EXPECT_THROW(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://h"), QStringLiteral("both")), std::invalid_argument);
+    EXPECT_THROW(linuxcnc::settingsFromUrl(QStringLiteral("linuxcnc://h"), QStringLiteral("both")),
+                 std::invalid_argument);
 }
 
 TEST(LinuxCncSettings, NamesEveryBadSettingInTheUsersWords) {
@@ -62,7 +64,8 @@ TEST(LinuxCncSettings, NamesEveryBadSettingInTheUsersWords) {
     EXPECT_TRUE(keys.contains(QStringLiteral("enablePassword")));
     EXPECT_TRUE(keys.contains(QStringLiteral("largestStepMm")));
     EXPECT_TRUE(keys.contains(QStringLiteral("programPath")));
-    EXPECT_TRUE(factory.validate(DeviceKind::CorrectionOutput, {}, Validation::Full).isEmpty()) << "the defaults are good";
+    EXPECT_TRUE(factory.validate(DeviceKind::CorrectionOutput, {}, Validation::Full).isEmpty())
+        << "the defaults are good";
 }
 
 TEST(LinuxCncDevice, TestConnectionSaysWhatItFoundInTheUsersWords) {
@@ -79,7 +82,8 @@ TEST(LinuxCncDevice, TestConnectionSaysWhatItFoundInTheUsersWords) {
     })) << device->health().message;
     EXPECT_EQ(device->health().state, core::DeviceState::Ready) << device->health().message;
     const QString health = QString::fromStdString(device->health().message);
-    EXPECT_TRUE(health.contains(QStringLiteral("LinuxCNC EMCNETSVR 1.1 at ") + QString::fromStdString(lc->endpoint().text())))
+    EXPECT_TRUE(
+        health.contains(QStringLiteral("LinuxCNC EMCNETSVR 1.1 at ") + QString::fromStdString(lc->endpoint().text())))
         << health.toStdString();
     EXPECT_TRUE(health.contains(QStringLiteral("machine on, homed"))) << health.toStdString();
     EXPECT_EQ(statistic(*device, QStringLiteral("LinuxCNC")), QStringLiteral("remote shell EMCNETSVR, protocol 1.1"));

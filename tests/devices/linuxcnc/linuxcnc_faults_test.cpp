@@ -48,7 +48,8 @@ bool cut(LinuxCncLathe& lathe, std::int64_t part, const std::vector<double>& cor
 }
 
 bool anyContains(const std::vector<std::string>& texts, const std::string& part) {
-    return std::any_of(texts.begin(), texts.end(), [&](const std::string& t) { return t.find(part) != std::string::npos; });
+    return std::any_of(texts.begin(), texts.end(),
+                       [&](const std::string& t) { return t.find(part) != std::string::npos; });
 }
 
 std::string joined(const std::vector<std::string>& texts) {
@@ -98,7 +99,8 @@ TEST(LinuxCncFaults, AnEStopOrAMachineThatIsOffGetsNoWriteAndIsReported) {
     ASSERT_TRUE(test::operate(lathe->session(), [](LinuxCncController& c) { c.request("set machine off"); }));
     ASSERT_TRUE(lathe->output().sendPartCorrection(correctionFor(2, kCorrectionsMm)).ok);
     ASSERT_TRUE(lathe->cycle().startPart(2).ok);
-    ASSERT_TRUE(test::waitUntil([&] { return anyContains(lathe->takeIncidents(), "the machine is off at " + where); }, 30.0));
+    ASSERT_TRUE(
+        test::waitUntil([&] { return anyContains(lathe->takeIncidents(), "the machine is off at " + where); }, 30.0));
     ASSERT_TRUE(test::operate(lathe->session(), [&](LinuxCncController& c) {
         test::bringUp(c);
         c.setMode(devices::linuxcnc::TaskMode::Mdi);

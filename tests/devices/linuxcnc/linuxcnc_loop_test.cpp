@@ -5,8 +5,8 @@
 // it steps the engine, and records the machine's incidents as alarms of the run (what the runtime must do).
 #include <gtest/gtest.h>
 
-#include <QTemporaryDir>
 #include <Eigen/Core>
+#include <QTemporaryDir>
 #include <cmath>
 
 #include "config/loop_scenario.h"
@@ -57,16 +57,16 @@ private:
 bool runToEnd(core::LoopEngine& engine, LinuxCncLathe& lathe, core::HistoryStore* history, double seconds,
               const std::function<void()>& each = {}) {
     return test::waitUntil(
-        [&] {
-            engine.step();
-            for (const std::string& incident : lathe.takeIncidents())
-                if (history && engine.runId())
-                    history->recordAlarm(*engine.runId(),
-                                         {engine.partAwaitingMeasurement(), lathe.clock().nowS(), "machine", incident});
-            if (each) each();
-            return engine.complete() || engine.state() == core::LoopState::Fault;
-        },
-        seconds) &&
+               [&] {
+                   engine.step();
+                   for (const std::string& incident : lathe.takeIncidents())
+                       if (history && engine.runId())
+                           history->recordAlarm(*engine.runId(), {engine.partAwaitingMeasurement(),
+                                                                  lathe.clock().nowS(), "machine", incident});
+                   if (each) each();
+                   return engine.complete() || engine.state() == core::LoopState::Fault;
+               },
+               seconds) &&
            engine.complete();
 }
 
@@ -107,15 +107,16 @@ TEST(LinuxCncLoop, SixtyPartsThroughLinuxCncMatchTheBuiltInLatheAndEveryWriteIsR
     ASSERT_TRUE(reference.outcome.complete) << reference.outcome.stopReason;
 
     test::bringUpNow(*lc);
-    LinuxCncLathe lathe(scenario, kSeed,
-                        devices::linuxcnc::latheOptions(
-                            devices::linuxcnc::settingsFromUrl(lc->url(), QStringLiteral("profile")), lc->programFolder(),
-                            true));
+    LinuxCncLathe lathe(
+        scenario, kSeed,
+        devices::linuxcnc::latheOptions(devices::linuxcnc::settingsFromUrl(lc->url(), QStringLiteral("profile")),
+                                        lc->programFolder(), true));
     const std::unique_ptr<core::LoopEngine> engine = core::buildShaftRun(scenario, plan, lathe, nullptr);
     PartCollector collector(lathe, plan.loop.pointZMm, scenario.nominalDiameterMm);
     engine->setListener(&collector);
     engine->start(describe(scenario, "linuxcnc"));
-    ASSERT_TRUE(runToEnd(*engine, lathe, nullptr, 1200.0)) << engine->detail() << "; " << lathe.snapshot().health.message;
+    ASSERT_TRUE(runToEnd(*engine, lathe, nullptr, 1200.0))
+        << engine->detail() << "; " << lathe.snapshot().health.message;
     EXPECT_TRUE(collector.faults.empty());
 
     // Per control point, the systematic error (mean true deviation) after the loop's start-up of 2z + 5 parts.
@@ -158,10 +159,10 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
     storage::SqlHistoryStore history(database);
 
     test::bringUpNow(*lc);
-    LinuxCncLathe lathe(scenario, 5,
-                        devices::linuxcnc::latheOptions(
-                            devices::linuxcnc::settingsFromUrl(lc->url(), QStringLiteral("profile")), lc->programFolder(),
-                            true));
+    LinuxCncLathe lathe(
+        scenario, 5,
+        devices::linuxcnc::latheOptions(devices::linuxcnc::settingsFromUrl(lc->url(), QStringLiteral("profile")),
+                                        lc->programFolder(), true));
     const std::unique_ptr<core::LoopEngine> engine = core::buildShaftRun(scenario, plan, lathe, &history);
     PartCollector collector(lathe, plan.loop.pointZMm, scenario.nominalDiameterMm);
     engine->setListener(&collector);
@@ -178,14 +179,15 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
         ASSERT_TRUE(killed) << "LinuxCNC could not be killed";
         // LinuxCNC is gone: the loop holds (machining part 3), the machine reports it.
         ASSERT_TRUE(test::waitUntil([&] { return lathe.snapshot().health.state == core::DeviceState::Error; }, 30.0));
-        for (int i = 0; i < 20; ++i) engine->step();
+        for (int i = 0; i < 20; ++i)
+            engine->step();
         EXPECT_EQ(engine->state(), core::LoopState::Running) << engine->detail();
         EXPECT_EQ(engine->partsFinished(), 2);
         restarted = test::restartLinuxCnc(*lc);
         ASSERT_TRUE(restarted);
         // The operator brings the restarted machine up (on TrueTurn's connection, between its requests).
-        ASSERT_TRUE(test::operate(lathe.session(), [](devices::linuxcnc::LinuxCncController& c) { test::bringUp(c); },
-                                  120.0));
+        ASSERT_TRUE(test::operate(
+            lathe.session(), [](devices::linuxcnc::LinuxCncController& c) { test::bringUp(c); }, 120.0));
     };
     ASSERT_TRUE(runToEnd(*engine, lathe, &history, 600.0, killDuringPartThree))
         << engine->detail() << "; " << lathe.snapshot().health.message;
@@ -209,7 +211,8 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
                a.message.find("part 3 was being cut") != std::string::npos;
     });
     std::string all;
-    for (const auto& a : alarms) all += a.kind + ": " + a.message + "\n";
+    for (const auto& a : alarms)
+        all += a.kind + ": " + a.message + "\n";
     EXPECT_TRUE(named) << all;
     EXPECT_EQ(lathe.snapshot().counters.partsAborted, 1u);
     EXPECT_EQ(lathe.snapshot().counters.partsCut, static_cast<std::uint64_t>(kParts));

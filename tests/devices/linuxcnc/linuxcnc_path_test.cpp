@@ -128,8 +128,7 @@ TEST_P(WearPath, TheWearCorrectionLandsOnTheExecutedPathWithinOneMicrometreOnDia
     RecordProperty("largest_difference_on_diameter_um", std::to_string(worstUm));
 }
 
-const Conventions kConventions[] = {
-    {"diameter", "mm"}, {"radius", "mm"}, {"diameter", "inch"}, {"radius", "inch"}};
+const Conventions kConventions[] = {{"diameter", "mm"}, {"radius", "mm"}, {"diameter", "inch"}, {"radius", "inch"}};
 
 std::string conventionName(const ::testing::TestParamInfo<Conventions>& info) {
     return std::string(info.param.xMode) + "_" + info.param.units;

@@ -113,7 +113,8 @@ TEST(LinuxCncReply, ReadsTheMachinesState) {
     EXPECT_EQ(homed.value(), (std::vector<bool>{true, true, false, false, false, false}));
     EXPECT_TRUE(jointsHomed(parseReply("JOINT_HOMED HOMED NOT").value()));  // the manual's words
     EXPECT_FALSE(jointsHomed(parseReply("JOINT_HOMED YES PERHAPS").value()));
-    EXPECT_EQ(linearUnits(parseReply("USER_LINEAR_UNITS INCH").value(), "USER_LINEAR_UNITS").value(), LinearUnits::Inch);
+    EXPECT_EQ(linearUnits(parseReply("USER_LINEAR_UNITS INCH").value(), "USER_LINEAR_UNITS").value(),
+              LinearUnits::Inch);
     EXPECT_EQ(millimetresPer(LinearUnits::Inch), 25.4);
     EXPECT_FALSE(linearUnits(parseReply("PROGRAM_UNITS NONE").value(), "PROGRAM_UNITS"));
     EXPECT_EQ(integerValue(parseReply("PROGRAM_LINE 42").value(), "PROGRAM_LINE").value(), 42);
@@ -131,7 +132,8 @@ TEST(LinuxCncReply, ReadsPositionsAndRefusesOnesCutOffOrGarbled) {
     EXPECT_NE(cut.error().find("cut off"), std::string::npos) << cut.error();
     EXPECT_FALSE(position(parseReply("ABS_ACT_POS 0.5314x6 0 0 0 0 0").value(), "ABS_ACT_POS"));
     EXPECT_FALSE(position(parseReply("ABS_ACT_POS nan 0 0 0 0 0").value(), "ABS_ACT_POS"));
-    EXPECT_FALSE(position(parseReply("ABS_ACT_POS 1e5 0 0 0 0 0").value(), "ABS_ACT_POS")) << "LinuxCNC prints fixed decimals";
+    EXPECT_FALSE(position(parseReply("ABS_ACT_POS 1e5 0 0 0 0 0").value(), "ABS_ACT_POS"))
+        << "LinuxCNC prints fixed decimals";
     EXPECT_FALSE(position(parseReply("REL_ACT_POS 0 0 0 0 0 0").value(), "ABS_ACT_POS"));
 }
 

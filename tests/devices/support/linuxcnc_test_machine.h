@@ -44,9 +44,8 @@ inline std::optional<TestLinuxCnc> testLinuxCnc() {
     return TestLinuxCnc{parsed.host().toStdString(), parsed.port(5007), dir};
 }
 
-#define TT_REQUIRE_LINUXCNC(name)                        \
-    const std::optional<::tt::test::TestLinuxCnc> name = \
-        ::tt::test::testLinuxCnc();                      \
+#define TT_REQUIRE_LINUXCNC(name)                                                    \
+    const std::optional<::tt::test::TestLinuxCnc> name = ::tt::test::testLinuxCnc(); \
     if (!name) return
 
 /// Waits (polling every 10 ms) until `done()` or `seconds` pass; whether it became true.
@@ -67,7 +66,8 @@ inline void bringUp(devices::linuxcnc::LinuxCncController& c) {
     if (c.status().program != ProgramStatus::Idle) c.abort();
     if (c.status().estop) c.request("set estop off");
     c.request("set machine on");
-    if (!waitUntil([&] { return c.status().machineOn; }, 10.0)) throw std::runtime_error("the machine does not come on");
+    if (!waitUntil([&] { return c.status().machineOn; }, 10.0))
+        throw std::runtime_error("the machine does not come on");
     if (!c.status().allHomed()) {
         c.setMode(TaskMode::Manual);
         c.request("set home -1");
@@ -126,7 +126,8 @@ inline bool killLinuxCnc(const TestLinuxCnc& lc) {
         if (words.size() != 2 || words[1] != "linuxcncrsh") continue;
         const int pid = words[0].toInt();
         QFile comm(QStringLiteral("/proc/%1/comm").arg(pid));
-        if (comm.open(QIODevice::ReadOnly) && comm.readAll().trimmed() == "linuxcncrsh") killed = ::kill(pid, SIGKILL) == 0;
+        if (comm.open(QIODevice::ReadOnly) && comm.readAll().trimmed() == "linuxcncrsh")
+            killed = ::kill(pid, SIGKILL) == 0;
     }
     QString output;
     return killed && runScript({QStringLiteral("--stop"), lc.dir}, &output);
