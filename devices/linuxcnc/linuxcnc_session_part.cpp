@@ -13,6 +13,7 @@ namespace {
 
 constexpr int kMotionTimeoutMs = 60000;
 constexpr double kEndToleranceMm = 0.001;
+constexpr int kStartGraceMs = 3000;
 
 std::string mm3(double v) {
     char text[32];
@@ -110,6 +111,10 @@ void LinuxCncSession::sampleUntilIdle(std::vector<std::array<double, 2>>& sample
                                       bool waitForStart) {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point deadline = Clock::now() + std::chrono::seconds(m_settings.partTimeoutS);
+    // After cycle start LinuxCNC may show the program idle for a few task cycles (longer on a busy computer); a
+    // program that stays idle this long did not start (a guard refused it, or it failed at once).
+    const Clock::time_point startBy =
+        waitForStart ? deadline : Clock::now() + std::chrono::milliseconds(kStartGraceMs);
     const std::array<double, 2> ref = *m_reference;
     for (std::uint64_t i = 0; !m_stop; ++i) {
         if (i % 16 == 0) {
@@ -120,7 +125,7 @@ void LinuxCncSession::sampleUntilIdle(std::vector<std::array<double, 2>>& sample
                     m_events.push_back({CycleEvent::Kind::Started, m_cutting, now(), "program started"});
                 }
                 sawRunning = true;
-            } else if (sawRunning || !waitForStart) {
+            } else if (sawRunning || Clock::now() > startBy) {
                 return;
             }
             if (Clock::now() > deadline) {

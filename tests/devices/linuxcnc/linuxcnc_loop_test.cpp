@@ -53,21 +53,43 @@ private:
     double m_nominal;
 };
 
-/// Steps the engine until it completes (or `seconds` pass), recording the machine's incidents as alarms.
+/// Steps the engine until it completes (or `seconds` pass), recording the machine's incidents as alarms of the run
+/// (when there is a history) and in `incidents`.
 bool runToEnd(core::LoopEngine& engine, LinuxCncLathe& lathe, core::HistoryStore* history, double seconds,
-              const std::function<void()>& each = {}) {
+              std::vector<std::string>& incidents, const std::function<void()>& each = {}) {
     return test::waitUntil(
                [&] {
                    engine.step();
-                   for (const std::string& incident : lathe.takeIncidents())
+                   for (const std::string& incident : lathe.takeIncidents()) {
+                       incidents.push_back(incident);
                        if (history && engine.runId())
                            history->recordAlarm(*engine.runId(), {engine.partAwaitingMeasurement(),
                                                                   lathe.clock().nowS(), "machine", incident});
+                   }
                    if (each) each();
                    return engine.complete() || engine.state() == core::LoopState::Fault;
                },
                seconds) &&
            engine.complete();
+}
+
+/// An alarm of the machine names `host` and says `what` failed.
+void expectAlarmNaming(const std::vector<core::AlarmRecord>& alarms, const std::string& host, const std::string& what) {
+    const bool named = std::any_of(alarms.begin(), alarms.end(), [&](const core::AlarmRecord& a) {
+        return a.kind == "machine" && a.message.find(host) != std::string::npos &&
+               a.message.find(what) != std::string::npos;
+    });
+    std::string all;
+    for (const auto& a : alarms)
+        all += a.kind + ": " + a.message + "\n";
+    EXPECT_TRUE(named) << all;
+}
+
+std::string joined(const std::vector<std::string>& texts) {
+    std::string all;
+    for (const std::string& t : texts)
+        all += t + "\n";
+    return all;
 }
 
 core::ShaftRunPlan planFor(const core::ShaftScenario& scenario, std::int64_t parts) {
@@ -115,7 +137,8 @@ TEST(LinuxCncLoop, SixtyPartsThroughLinuxCncMatchTheBuiltInLatheAndEveryWriteIsR
     PartCollector collector(lathe, plan.loop.pointZMm, scenario.nominalDiameterMm);
     engine->setListener(&collector);
     engine->start(describe(scenario, "linuxcnc"));
-    ASSERT_TRUE(runToEnd(*engine, lathe, nullptr, 1200.0))
+    std::vector<std::string> incidents;
+    ASSERT_TRUE(runToEnd(*engine, lathe, nullptr, 1200.0, incidents))
         << engine->detail() << "; " << lathe.snapshot().health.message;
     EXPECT_TRUE(collector.faults.empty());
 
@@ -137,16 +160,19 @@ TEST(LinuxCncLoop, SixtyPartsThroughLinuxCncMatchTheBuiltInLatheAndEveryWriteIsR
     EXPECT_NEAR(linuxCncMean.cwiseAbs().maxCoeff(), builtInMean.cwiseAbs().maxCoeff(),
                 std::max(0.1 * builtInMean.cwiseAbs().maxCoeff(), 0.002));
 
-    // Every correction written was read back equal; nothing else was written.
+    // Every correction written was read back equal. A part whose cut was interrupted (a busy computer can starve
+    // the sampling) is written and cut again, each time reported.
     const std::vector<devices::linuxcnc::WriteRecord> writes = lathe.takeWrites();
-    ASSERT_EQ(writes.size(), static_cast<std::size_t>(kParts));
+    const auto counters = lathe.snapshot().counters;
     for (const auto& w : writes) {
         EXPECT_TRUE(w.applied()) << w.message;
         EXPECT_EQ(w.readBackMm, w.writtenMm) << "part " << w.partNumber;
     }
-    const auto counters = lathe.snapshot().counters;
-    EXPECT_EQ(counters.writesVerified, static_cast<std::uint64_t>(kParts));
-    EXPECT_EQ(counters.partsCut, static_cast<std::uint64_t>(kParts));
+    EXPECT_EQ(counters.writesVerified, writes.size());
+    EXPECT_GE(writes.size(), static_cast<std::size_t>(kParts));
+    EXPECT_EQ(writes.size() - static_cast<std::size_t>(kParts), incidents.size()) << joined(incidents);
+    EXPECT_LE(incidents.size(), 3u) << "parts cut again: " << joined(incidents);
+    RecordProperty("parts_cut_again", static_cast<int>(incidents.size()));
 }
 
 TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinuxCncIsBack) {
@@ -189,7 +215,8 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
         ASSERT_TRUE(test::operate(
             lathe.session(), [](devices::linuxcnc::LinuxCncController& c) { test::bringUp(c); }, 120.0));
     };
-    ASSERT_TRUE(runToEnd(*engine, lathe, &history, 600.0, killDuringPartThree))
+    std::vector<std::string> incidents;
+    ASSERT_TRUE(runToEnd(*engine, lathe, &history, 600.0, incidents, killDuringPartThree))
         << engine->detail() << "; " << lathe.snapshot().health.message;
     ASSERT_TRUE(killed);
     ASSERT_TRUE(restarted);
@@ -204,16 +231,7 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
         EXPECT_TRUE(parts[i].measurement.has_value()) << "part " << i + 1 << " measured";
     }
     // An alarm names the host and what failed.
-    const auto alarms = history.alarms(*engine->runId());
-    const std::string host = "LinuxCNC at " + lc->endpoint().text();
-    const bool named = std::any_of(alarms.begin(), alarms.end(), [&](const core::AlarmRecord& a) {
-        return a.kind == "machine" && a.message.find(host) != std::string::npos &&
-               a.message.find("part 3 was being cut") != std::string::npos;
-    });
-    std::string all;
-    for (const auto& a : alarms)
-        all += a.kind + ": " + a.message + "\n";
-    EXPECT_TRUE(named) << all;
+    expectAlarmNaming(history.alarms(*engine->runId()), "LinuxCNC at " + lc->endpoint().text(), "part 3 was being cut");
     EXPECT_EQ(lathe.snapshot().counters.partsAborted, 1u);
     EXPECT_EQ(lathe.snapshot().counters.partsCut, static_cast<std::uint64_t>(kParts));
 }
