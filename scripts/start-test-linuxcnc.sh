@@ -100,6 +100,8 @@ if (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null; then fail "port $port is al
 
 # A fresh configuration each start; the programs in nc/ stay (a restarted controller finds its programs again).
 mkdir -p "$dir"
+# The real-time part runs as nobody and reaches its FIFO through DIR (mktemp makes folders only their owner enters).
+chmod 0755 "$dir"
 find "$dir" -mindepth 1 -maxdepth 1 ! -name nc -exec rm -rf {} +
 mkdir -p "$dir/config" "$dir/home" "$dir/fifo" "$dir/nc"
 chmod 1777 "$dir/fifo"
