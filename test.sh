@@ -11,10 +11,14 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DTRUETURN_BUILD_TESTS=ON -DTRUETURN_BUILD_BENCHMARKS=ON -DTRUETURN_WERROR=ON -DTRUETURN_POSTGRES_TESTS=ON
 cmake --build build -j "$(nproc)"
 
-# A real PostgreSQL server for the storage tests, on 127.0.0.1 only, stopped on exit.
+# A real PostgreSQL server for the storage tests, on 127.0.0.1 only, and the headless LinuxCNC lathe of the
+# LinuxCNC tests (TCP 5007), both stopped on exit.
 pg_dir=$(mktemp -d /tmp/trueturn-pg.XXXXXX)
-trap 'scripts/start-test-postgres.sh --stop "$pg_dir"; rm -rf "$pg_dir"' EXIT
+lcnc_dir=$(mktemp -d /tmp/trueturn-lcnc.XXXXXX)
+trap 'scripts/start-test-postgres.sh --stop "$pg_dir"; rm -rf "$pg_dir";
+      scripts/start-test-linuxcnc.sh --stop "$lcnc_dir"; rm -rf "$lcnc_dir"' EXIT
 eval "$(scripts/start-test-postgres.sh "$pg_dir" 55432)"
+eval "$(scripts/start-test-linuxcnc.sh "$lcnc_dir" 5007)"
 
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600

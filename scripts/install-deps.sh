@@ -13,9 +13,10 @@ packages=(
 )
 # file, help2man, lintian, desktop-file-utils, appstream: scripts/check-package.sh (CPack's dependency list,
 # the manual page, the package and metadata checks).
-# linuxcnc-uspace: LinuxCNC's standalone G-code interpreter rs274 (/usr/bin/rs274), which the feed-schedule
-# tests run on the emitted programs. It must be installed with --no-install-recommends (as below): it
-# recommends a real-time kernel.
+# linuxcnc-uspace: LinuxCNC's standalone G-code interpreter rs274 (/usr/bin/rs274), which the feed-schedule and
+# cnc-program tests run on the emitted programs, and LinuxCNC itself, which scripts/start-test-linuxcnc.sh runs
+# headless as the simulated lathe of the LinuxCNC tests (its shell tools awk, ipcs, pgrep are in every Debian).
+# It must be installed with --no-install-recommends (as below): it recommends a real-time kernel.
 test_packages=(
     googletest libgmock-dev libgtest-dev libbenchmark-dev xvfb xauth
     clang libclang-rt-14-dev postgresql linuxcnc-uspace poppler-utils

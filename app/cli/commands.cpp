@@ -18,6 +18,7 @@ Command makeReportCommand();
 Command makeGenerateHistoryCommand();
 Command makeIdentifyCommand();
 Command makeAuditCommand();
+Command makeCncProgramCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -36,6 +37,7 @@ const std::vector<Command>& commands() {
         makeGenerateHistoryCommand(),
         makeIdentifyCommand(),
         makeAuditCommand(),
+        makeCncProgramCommand(),
     };
     return all;
 }

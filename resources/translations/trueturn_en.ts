@@ -553,6 +553,341 @@
     </message>
 </context>
 <context>
+    <name>LinuxCnc</name>
+    <message>
+        <source>Host: enter the IP address or name of the LinuxCNC computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: one word without spaces (the remote shell splits at spaces)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest step: must not exceed the largest total</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part program: an absolute path on the LinuxCNC computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC lathe (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC machines every part; the simulated shaft&apos;s physics is applied to the path LinuxCNC executed and the simulated micrometer measures it; TrueTurn writes the corrections into LinuxCNC between parts.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E-stop on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no part program is set for LinuxCNC; the operator runs the parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no corrections were sent for part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>connecting to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1; X %2 Z %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>part %1: no corrections</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: part %2: %3; nothing written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC takes corrections between parts; a dynamic X offset needs a PLC (Modbus output)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>remote shell %1, protocol %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X %1 Z %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Program units</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inch (G20)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mm (G21)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diameter (G7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>radius (G8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes verified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes refused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Read-backs that differed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Writes held (machine not ready)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connection resets</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Parts aborted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>IP address or name of the LinuxCNC computer (its remote shell, linuxcncrsh).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TCP port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connect password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh --connectpw; sent in clear text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Enable password</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>linuxcncrsh --enablepw: the right to command the machine; sent in clear text.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Client name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How TrueTurn introduces itself (one word).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connect timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A reply, a mode change or an MDI line; the connection is reset without it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Joints to be homed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A lathe: 2 (X and Z).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the correction reaches the cut</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Profile: the control-point corrections as numbered parameters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wear: one diameter correction as the tool&apos;s X wear</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>First parameter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>#500 .. #504 hold the corrections, #505 the part number they are for.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wear entry (tool number)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Its X wear is set by G10 L1; the part program applies it with G43.2 H&lt;entry&gt;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X words of the part program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Diameters (G7)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radii (G8)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Units of the part program</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Millimetres (G21)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inches (G20)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest change of a correction from part to part (radial); larger is never written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest total</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Largest correction (radial); larger is never written.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part program on the LinuxCNC computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Empty: the operator runs the parts; TrueTurn writes between them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>TrueTurn presses cycle start</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Otherwise the operator presses it after TrueTurn has written the corrections.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC at %1:%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LinuxCNC remote shell (TCP)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>Modbus</name>
     <message>
         <source>connecting to %1</source>

@@ -553,6 +553,341 @@
     </message>
 </context>
 <context>
+    <name>LinuxCnc</name>
+    <message>
+        <source>Host: enter the IP address or name of the LinuxCNC computer</source>
+        <translation>Хост: введите IP-адрес или имя компьютера LinuxCNC</translation>
+    </message>
+    <message>
+        <source>%1: one word without spaces (the remote shell splits at spaces)</source>
+        <translation>%1: одно слово без пробелов (удалённая оболочка делит строку по пробелам)</translation>
+    </message>
+    <message>
+        <source>Largest step: must not exceed the largest total</source>
+        <translation>Наибольший шаг: не должен превышать наибольшую коррекцию</translation>
+    </message>
+    <message>
+        <source>Part program: an absolute path on the LinuxCNC computer</source>
+        <translation>Управляющая программа: абсолютный путь на компьютере LinuxCNC</translation>
+    </message>
+    <message>
+        <source>LinuxCNC lathe (%1)</source>
+        <translation>Станок LinuxCNC (%1)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC machines every part; the simulated shaft&apos;s physics is applied to the path LinuxCNC executed and the simulated micrometer measures it; TrueTurn writes the corrections into LinuxCNC between parts.</source>
+        <translation>LinuxCNC обрабатывает каждую деталь; физика моделируемого вала применяется к траектории, которую выполнил LinuxCNC, и моделируемый микрометр её измеряет; TrueTurn записывает коррекции в LinuxCNC между деталями.</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>да</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>E-stop on</source>
+        <translation>аварийный стоп</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>включён</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>выключен</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>не выполняется</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>выполняется</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation>приостановлена</translation>
+    </message>
+    <message>
+        <source>inch</source>
+        <translation>дюйм</translation>
+    </message>
+    <message>
+        <source>cm</source>
+        <translation>см</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>мм</translation>
+    </message>
+    <message>
+        <source>no part program is set for LinuxCNC; the operator runs the parts</source>
+        <translation>для LinuxCNC не задана управляющая программа; детали запускает оператор</translation>
+    </message>
+    <message>
+        <source>no corrections were sent for part %1</source>
+        <translation>для детали %1 коррекции не переданы</translation>
+    </message>
+    <message>
+        <source>connecting to %1</source>
+        <translation>подключение к %1</translation>
+    </message>
+    <message>
+        <source>%1; X %2 Z %3 mm</source>
+        <translation>%1; X %2 Z %3 мм</translation>
+    </message>
+    <message>
+        <source>part %1: no corrections</source>
+        <translation>деталь %1: нет коррекций</translation>
+    </message>
+    <message>
+        <source>%1: part %2: %3; nothing written</source>
+        <translation>%1: деталь %2: %3; ничего не записано</translation>
+    </message>
+    <message>
+        <source>LinuxCNC takes corrections between parts; a dynamic X offset needs a PLC (Modbus output)</source>
+        <translation>LinuxCNC принимает коррекции между деталями; динамическому смещению X нужен ПЛК (выход Modbus)</translation>
+    </message>
+    <message>
+        <source>LinuxCNC</source>
+        <translation>LinuxCNC</translation>
+    </message>
+    <message>
+        <source>remote shell %1, protocol %2</source>
+        <translation>удалённая оболочка %1, протокол %2</translation>
+    </message>
+    <message>
+        <source>Machine units</source>
+        <translation>Единицы станка</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Homed</source>
+        <translation>Реферирован</translation>
+    </message>
+    <message>
+        <source>Program</source>
+        <translation>Программа</translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation>Положение</translation>
+    </message>
+    <message>
+        <source>X %1 Z %2 mm</source>
+        <translation>X %1 Z %2 мм</translation>
+    </message>
+    <message>
+        <source>Program units</source>
+        <translation>Единицы программы</translation>
+    </message>
+    <message>
+        <source>inch (G20)</source>
+        <translation>дюймы (G20)</translation>
+    </message>
+    <message>
+        <source>mm (G21)</source>
+        <translation>мм (G21)</translation>
+    </message>
+    <message>
+        <source>diameter (G7)</source>
+        <translation>диаметр (G7)</translation>
+    </message>
+    <message>
+        <source>radius (G8)</source>
+        <translation>радиус (G8)</translation>
+    </message>
+    <message>
+        <source>Writes verified</source>
+        <translation>Записей проверено</translation>
+    </message>
+    <message>
+        <source>Writes refused</source>
+        <translation>Записей отклонено</translation>
+    </message>
+    <message>
+        <source>Read-backs that differed</source>
+        <translation>Расхождений при обратном чтении</translation>
+    </message>
+    <message>
+        <source>Writes held (machine not ready)</source>
+        <translation>Записей отложено (станок не готов)</translation>
+    </message>
+    <message>
+        <source>Connection resets</source>
+        <translation>Сбросов соединения</translation>
+    </message>
+    <message>
+        <source>Parts cut</source>
+        <translation>Деталей обработано</translation>
+    </message>
+    <message>
+        <source>Parts aborted</source>
+        <translation>Деталей прервано</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Хост</translation>
+    </message>
+    <message>
+        <source>IP address or name of the LinuxCNC computer (its remote shell, linuxcncrsh).</source>
+        <translation>IP-адрес или имя компьютера LinuxCNC (его удалённой оболочки linuxcncrsh).</translation>
+    </message>
+    <message>
+        <source>TCP port</source>
+        <translation>Порт TCP</translation>
+    </message>
+    <message>
+        <source>Connect password</source>
+        <translation>Пароль подключения</translation>
+    </message>
+    <message>
+        <source>linuxcncrsh --connectpw; sent in clear text.</source>
+        <translation>linuxcncrsh --connectpw; передаётся открытым текстом.</translation>
+    </message>
+    <message>
+        <source>Enable password</source>
+        <translation>Пароль управления</translation>
+    </message>
+    <message>
+        <source>linuxcncrsh --enablepw: the right to command the machine; sent in clear text.</source>
+        <translation>linuxcncrsh --enablepw: право управлять станком; передаётся открытым текстом.</translation>
+    </message>
+    <message>
+        <source>Client name</source>
+        <translation>Имя клиента</translation>
+    </message>
+    <message>
+        <source>How TrueTurn introduces itself (one word).</source>
+        <translation>Как TrueTurn представляется (одно слово).</translation>
+    </message>
+    <message>
+        <source>Connect timeout</source>
+        <translation>Тайм-аут подключения</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>мс</translation>
+    </message>
+    <message>
+        <source>Reply timeout</source>
+        <translation>Тайм-аут ответа</translation>
+    </message>
+    <message>
+        <source>A reply, a mode change or an MDI line; the connection is reset without it.</source>
+        <translation>Ответ, смена режима или строка MDI; без ответа соединение сбрасывается.</translation>
+    </message>
+    <message>
+        <source>Joints to be homed</source>
+        <translation>Осей для реферирования</translation>
+    </message>
+    <message>
+        <source>A lathe: 2 (X and Z).</source>
+        <translation>Токарный станок: 2 (X и Z).</translation>
+    </message>
+    <message>
+        <source>How the correction reaches the cut</source>
+        <translation>Как коррекция попадает в резание</translation>
+    </message>
+    <message>
+        <source>Profile: the control-point corrections as numbered parameters</source>
+        <translation>Профиль: коррекции контрольных точек как нумерованные параметры</translation>
+    </message>
+    <message>
+        <source>Wear: one diameter correction as the tool&apos;s X wear</source>
+        <translation>Износ: одна коррекция диаметра как износ инструмента по X</translation>
+    </message>
+    <message>
+        <source>First parameter</source>
+        <translation>Первый параметр</translation>
+    </message>
+    <message>
+        <source>#500 .. #504 hold the corrections, #505 the part number they are for.</source>
+        <translation>#500 .. #504 хранят коррекции, #505 — номер детали, для которой они записаны.</translation>
+    </message>
+    <message>
+        <source>Tool</source>
+        <translation>Инструмент</translation>
+    </message>
+    <message>
+        <source>Wear entry (tool number)</source>
+        <translation>Запись износа (номер инструмента)</translation>
+    </message>
+    <message>
+        <source>Its X wear is set by G10 L1; the part program applies it with G43.2 H&lt;entry&gt;.</source>
+        <translation>Её износ по X задаётся G10 L1; управляющая программа применяет его командой G43.2 H&lt;запись&gt;.</translation>
+    </message>
+    <message>
+        <source>X words of the part program</source>
+        <translation>Слова X управляющей программы</translation>
+    </message>
+    <message>
+        <source>Diameters (G7)</source>
+        <translation>Диаметры (G7)</translation>
+    </message>
+    <message>
+        <source>Radii (G8)</source>
+        <translation>Радиусы (G8)</translation>
+    </message>
+    <message>
+        <source>Units of the part program</source>
+        <translation>Единицы управляющей программы</translation>
+    </message>
+    <message>
+        <source>Millimetres (G21)</source>
+        <translation>Миллиметры (G21)</translation>
+    </message>
+    <message>
+        <source>Inches (G20)</source>
+        <translation>Дюймы (G20)</translation>
+    </message>
+    <message>
+        <source>Largest step</source>
+        <translation>Наибольший шаг</translation>
+    </message>
+    <message>
+        <source>Largest change of a correction from part to part (radial); larger is never written.</source>
+        <translation>Наибольшее изменение коррекции от детали к детали (на радиус); большее никогда не записывается.</translation>
+    </message>
+    <message>
+        <source>Largest total</source>
+        <translation>Наибольшая коррекция</translation>
+    </message>
+    <message>
+        <source>Largest correction (radial); larger is never written.</source>
+        <translation>Наибольшая коррекция (на радиус); большая никогда не записывается.</translation>
+    </message>
+    <message>
+        <source>Part program on the LinuxCNC computer</source>
+        <translation>Управляющая программа на компьютере LinuxCNC</translation>
+    </message>
+    <message>
+        <source>Empty: the operator runs the parts; TrueTurn writes between them.</source>
+        <translation>Пусто: детали запускает оператор; TrueTurn записывает коррекции между ними.</translation>
+    </message>
+    <message>
+        <source>TrueTurn presses cycle start</source>
+        <translation>TrueTurn нажимает «Пуск цикла»</translation>
+    </message>
+    <message>
+        <source>Otherwise the operator presses it after TrueTurn has written the corrections.</source>
+        <translation>Иначе её нажимает оператор после того, как TrueTurn записал коррекции.</translation>
+    </message>
+    <message>
+        <source>LinuxCNC at %1:%2</source>
+        <translation>LinuxCNC на %1:%2</translation>
+    </message>
+    <message>
+        <source>LinuxCNC remote shell (TCP)</source>
+        <translation>Удалённая оболочка LinuxCNC (TCP)</translation>
+    </message>
+</context>
+<context>
     <name>Modbus</name>
     <message>
         <source>connecting to %1</source>

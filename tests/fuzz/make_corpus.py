@@ -145,4 +145,21 @@ write("preset_sections", "systematic_group2", b"\x06" + preset_file("paper-2012-
 write("preset_sections", "systematic_huge", b"\x06" + b'{"systematic_model": {"part_length_mm": 325, '
       b'"coefficients": [1e300, 0, 0]}}')
 
+# --- linuxcnc_reply (first byte: where the stream is cut in two chunks) ----------------------------
+# Recorded from linuxcncrsh of the Debian 12 package (scripts/start-test-linuxcnc.sh), line ends as sent.
+for name, text in {
+    "handshake": b"\x05HELLO ACK EMCNETSVR 1.1\r\nset echo off\r\nSET VERBOSE ACK\n\rSET ENABLE ACK\n\r",
+    "status": b"\x11ESTOP OFF\r\nMACHINE ON\r\nMODE MDI\r\nPROGRAM_STATUS IDLE\r\nJOINT_HOMED YES YES NO NO NO NO\r\n",
+    "position": b"\x20ABS_ACT_POS 0.531496 0.000000 -0.293701 0.000000 0.000000 0.000000\r\n",
+    "units": b"\x00USER_LINEAR_UNITS INCH\r\nPROGRAM_UNITS MM\r\n",
+    "naks": b"\x03SET MDI NAK\n\rGET NONSENSE NAK\r\n\r\nHELLO NAK\r\n",
+    "error": b"\x07ERROR Can't issue MDI command when not homed\r\nOPERATOR_DISPLAY OK\r\n",
+    "debug": b"\x09OPERATOR_DISPLAY TRUETURN1 0.012300 -0.004000\r\n",
+    "cut_off": b"\x30ABS_ACT_POS 0.531496 0.000000 -0.29",
+    "binary": b"\x02ESTOP O\x01N\r\n",
+    "out_of_step": b"\x01SET (DEBUG,Q3 NAK\n\r",
+    "overlong": b"\x01OPERATOR_DISPLAY " + b"9" * 100 + b"\r\n",
+}.items():
+    write("linuxcnc_reply", name, text)
+
 print("corpora written under", os.path.join(HERE, "corpus"))

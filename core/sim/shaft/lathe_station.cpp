@@ -80,6 +80,13 @@ void LatheStation::forgetPart(std::int64_t partNumber) {
         }
 }
 
+void LatheStation::acceptMachinedPart(TurnedPart part) {
+    m_machined.push_back(part);
+    while (m_machined.size() > m_keep)
+        m_machined.pop_front();
+    m_queue.push_back({std::move(part), m_clock.nowS(), 0});
+}
+
 void LatheStation::restoreMachinedPart(const PartCorrection& applied) {
     TurnedPart part = m_process.machine(applied);
     m_queue.push_back({std::move(part), m_clock.nowS(), 0});

@@ -66,6 +66,9 @@ public:
     /// A part machined before an interruption (with the corrections it really got) is back on the rack,
     /// waiting to be measured: it is re-created from the deterministic process.
     void restoreMachinedPart(const PartCorrection& applied);
+    /// A part machined elsewhere (on a real CNC, its true profile from the path the CNC executed) arrives at the
+    /// station now: it is kept with the machined parts and measured like the station's own.
+    void acceptMachinedPart(TurnedPart part);
 
     /// The most recent corrections the CNC received, oldest first (at most `keep`, see setKeptParts).
     const std::deque<PartCorrection>& sentCorrections() const { return m_sent; }

@@ -50,14 +50,14 @@ TEST(PluginFolder, IsRelativeToTheExecutable) {
 
 TEST(DeviceManager, LoadsThePluginModulesAndListsTheSimulatorFirst) {
     DeviceManager manager;
-    EXPECT_EQ(manager.loadPlugins(kBuildPlugins), 4) << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
+    EXPECT_EQ(manager.loadPlugins(kBuildPlugins), 5) << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
     EXPECT_EQ(manager.loadPlugins(kBuildPlugins), 0);  // loading twice is harmless
     QStringList ids;
     for (DevicePlugin* p : manager.plugins())
         ids << p->pluginId();
     EXPECT_EQ(ids,
               (QStringList{QStringLiteral("simulator"), QStringLiteral("cnc-gcode"), QStringLiteral("gauge-serial"),
-                           QStringLiteral("modbus"), QStringLiteral("probe-mandrel")}));
+                           QStringLiteral("linuxcnc"), QStringLiteral("modbus"), QStringLiteral("probe-mandrel")}));
     EXPECT_FALSE(manager.plugin(QStringLiteral("gauge-serial"))->settingsSchema(DeviceKind::Gauge).isEmpty());
     DeviceManager none;
     EXPECT_EQ(none.loadPlugins(QStringLiteral("/nonexistent/plugins")), 0);
