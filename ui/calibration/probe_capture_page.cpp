@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "ui/calibration/chart_ranges.h"
-#include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/probe_wizard_context.h"
 #include "ui/calibration/procedure_words.h"
 #include "ui/plot/chart.h"
 

@@ -15,6 +15,7 @@
 #include "devices/api/device_manager.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/device_kp_drive.h"
+#include "ui/calibration/kp_wizard.h"
 #include "ui/calibration/probe_wizard.h"
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "ui/calibration/kp_wizard.h"
+#include "ui/calibration/kp_session.h"
 #include "ui/calibration/probe_calibration_session.h"
 #include "ui/page.h"
 
