@@ -35,6 +35,24 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
       m_table(new QTableWidget(0, 3, this)),
       m_chart(new Chart(this)),
       m_message(wrappedLabel(this)) {
+    setUpControls();
+    buildLayout();
+    m_timer->setInterval(100);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) step();
+    });
+    connect(m_measure, &QPushButton::clicked, this, [this] {
+        if (measuring())
+            abortMeasurement();
+        else
+            startMeasurement();
+    });
+    connect(m_repeat, &QPushButton::clicked, this, &KpLoadsPage::repeatMeasurement);
+    connect(m_addTyped, &QPushButton::clicked, this, &KpLoadsPage::addTypedPoint);
+    connect(m_remove, &QPushButton::clicked, this, &KpLoadsPage::removePoint);
+}
+
+void KpLoadsPage::setUpControls() {
     m_live->setObjectName(QStringLiteral("liveDifference"));
     m_live->setStyleSheet(QStringLiteral("font-size: 16pt; font-weight: bold;"));
     m_load->setObjectName(QStringLiteral("loadSpin"));
@@ -62,6 +80,9 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     m_table->verticalHeader()->setVisible(false);
     m_chart->setMinimumSize(340, 300);
     m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // ΔI rises with the load
+}
+
+void KpLoadsPage::buildLayout() {
     auto* entry = new QGridLayout;
     entry->addWidget(m_loadLabel, 0, 0);
     entry->addWidget(m_load, 0, 1);
@@ -74,19 +95,6 @@ KpLoadsPage::KpLoadsPage(KpWizardContext& context, QWidget* parent)
     left->addLayout(entry);
     left->addWidget(m_progress);
     layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
-    m_timer->setInterval(100);
-    connect(m_timer, &QTimer::timeout, this, [this] {
-        if (isShown()) step();
-    });
-    connect(m_measure, &QPushButton::clicked, this, [this] {
-        if (measuring())
-            abortMeasurement();
-        else
-            startMeasurement();
-    });
-    connect(m_repeat, &QPushButton::clicked, this, &KpLoadsPage::repeatMeasurement);
-    connect(m_addTyped, &QPushButton::clicked, this, &KpLoadsPage::addTypedPoint);
-    connect(m_remove, &QPushButton::clicked, this, &KpLoadsPage::removePoint);
 }
 
 void KpLoadsPage::initializePage() {

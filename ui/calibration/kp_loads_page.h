@@ -45,6 +45,10 @@ public:
     QString message() const;
 
 private:
+    /// Object names, ranges and sizes of the entry boxes, the points table and the chart.
+    void setUpControls();
+    /// The live ΔI, the load and typed entry rows and the progress above the points and the chart.
+    void buildLayout();
     void handleEvents();
     void refresh();
     void refreshState();

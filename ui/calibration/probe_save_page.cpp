@@ -108,6 +108,31 @@ bool ProbeSavePage::save() {
         showResult(tr("Not saved: no operator name (Settings)."), true);
         return false;
     }
+    storage::ProbeTableRecord r = tableRecord(who);
+    try {
+        attachImage(r);
+        m_ctx.session->saved = m_ctx.store->saveTable(r);
+    } catch (const std::exception& e) {
+        showResult(tr("Not saved: %1").arg(QString::fromStdString(e.what())), true);
+        return false;
+    }
+    const storage::ProbeTableRecord& s = *m_ctx.session->saved;
+    m_saved->setText(tr("Saved as version %1 of %2 by %3 at %4.")
+                         .arg(s.version)
+                         .arg(s.probe, s.createdBy,
+                              QDateTime::fromString(s.createdAt, Qt::ISODateWithMs)
+                                  .toLocalTime()
+                                  .toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    showResult(p && p->canUpload() ? tr("Now upload it to the mandrel.") : QString(), false);
+    m_save->setEnabled(false);
+    m_upload->setEnabled(p && p->canUpload());
+    emit completeChanged();
+    return true;
+}
+
+storage::ProbeTableRecord ProbeSavePage::tableRecord(const QString& who) const {
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
     const core::Linearisation& lin = *proc.fitOutcome().linearisation;
     DeviceCalibrationProbe* p = m_ctx.probe();
     storage::ProbeTableRecord r;
@@ -126,34 +151,22 @@ bool ProbeSavePage::save() {
     for (const core::ProbePoint& point : proc.points())
         if (!point.saturated) used.push_back({point.referenceUm, point.adcCode, 0});
     r.pointsCsv = QString::fromStdString(core::calibrationCsv(used));
-    try {
-        core::TableImageInfo info;
-        info.version = static_cast<std::uint16_t>(m_ctx.store->nextTableVersion(r.probe, r.plane));
-        info.createdUnixS = QDateTime::currentSecsSinceEpoch();
-        info.plane = static_cast<std::uint8_t>(r.plane);
-        info.degree = static_cast<std::uint8_t>(lin.fit.degree);
-        const std::vector<std::uint8_t> image =
-            core::encodeTableImage(lin.table, info, p ? p->imageFormat() : core::kTableImageFormat);
-        r.image = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
-        r.imageCrc = core::tableImageCrc(image);
-        r.uploadCrc = core::tableUploadCrc(image);
-        m_ctx.session->saved = m_ctx.store->saveTable(r);
-    } catch (const std::exception& e) {
-        showResult(tr("Not saved: %1").arg(QString::fromStdString(e.what())), true);
-        return false;
-    }
-    const storage::ProbeTableRecord& s = *m_ctx.session->saved;
-    m_saved->setText(tr("Saved as version %1 of %2 by %3 at %4.")
-                         .arg(s.version)
-                         .arg(s.probe, s.createdBy,
-                              QDateTime::fromString(s.createdAt, Qt::ISODateWithMs)
-                                  .toLocalTime()
-                                  .toString(QStringLiteral("yyyy-MM-dd HH:mm"))));
-    showResult(p && p->canUpload() ? tr("Now upload it to the mandrel.") : QString(), false);
-    m_save->setEnabled(false);
-    m_upload->setEnabled(p && p->canUpload());
-    emit completeChanged();
-    return true;
+    return r;
+}
+
+void ProbeSavePage::attachImage(storage::ProbeTableRecord& r) const {
+    const core::Linearisation& lin = *m_ctx.procedure().fitOutcome().linearisation;
+    DeviceCalibrationProbe* p = m_ctx.probe();
+    core::TableImageInfo info;
+    info.version = static_cast<std::uint16_t>(m_ctx.store->nextTableVersion(r.probe, r.plane));
+    info.createdUnixS = QDateTime::currentSecsSinceEpoch();
+    info.plane = static_cast<std::uint8_t>(r.plane);
+    info.degree = static_cast<std::uint8_t>(lin.fit.degree);
+    const std::vector<std::uint8_t> image =
+        core::encodeTableImage(lin.table, info, p ? p->imageFormat() : core::kTableImageFormat);
+    r.image = QByteArray(reinterpret_cast<const char*>(image.data()), static_cast<qsizetype>(image.size()));
+    r.imageCrc = core::tableImageCrc(image);
+    r.uploadCrc = core::tableUploadCrc(image);
 }
 
 bool ProbeSavePage::upload() {

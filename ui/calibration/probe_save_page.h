@@ -7,6 +7,10 @@ class QProgressBar;
 class QPushButton;
 class QTimer;
 
+namespace tt::storage {
+struct ProbeTableRecord;
+}
+
 namespace tt::ui {
 
 struct ProbeWizardContext;
@@ -32,6 +36,10 @@ public:
 
 private:
     void showResult(const QString& text, bool problem);
+    /// The table's record by `who`: the probe, plane, fit and the points it was fitted to (no image yet).
+    storage::ProbeTableRecord tableRecord(const QString& who) const;
+    /// Adds the table image of the next version (in the probe's format) and its CRCs to `r`.
+    void attachImage(storage::ProbeTableRecord& r) const;
     ProbeWizardContext& m_ctx;
     QLabel* m_intro;
     QPushButton* m_save;

@@ -72,6 +72,9 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// The overview: the store and device notices, the probe tables and the k_p calibrations with
+    /// the buttons that start the wizards.
+    void buildOverview();
     void watchDevices();
     void adoptDevices();
     void closeWizards();
