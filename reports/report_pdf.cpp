@@ -24,8 +24,18 @@ constexpr int kDpi = 96;
 constexpr int kChartFontPt = 8;
 constexpr int kSmallMultiplesPerRow = 3;
 
+std::unique_ptr<plot::Chart> printChart() {
+    auto chart = std::make_unique<plot::Chart>();
+    chart->setAttribute(Qt::WA_DontShowOnScreen);
+    chart->setMinimumHeight(0);
+    chart->setFontPointSize(kChartFontPt);
+    return chart;
+}
+
+}  // namespace
+
 /// Text and charts laid out top to bottom on the current page.
-class Sheet {
+class ReportPdf::Sheet {
 public:
     Sheet(QPdfWriter& writer, QCPPainter& painter) : m_writer(writer), m_painter(painter) {
         m_width = painter.viewport().width();
@@ -107,16 +117,6 @@ private:
     int m_y = 0;
 };
 
-std::unique_ptr<plot::Chart> printChart() {
-    auto chart = std::make_unique<plot::Chart>();
-    chart->setAttribute(Qt::WA_DontShowOnScreen);
-    chart->setMinimumHeight(0);
-    chart->setFontPointSize(kChartFontPt);
-    return chart;
-}
-
-}  // namespace
-
 ReportHeader reportHeaderOf(const std::vector<storage::MeasurementRow>& rows,
                             const std::vector<core::RunSummary>& runs) {
     ReportHeader h;
@@ -153,6 +153,13 @@ ReportHeader reportHeaderOf(const std::vector<storage::MeasurementRow>& rows,
     return h;
 }
 
+/// The charts of a point's page, made once and drawn again for every point.
+struct ReportPdf::PointCharts {
+    std::unique_ptr<plot::Chart> location = printChart();
+    std::unique_ptr<plot::Chart> spread = printChart();
+    std::unique_ptr<plot::Chart> histogram = printChart();
+};
+
 void ReportPdf::write(const QString& path, const ReportHeader& header, const std::vector<runtime::PointReport>& points,
                       const runtime::ReportProgress& progress) {
     if (points.empty()) throw std::invalid_argument("a PDF report needs at least one control point");
@@ -172,91 +179,96 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
         painter.setMode(QCPPainter::pmNoCaching);
         Sheet sheet(writer, painter);
         if (progress && !progress(0, pages)) throw runtime::ReportCancelled();
-
-        // Title page: title block, summary of every point, small multiples, signature line.
-        sheet.text(tr("Quality report"), 18, true);
-        sheet.text(tr("Machine: %1").arg(header.machines), 11);
-        sheet.text(tr("Job: %1").arg(header.jobs), 11);
-        sheet.text(tr("Runs: %1").arg(header.runs), 11);
-        sheet.text(tr("Parts stored: %1").arg(header.dateRange), 11);
-        sheet.text(tr("%n parts, %1", nullptr, static_cast<int>(header.parts))
-                       .arg(ReportCharts::chartDescription(points.front())),
-                   11);
-        sheet.text(
-            tr("Printed %1 UTC").arg(QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM-dd HH:mm"))), 9);
-        sheet.rule();
-        sheet.text(tr("Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap"), 9, true);
-        for (const runtime::PointReport& p : points) {
-            const auto& c = p.analysis.capability;
-            sheet.text(QStringLiteral("P%1 · %2 · %3 · %4 · %5 · %6 · %7 · %8 / %9 / %10")
-                           .arg(p.pointIndex + 1)
-                           .arg(p.zMm, 0, 'f', 1)
-                           .arg(p.analysis.count)
-                           .arg(p.analysis.meanMm, 0, 'f', 4)
-                           .arg(c ? QString::number(c->indices.cpk, 'f', 2) : QStringLiteral("-"))
-                           .arg(c ? QString::number(c->indices.ppk, 'f', 2) : QStringLiteral("-"))
-                           .arg(p.analysis.violations.size())
-                           .arg(p.verdicts.good)
-                           .arg(p.verdicts.rework)
-                           .arg(p.verdicts.scrap),
-                       9, false, 8);
-        }
-        sheet.skip(6);
-        const int signatureHeight = 70;
-        const int cell = sheet.width() / kSmallMultiplesPerRow;
-        const int rows = static_cast<int>((points.size() + kSmallMultiplesPerRow - 1) / kSmallMultiplesPerRow);
-        const int cellHeight = std::clamp((sheet.remaining() - signatureHeight) / std::max(rows, 1), 60, 230);
-        auto multiple = printChart();
-        const int top = sheet.y();
-        for (std::size_t i = 0; i < points.size(); ++i) {
-            const int row = static_cast<int>(i) / kSmallMultiplesPerRow,
-                      column = static_cast<int>(i) % kSmallMultiplesPerRow;
-            if (top + (row + 1) * cellHeight > sheet.y() + sheet.remaining() - signatureHeight) break;
-            ReportCharts::showLocation(*multiple, points[i], true);
-            multiple->setFontPointSize(7);
-            sheet.chart(*multiple, QRect(column * cell, top + row * cellHeight, cell - 4, cellHeight - 4));
-        }
-        sheet.skip(std::min(rows * cellHeight, sheet.remaining() - signatureHeight) + 10);
-        sheet.text(tr("Checked by: ______________________   Date: ____________   Signature: ______________________"),
-                   10);
-
-        // One page per control point.
-        auto location = printChart(), spread = printChart(), histogram = printChart();
+        writeTitlePage(sheet, header, points);
+        PointCharts charts;
         for (std::size_t i = 0; i < points.size(); ++i) {
             if (progress && !progress(i + 1, pages)) throw runtime::ReportCancelled();
-            const runtime::PointReport& p = points[i];
-            sheet.newPage();
-            sheet.text(ReportCharts::pointTitle(p), 14, true);
-            sheet.text(QStringLiteral("%1 · %2 · %3")
-                           .arg(ReportCharts::chartDescription(p), ReportCharts::verdictText(p.verdicts),
-                                tr("machine %1, job %2").arg(header.machines, header.jobs)),
-                       9);
-            ReportCharts::showLocation(*location, p);
-            location->setLegendBelow(5);  // the page is wide enough for one legend row
-            location->setFontPointSize(kChartFontPt);
-            sheet.chart(*location, sheet.take(290));
-            ReportCharts::showSpread(*spread, p);
-            spread->setFontPointSize(kChartFontPt);
-            sheet.chart(*spread, sheet.take(170));
-            const QRect bottom = sheet.take(300);
-            const int histogramWidth = bottom.width() * 58 / 100;
-            ReportCharts::showHistogram(*histogram, p);
-            histogram->setLegendBelow(2);
-            histogram->setFontPointSize(kChartFontPt);
-            sheet.chart(*histogram, QRect(bottom.left(), bottom.top(), histogramWidth, bottom.height()));
-            sheet.table(ReportCharts::capabilityLines(p), histogramWidth + 12, bottom.top() + 10,
-                        bottom.width() - histogramWidth - 12);
-            sheet.text(
-                tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size())),
-                10, true);
-            for (const QString& line : ReportCharts::violationLines(p, 6))
-                sheet.text(line, 9, false, 8);
+            writePointPage(sheet, header, points[i], charts);
         }
         painter.end();
     }
     if (progress && !progress(pages, pages)) throw runtime::ReportCancelled();
     if (!file.commit())
         throw std::runtime_error("writing '" + path.toStdString() + "' failed: " + file.errorString().toStdString());
+}
+
+void ReportPdf::writeTitlePage(Sheet& sheet, const ReportHeader& header, const std::vector<runtime::PointReport>& points) {
+    sheet.text(tr("Quality report"), 18, true);
+    sheet.text(tr("Machine: %1").arg(header.machines), 11);
+    sheet.text(tr("Job: %1").arg(header.jobs), 11);
+    sheet.text(tr("Runs: %1").arg(header.runs), 11);
+    sheet.text(tr("Parts stored: %1").arg(header.dateRange), 11);
+    sheet.text(
+        tr("%n parts, %1", nullptr, static_cast<int>(header.parts)).arg(ReportCharts::chartDescription(points.front())),
+        11);
+    sheet.text(tr("Printed %1 UTC").arg(QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyy-MM-dd HH:mm"))),
+               9);
+    sheet.rule();
+    sheet.text(tr("Point · x, mm · n · mean, mm · Cpk · Ppk · rule violations · good / rework / scrap"), 9, true);
+    for (const runtime::PointReport& p : points) {
+        const auto& c = p.analysis.capability;
+        sheet.text(QStringLiteral("P%1 · %2 · %3 · %4 · %5 · %6 · %7 · %8 / %9 / %10")
+                       .arg(p.pointIndex + 1)
+                       .arg(p.zMm, 0, 'f', 1)
+                       .arg(p.analysis.count)
+                       .arg(p.analysis.meanMm, 0, 'f', 4)
+                       .arg(c ? QString::number(c->indices.cpk, 'f', 2) : QStringLiteral("-"))
+                       .arg(c ? QString::number(c->indices.ppk, 'f', 2) : QStringLiteral("-"))
+                       .arg(p.analysis.violations.size())
+                       .arg(p.verdicts.good)
+                       .arg(p.verdicts.rework)
+                       .arg(p.verdicts.scrap),
+                   9, false, 8);
+    }
+    sheet.skip(6);
+    writeSmallMultiples(sheet, points);
+}
+
+void ReportPdf::writeSmallMultiples(Sheet& sheet, const std::vector<runtime::PointReport>& points) {
+    const int signatureHeight = 70;
+    const int cell = sheet.width() / kSmallMultiplesPerRow;
+    const int rows = static_cast<int>((points.size() + kSmallMultiplesPerRow - 1) / kSmallMultiplesPerRow);
+    const int cellHeight = std::clamp((sheet.remaining() - signatureHeight) / std::max(rows, 1), 60, 230);
+    auto multiple = printChart();
+    const int top = sheet.y();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const int row = static_cast<int>(i) / kSmallMultiplesPerRow,
+                  column = static_cast<int>(i) % kSmallMultiplesPerRow;
+        if (top + (row + 1) * cellHeight > sheet.y() + sheet.remaining() - signatureHeight) break;
+        ReportCharts::showLocation(*multiple, points[i], true);
+        multiple->setFontPointSize(7);
+        sheet.chart(*multiple, QRect(column * cell, top + row * cellHeight, cell - 4, cellHeight - 4));
+    }
+    sheet.skip(std::min(rows * cellHeight, sheet.remaining() - signatureHeight) + 10);
+    sheet.text(tr("Checked by: ______________________   Date: ____________   Signature: ______________________"), 10);
+}
+
+void ReportPdf::writePointPage(Sheet& sheet, const ReportHeader& header, const runtime::PointReport& p, PointCharts& charts) {
+    sheet.newPage();
+    sheet.text(ReportCharts::pointTitle(p), 14, true);
+    sheet.text(QStringLiteral("%1 · %2 · %3")
+                   .arg(ReportCharts::chartDescription(p), ReportCharts::verdictText(p.verdicts),
+                        tr("machine %1, job %2").arg(header.machines, header.jobs)),
+               9);
+    ReportCharts::showLocation(*charts.location, p);
+    charts.location->setLegendBelow(5);  // the page is wide enough for one legend row
+    charts.location->setFontPointSize(kChartFontPt);
+    sheet.chart(*charts.location, sheet.take(290));
+    ReportCharts::showSpread(*charts.spread, p);
+    charts.spread->setFontPointSize(kChartFontPt);
+    sheet.chart(*charts.spread, sheet.take(170));
+    const QRect bottom = sheet.take(300);
+    const int histogramWidth = bottom.width() * 58 / 100;
+    ReportCharts::showHistogram(*charts.histogram, p);
+    charts.histogram->setLegendBelow(2);
+    charts.histogram->setFontPointSize(kChartFontPt);
+    sheet.chart(*charts.histogram, QRect(bottom.left(), bottom.top(), histogramWidth, bottom.height()));
+    sheet.table(ReportCharts::capabilityLines(p), histogramWidth + 12, bottom.top() + 10,
+                bottom.width() - histogramWidth - 12);
+    sheet.text(tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size())),
+               10, true);
+    for (const QString& line : ReportCharts::violationLines(p, 6))
+        sheet.text(line, 9, false, 8);
 }
 
 }  // namespace tt::reports

@@ -35,18 +35,27 @@ NumericKeypad::NumericKeypad(QAbstractSpinBox* field, QWidget* parent)
       m_problem(new QLabel(this)) {
     setObjectName(QStringLiteral("numericKeypad"));
     setWindowTitle(tr("Enter a number"));
-    if (auto* d = qobject_cast<QDoubleSpinBox*>(field)) {
+    takeField(field);
+    buildLayout();
+    updateDisplay();
+}
+
+void NumericKeypad::takeField(const QAbstractSpinBox* field) {
+    if (auto* d = qobject_cast<const QDoubleSpinBox*>(field)) {
         m_minimum = d->minimum();
         m_maximum = d->maximum();
         m_decimals = d->decimals();
         m_unit = d->suffix().trimmed();
         m_typed = shown(d->value(), m_decimals);
-    } else if (auto* i = qobject_cast<QSpinBox*>(field)) {
+    } else if (auto* i = qobject_cast<const QSpinBox*>(field)) {
         m_minimum = i->minimum();
         m_maximum = i->maximum();
         m_unit = i->suffix().trimmed();
         m_typed = QString::number(i->value());
     }
+}
+
+void NumericKeypad::buildLayout() {
     m_display->setObjectName(QStringLiteral("keypadDisplay"));
     m_display->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_display->setMinimumHeight(64);
@@ -59,21 +68,7 @@ NumericKeypad::NumericKeypad(QAbstractSpinBox* field, QWidget* parent)
     m_problem->setStyleSheet(QStringLiteral("QLabel { color: #c62828; font-weight: bold; }"));
     m_problem->setWordWrap(true);
 
-    auto* keys = new QGridLayout;
-    keys->setSpacing(8);
-    const QString digits = QStringLiteral("789456123");
-    for (int n = 0; n < digits.size(); ++n)
-        keys->addWidget(key(digits.mid(n, 1), QStringLiteral("key") + digits.mid(n, 1), digits.mid(n, 1)), n / 3,
-                        n % 3);
-    QPushButton* sign = key(QStringLiteral("±"), QStringLiteral("keySign"), QStringLiteral("+/-"));
-    sign->setEnabled(m_minimum < 0.0);
-    keys->addWidget(sign, 3, 0);
-    keys->addWidget(key(QStringLiteral("0"), QStringLiteral("key0"), QStringLiteral("0")), 3, 1);
-    QPushButton* point = key(QLocale().decimalPoint(), QStringLiteral("keyPoint"), QStringLiteral("."));
-    point->setEnabled(m_decimals > 0);
-    keys->addWidget(point, 3, 2);
-    keys->addWidget(key(QStringLiteral("⌫"), QStringLiteral("keyBack"), QStringLiteral("back")), 0, 3);
-    keys->addWidget(key(tr("Clear"), QStringLiteral("keyClear"), QStringLiteral("clear")), 1, 3);
+    QGridLayout* keys = buildKeys();
     auto* ok = new QPushButton(tr("OK"), this);
     ok->setObjectName(QStringLiteral("keyOk"));
     ok->setProperty("role", QStringLiteral("primary"));
@@ -93,7 +88,25 @@ NumericKeypad::NumericKeypad(QAbstractSpinBox* field, QWidget* parent)
     layout->addLayout(keys);
     layout->addWidget(m_problem);
     layout->addWidget(cancel, 0, Qt::AlignRight);
-    updateDisplay();
+}
+
+QGridLayout* NumericKeypad::buildKeys() {
+    auto* keys = new QGridLayout;
+    keys->setSpacing(8);
+    const QString digits = QStringLiteral("789456123");
+    for (int n = 0; n < digits.size(); ++n)
+        keys->addWidget(key(digits.mid(n, 1), QStringLiteral("key") + digits.mid(n, 1), digits.mid(n, 1)), n / 3,
+                        n % 3);
+    QPushButton* sign = key(QStringLiteral("±"), QStringLiteral("keySign"), QStringLiteral("+/-"));
+    sign->setEnabled(m_minimum < 0.0);
+    keys->addWidget(sign, 3, 0);
+    keys->addWidget(key(QStringLiteral("0"), QStringLiteral("key0"), QStringLiteral("0")), 3, 1);
+    QPushButton* point = key(QLocale().decimalPoint(), QStringLiteral("keyPoint"), QStringLiteral("."));
+    point->setEnabled(m_decimals > 0);
+    keys->addWidget(point, 3, 2);
+    keys->addWidget(key(QStringLiteral("⌫"), QStringLiteral("keyBack"), QStringLiteral("back")), 0, 3);
+    keys->addWidget(key(tr("Clear"), QStringLiteral("keyClear"), QStringLiteral("clear")), 1, 3);
+    return keys;
 }
 
 QPushButton* NumericKeypad::key(const QString& text, const QString& name, const QString& code) {

@@ -6,6 +6,7 @@
 #include <optional>
 
 class QAbstractSpinBox;
+class QGridLayout;
 class QLabel;
 class QPushButton;
 
@@ -33,6 +34,12 @@ public:
     void accept() override;
 
 private:
+    /// Takes the limits, decimals, unit and value of the number field.
+    void takeField(const QAbstractSpinBox* field);
+    /// The display, the limits, the keys, OK and Cancel.
+    void buildLayout();
+    /// The grid of digit, sign, decimal point, backspace and clear keys (OK goes into its last column).
+    QGridLayout* buildKeys();
     QPushButton* key(const QString& text, const QString& name, const QString& code);
     void updateDisplay();
 

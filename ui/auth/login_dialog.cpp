@@ -26,6 +26,12 @@ LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, bool a
       m_secret(new QLineEdit(this)),
       m_message(new QLabel(this)) {
     setWindowTitle(tr("Log in"));
+    buildLayout();
+    connect(m_secret, &QLineEdit::returnPressed, this, &LoginDialog::attempt);
+    m_secret->setFocus();
+}
+
+void LoginDialog::buildLayout() {
     auto* title = new QLabel(tr("Log in to TrueTurn"), this);
     title->setObjectName(QStringLiteral("SectionTitle"));
     m_user->setObjectName(QStringLiteral("loginUser"));
@@ -46,6 +52,22 @@ LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, bool a
     form->addRow(tr("User"), m_user);
     form->addRow(tr("Password or PIN"), m_secret);
 
+    auto* left = new QVBoxLayout;
+    left->setSpacing(16);
+    left->addWidget(title);
+    left->addLayout(form);
+    left->addWidget(m_message);
+    left->addStretch(1);
+    left->addLayout(buildButtons());
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(32, 24, 32, 24);
+    layout->setSpacing(32);
+    layout->addLayout(left, 1);
+    layout->addWidget(buildKeypad());
+    setMinimumWidth(900);
+}
+
+QHBoxLayout* LoginDialog::buildButtons() {
     auto* logIn = new QPushButton(tr("Log in"), this);
     logIn->setObjectName(QStringLiteral("loginButton"));
     logIn->setProperty("role", QStringLiteral("primary"));
@@ -60,24 +82,8 @@ LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, bool a
         connect(quit, &QPushButton::clicked, this, &QDialog::reject);
     }
     buttons->addWidget(logIn);
-
-    auto* left = new QVBoxLayout;
-    left->setSpacing(16);
-    left->addWidget(title);
-    left->addLayout(form);
-    left->addWidget(m_message);
-    left->addStretch(1);
-    left->addLayout(buttons);
-    auto* layout = new QHBoxLayout(this);
-    layout->setContentsMargins(32, 24, 32, 24);
-    layout->setSpacing(32);
-    layout->addLayout(left, 1);
-    layout->addWidget(buildKeypad());
-    setMinimumWidth(900);
-
     connect(logIn, &QPushButton::clicked, this, &LoginDialog::attempt);
-    connect(m_secret, &QLineEdit::returnPressed, this, &LoginDialog::attempt);
-    m_secret->setFocus();
+    return buttons;
 }
 
 QWidget* LoginDialog::buildKeypad() {

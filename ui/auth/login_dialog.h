@@ -5,6 +5,7 @@
 #include <functional>
 
 class QComboBox;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 
@@ -37,6 +38,10 @@ public:
     void reject() override;
 
 private:
+    /// The title, the user and secret fields, the message, the buttons and the keypad.
+    void buildLayout();
+    /// Log in (the default button) and, at the start, Quit.
+    QHBoxLayout* buildButtons();
     QWidget* buildKeypad();
 
     storage::UserStore& m_users;

@@ -35,6 +35,14 @@ UsersDialog::UsersDialog(storage::UserStore& users, QWidget* parent)
       m_idle(new QSpinBox(this)),
       m_status(new QLabel(this)) {
     setWindowTitle(tr("Users"));
+    setUpTable();
+    setUpFields();
+    buildLayout();
+    resize(1200, 700);
+    reload();
+}
+
+void UsersDialog::setUpTable() {
     m_table->setObjectName(QStringLiteral("usersTable"));
     m_table->setColumnCount(4);
     m_table->setHorizontalHeaderLabels({tr("Name"), tr("Role"), tr("Logs in with"), tr("State")});
@@ -43,6 +51,9 @@ UsersDialog::UsersDialog(storage::UserStore& users, QWidget* parent)
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
+}
+
+void UsersDialog::setUpFields() {
     m_name->setObjectName(QStringLiteral("userName"));
     m_name->setMaxLength(storage::kMaxUserNameChars);
     for (Role r : core::auth::kAllRoles)
@@ -61,12 +72,51 @@ UsersDialog::UsersDialog(storage::UserStore& users, QWidget* parent)
     m_idle->setSuffix(tr(" min"));
     m_status->setObjectName(QStringLiteral("usersStatus"));
     m_status->setWordWrap(true);
+}
 
+void UsersDialog::buildLayout() {
+    auto* top = new QHBoxLayout;
+    top->addWidget(m_table, 1);
+    top->addLayout(buildSide());
+    auto* close = new QPushButton(tr("Close"), this);
+    connect(close, &QPushButton::clicked, this, &QDialog::accept);
+    auto* bottom = new QHBoxLayout;
+    bottom->addWidget(m_status, 1);
+    bottom->addWidget(close);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(24, 18, 24, 18);
+    layout->addLayout(top, 1);
+    layout->addLayout(bottom);
+}
+
+QVBoxLayout* UsersDialog::buildSide() {
     auto* form = new QFormLayout;
     form->addRow(tr("Name"), m_name);
     form->addRow(tr("Role"), m_role);
     form->addRow(tr("Logs in with"), m_kind);
     form->addRow(tr("PIN or password"), m_secret);
+    QGridLayout* actions = buildUserActions();
+    auto* policyTitle = new QLabel(tr("Log-in rules"), this);
+    policyTitle->setObjectName(QStringLiteral("SectionTitle"));
+    auto* policy = new QFormLayout;
+    policy->addRow(tr("Lock out after"), m_failures);
+    policy->addRow(tr("Lock-out lasts"), m_lockMinutes);
+    policy->addRow(tr("Log out when idle for"), m_idle);
+    auto* applyPolicyButton = new QPushButton(tr("Apply the rules"), this);
+    connect(applyPolicyButton, &QPushButton::clicked, this, &UsersDialog::applyPolicy);
+
+    auto* side = new QVBoxLayout;
+    side->addLayout(form);
+    side->addLayout(actions);
+    side->addSpacing(12);
+    side->addWidget(policyTitle);
+    side->addLayout(policy);
+    side->addWidget(applyPolicyButton);
+    side->addStretch(1);
+    return side;
+}
+
+QGridLayout* UsersDialog::buildUserActions() {
     auto* actions = new QGridLayout;
     const std::pair<QString, bool (UsersDialog::*)()> buttons[] = {{tr("Add user"), &UsersDialog::addUser},
                                                                    {tr("Set role"), &UsersDialog::setRole},
@@ -80,37 +130,7 @@ UsersDialog::UsersDialog(storage::UserStore& users, QWidget* parent)
         connect(b, &QPushButton::clicked, this, [this, slot = slot] { (this->*slot)(); });
         ++i;
     }
-    auto* policyTitle = new QLabel(tr("Log-in rules"), this);
-    policyTitle->setObjectName(QStringLiteral("SectionTitle"));
-    auto* policy = new QFormLayout;
-    policy->addRow(tr("Lock out after"), m_failures);
-    policy->addRow(tr("Lock-out lasts"), m_lockMinutes);
-    policy->addRow(tr("Log out when idle for"), m_idle);
-    auto* applyPolicyButton = new QPushButton(tr("Apply the rules"), this);
-    connect(applyPolicyButton, &QPushButton::clicked, this, &UsersDialog::applyPolicy);
-
-    auto* right = new QVBoxLayout;
-    right->addLayout(form);
-    right->addLayout(actions);
-    right->addSpacing(12);
-    right->addWidget(policyTitle);
-    right->addLayout(policy);
-    right->addWidget(applyPolicyButton);
-    right->addStretch(1);
-    auto* top = new QHBoxLayout;
-    top->addWidget(m_table, 1);
-    top->addLayout(right);
-    auto* close = new QPushButton(tr("Close"), this);
-    connect(close, &QPushButton::clicked, this, &QDialog::accept);
-    auto* bottom = new QHBoxLayout;
-    bottom->addWidget(m_status, 1);
-    bottom->addWidget(close);
-    auto* layout = new QVBoxLayout(this);
-    layout->setContentsMargins(24, 18, 24, 18);
-    layout->addLayout(top, 1);
-    layout->addLayout(bottom);
-    resize(1200, 700);
-    reload();
+    return actions;
 }
 
 QString UsersDialog::statusText() const {

@@ -4,10 +4,12 @@
 #include <functional>
 
 class QComboBox;
+class QGridLayout;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
 class QTableWidget;
+class QVBoxLayout;
 
 namespace tt::storage {
 class UserStore;
@@ -45,6 +47,16 @@ public:
     QString statusText() const;
 
 private:
+    /// The users: name, role, how they log in, locked or not.
+    void setUpTable();
+    /// Limits, choices and units of the user's fields and the log-in rules.
+    void setUpFields();
+    /// The table with the side column beside it, the status and Close below.
+    void buildLayout();
+    /// The user's fields, the actions on the selected user and the log-in rules.
+    QVBoxLayout* buildSide();
+    /// Add, Set role, Set PIN or password, Unlock, Remove in two columns.
+    QGridLayout* buildUserActions();
     QString selectedName() const;
     bool run(const QString& done, const std::function<void()>& work);
 

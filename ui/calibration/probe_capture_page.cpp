@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "ui/calibration/chart_ranges.h"
-#include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/probe_wizard_context.h"
 #include "ui/calibration/procedure_words.h"
 #include "plot/chart.h"
 
@@ -42,6 +42,26 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
       m_table(new QTableWidget(0, 3, this)),
       m_chart(new plot::Chart(this)),
       m_message(wrappedLabel(this)) {
+    setUpControls();
+    buildLayout();
+
+    m_timer->setInterval(kPollMs);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        if (isShown()) pollProbe();
+    });
+    connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
+    connect(m_capture, &QPushButton::clicked, this, [this] {
+        if (capturing())
+            abortCapture();
+        else
+            capturePoint();
+    });
+    connect(m_repeat, &QPushButton::clicked, this, &ProbeCapturePage::repeatPoint);
+    connect(m_typed, &QPushButton::clicked, this, &ProbeCapturePage::addTypedPoint);
+    connect(m_remove, &QPushButton::clicked, this, &ProbeCapturePage::removePoint);
+}
+
+void ProbeCapturePage::setUpControls() {
     m_live->setObjectName(QStringLiteral("liveCode"));
     m_live->setStyleSheet(QStringLiteral("font-size: 18pt; font-weight: bold;"));
     m_jack->setObjectName(QStringLiteral("jackSpin"));
@@ -76,7 +96,9 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     m_table->setMinimumWidth(420);
     m_chart->setMinimumSize(340, 300);
     m_chart->setLegendCorner(Qt::AlignTop | Qt::AlignLeft);  // the curve rises to the top right
+}
 
+void ProbeCapturePage::buildLayout() {
     auto* entry = new QGridLayout;
     entry->addWidget(m_jackLabel, 0, 0);
     entry->addWidget(m_jack, 0, 1);
@@ -92,21 +114,6 @@ ProbeCapturePage::ProbeCapturePage(ProbeWizardContext& context, QWidget* parent)
     left->addLayout(entry);
     left->addWidget(m_progress);
     layOutCapturePage(this, left, m_table, {m_repeat, m_remove}, m_chart, m_message);
-
-    m_timer->setInterval(kPollMs);
-    connect(m_timer, &QTimer::timeout, this, [this] {
-        if (isShown()) pollProbe();
-    });
-    connect(m_setJack, &QPushButton::clicked, this, [this] { setJack(m_jack->value()); });
-    connect(m_capture, &QPushButton::clicked, this, [this] {
-        if (capturing())
-            abortCapture();
-        else
-            capturePoint();
-    });
-    connect(m_repeat, &QPushButton::clicked, this, &ProbeCapturePage::repeatPoint);
-    connect(m_typed, &QPushButton::clicked, this, &ProbeCapturePage::addTypedPoint);
-    connect(m_remove, &QPushButton::clicked, this, &ProbeCapturePage::removePoint);
 }
 
 void ProbeCapturePage::initializePage() {

@@ -61,6 +61,10 @@ public:
     static constexpr double kPollS = kPollMs / 1000.0;
 
 private:
+    /// Object names, ranges and sizes of the entry boxes, the progress bar, the points table and the chart.
+    void setUpControls();
+    /// The live code, the jack, reference and typed-code rows and the progress above the points and the chart.
+    void buildLayout();
     void handleEvents();
     void refreshPoints();
     void refreshState();

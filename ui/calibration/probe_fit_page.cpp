@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "ui/calibration/chart_ranges.h"
-#include "ui/calibration/probe_wizard.h"
+#include "ui/calibration/probe_wizard_context.h"
 #include "ui/calibration/procedure_words.h"
 #include "plot/chart.h"
 
@@ -82,10 +82,22 @@ bool ProbeFitPage::isComplete() const {
 void ProbeFitPage::showFit() {
     const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
     const core::ProbeFitOutcome& outcome = proc.fitOutcome();
-    const int adcBits = proc.config().adcBits;
     const int used = static_cast<int>(proc.points().size() - outcome.leftOut.size());
-    QString text;
     m_choice->setText(outcome.fit ? ProcedureWords::degreeChoice(*outcome.fit, used) + QLatin1Char('.') : QString());
+    m_explanation->setText(fitExplanation());
+    m_characteristic->clear();
+    m_residuals->clear();
+    if (outcome.fit) plotFit(*outcome.fit);
+    m_characteristic->refresh();
+    m_residuals->refresh();
+    emit completeChanged();
+}
+
+QString ProbeFitPage::fitExplanation() const {
+    const core::ProbeLinearisationProcedure& proc = m_ctx.procedure();
+    const core::ProbeFitOutcome& outcome = proc.fitOutcome();
+    const int adcBits = proc.config().adcBits;
+    QString text;
     if (outcome.fit) {
         const core::CharacteristicFit& fit = *outcome.fit;
         QStringList rows;
@@ -106,39 +118,33 @@ void ProbeFitPage::showFit() {
     else if (outcome.usable())
         text += tr("<p style='color:#1b5e20'><b>Monotonic over the whole ADC range; residual RMS %1 µm.</b></p>")
                     .arg(outcome.linearisation->fit.rmsResidualUm, 0, 'f', 2);
-    m_explanation->setText(text);
+    return text;
+}
 
-    m_characteristic->clear();
-    m_residuals->clear();
-    if (outcome.fit) {
-        const core::CharacteristicFit& fit = *outcome.fit;
-        std::vector<double> xs, ys;
-        for (const core::ProbePoint& p : proc.points()) {
-            if (p.saturated) continue;  // the residuals are of the points fitted
-            xs.push_back(p.referenceUm);
-            ys.push_back(p.adcCode);
-        }
-        m_characteristic->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
-                                    plot::Chart::Style::Points);
-        std::vector<double> cx, cy;
-        const double lo = fit.calibratedMinUm, hi = fit.calibratedMaxUm;
-        for (int i = 0; i <= 100; ++i) {
-            const double x = lo + (hi - lo) * i / 100.0;
-            cx.push_back(x);
-            cy.push_back(fit.codeAt(x));
-        }
-        m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(fit.degree), cx, cy,
-                                    QColor(0xc6, 0x28, 0x28), plot::Chart::Style::Line);
-        showAllWithMargin(*m_characteristic, xs, ys, false, 0.3);
-        m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, fit.residualsUm,
-                               QColor(0x2e, 0x7d, 0x32), plot::Chart::Style::Points);
-        m_residuals->setSeries(QStringLiteral("zero"), tr("zero"), {lo, hi}, {0.0, 0.0}, QColor(0x6b, 0x77, 0x85),
-                               plot::Chart::Style::Line);
-        showAllWithMargin(*m_residuals, xs, fit.residualsUm, true, 0.5);
+void ProbeFitPage::plotFit(const core::CharacteristicFit& fit) {
+    std::vector<double> xs, ys;
+    for (const core::ProbePoint& p : m_ctx.procedure().points()) {
+        if (p.saturated) continue;  // the residuals are of the points fitted
+        xs.push_back(p.referenceUm);
+        ys.push_back(p.adcCode);
     }
-    m_characteristic->refresh();
-    m_residuals->refresh();
-    emit completeChanged();
+    m_characteristic->setSeries(QStringLiteral("points"), tr("captured"), xs, ys, QColor(0x1f, 0x5f, 0xa8),
+                                plot::Chart::Style::Points);
+    std::vector<double> cx, cy;
+    const double lo = fit.calibratedMinUm, hi = fit.calibratedMaxUm;
+    for (int i = 0; i <= 100; ++i) {
+        const double x = lo + (hi - lo) * i / 100.0;
+        cx.push_back(x);
+        cy.push_back(fit.codeAt(x));
+    }
+    m_characteristic->setSeries(QStringLiteral("fit"), tr("fitted, degree %1").arg(fit.degree), cx, cy,
+                                QColor(0xc6, 0x28, 0x28), plot::Chart::Style::Line);
+    showAllWithMargin(*m_characteristic, xs, ys, false, 0.3);
+    m_residuals->setSeries(QStringLiteral("residuals"), tr("residual"), xs, fit.residualsUm, QColor(0x2e, 0x7d, 0x32),
+                           plot::Chart::Style::Points);
+    m_residuals->setSeries(QStringLiteral("zero"), tr("zero"), {lo, hi}, {0.0, 0.0}, QColor(0x6b, 0x77, 0x85),
+                           plot::Chart::Style::Line);
+    showAllWithMargin(*m_residuals, xs, fit.residualsUm, true, 0.5);
 }
 
 void ProbeFitPage::retranslate() {

@@ -5,6 +5,10 @@
 class QComboBox;
 class QLabel;
 
+namespace tt::core {
+struct CharacteristicFit;
+}
+
 namespace tt::plot {
 class Chart;
 }  // namespace tt::plot
@@ -34,6 +38,11 @@ public:
 
 private:
     void showFit();
+    /// The explanation: each degree's leave-one-out and in-sample errors, the points left out, the
+    /// refusal or the monotonicity found.
+    QString fitExplanation() const;
+    /// The captured points with the fitted characteristic, and the residuals about zero.
+    void plotFit(const core::CharacteristicFit& fit);
 
     ProbeWizardContext& m_ctx;
     QLabel* m_degreeLabel;

@@ -15,6 +15,7 @@
 #include "runtime/devices/device_hub.h"
 #include "ui/calibration/device_calibration_probe.h"
 #include "ui/calibration/device_kp_drive.h"
+#include "ui/calibration/kp_wizard.h"
 #include "ui/calibration/probe_wizard.h"
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
@@ -62,6 +63,22 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
       m_kpList(listView(m_overview, "kpCalibrations", 6)),
       m_storeProblem(new QLabel(m_overview)),
       m_deviceNotice(new QLabel(m_overview)) {
+    buildOverview();
+    m_stack->addWidget(m_overview);
+    auto* outer = new QVBoxLayout(this);
+    outer->setContentsMargins(24, 16, 24, 16);
+    outer->addWidget(m_stack);
+
+    connect(m_probeStart, &QPushButton::clicked, this, &CalibrationPage::startProbeCalibration);
+    connect(m_probeStartOver, &QPushButton::clicked, this, &CalibrationPage::startOver);
+    connect(m_kpStart, &QPushButton::clicked, this, &CalibrationPage::startKpCalibration);
+    openStores();
+    watchDevices();
+    adoptDevices();
+    retranslate();
+}
+
+void CalibrationPage::buildOverview() {
     m_probeTitle->setObjectName(QStringLiteral("SectionTitle"));
     m_kpTitle->setObjectName(QStringLiteral("SectionTitle"));
     m_probeStart->setObjectName(QStringLiteral("startProbeWizard"));
@@ -99,19 +116,6 @@ CalibrationPage::CalibrationPage(AppContext& context, QWidget* parent)
     layout->addWidget(m_kpText);
     layout->addLayout(kpButtons);
     layout->addWidget(m_kpList, 2);
-
-    m_stack->addWidget(m_overview);
-    auto* outer = new QVBoxLayout(this);
-    outer->setContentsMargins(24, 16, 24, 16);
-    outer->addWidget(m_stack);
-
-    connect(m_probeStart, &QPushButton::clicked, this, &CalibrationPage::startProbeCalibration);
-    connect(m_probeStartOver, &QPushButton::clicked, this, &CalibrationPage::startOver);
-    connect(m_kpStart, &QPushButton::clicked, this, &CalibrationPage::startKpCalibration);
-    openStores();
-    watchDevices();
-    adoptDevices();
-    retranslate();
 }
 
 CalibrationPage::~CalibrationPage() {

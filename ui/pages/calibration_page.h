@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "ui/calibration/kp_wizard.h"
+#include "ui/calibration/kp_session.h"
 #include "ui/calibration/probe_calibration_session.h"
 #include "ui/page.h"
 
@@ -72,6 +72,9 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// The overview: the store and device notices, the probe tables and the k_p calibrations with
+    /// the buttons that start the wizards.
+    void buildOverview();
     void watchDevices();
     void adoptDevices();
     void closeWizards();

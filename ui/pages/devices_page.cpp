@@ -120,6 +120,20 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
     fillTypes();
     reloadList();
 
+    connectControls();
+    connectFaultSwitches();
+
+    retranslate();
+    if (m_list->count() > 0) m_list->setCurrentRow(0);
+    showSelection();
+}
+
+DevicesPage::~DevicesPage() {
+    m_testTimer.stop();
+    if (m_testTarget == runtime::kTrialDeviceId) m_hub->endTrial();
+}
+
+void DevicesPage::connectControls() {
     connect(m_hub, &runtime::DeviceHub::devicesChanged, this, &DevicesPage::reloadList);
     connect(m_hub, &runtime::DeviceHub::deviceChanged, this, [this] {
         updateListTones();
@@ -142,7 +156,9 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
     m_refresh.setInterval(500);  // counters change without notifications
     connect(&m_refresh, &QTimer::timeout, this, &DevicesPage::refreshStatus);
     m_refresh.start();
+}
 
+void DevicesPage::connectFaultSwitches() {
     auto bindFault = [this](QCheckBox* box, bool devices::FaultSwitches::*flag) {
         connect(box, &QCheckBox::toggled, this, [this, flag](bool on) {
             const runtime::DeviceView* d = selectedDevice();
@@ -157,15 +173,6 @@ DevicesPage::DevicesPage(AppContext& context, QWidget* parent)
     bindFault(m_faultStuck, &devices::FaultSwitches::stuck);
     bindFault(m_faultMalformed, &devices::FaultSwitches::malformed);
     bindFault(m_faultUnplugged, &devices::FaultSwitches::disconnected);
-
-    retranslate();
-    if (m_list->count() > 0) m_list->setCurrentRow(0);
-    showSelection();
-}
-
-DevicesPage::~DevicesPage() {
-    m_testTimer.stop();
-    if (m_testTarget == runtime::kTrialDeviceId) m_hub->endTrial();
 }
 
 QString DevicesPage::title() const {

@@ -59,6 +59,10 @@ private:
     };
 
     void buildUi();
+    /// The hub's news, the list, the buttons, the form and the timers, connected.
+    void connectControls();
+    /// The simulator's fault switches of the selected device, each to its flag.
+    void connectFaultSwitches();
     void fillTypes();
     void reloadList();
     void selectDevice(const QString& id);

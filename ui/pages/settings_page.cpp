@@ -38,6 +38,26 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
       m_logOut(new QPushButton(this)),
       m_users(new QPushButton(this)),
       m_audit(new QPushButton(this)) {
+    buildLayout();
+    fillLanguages();
+    const QString savedOperator = QSettings().value(kOperatorKey).toString();
+    m_operator->setText(savedOperator);
+    if (context.state && !context.session) context.state->setOperatorName(savedOperator);
+    m_database->setText(context.databasePath);
+
+    connect(m_language, &QComboBox::activated, this, &SettingsPage::onLanguageChosen);
+    connect(m_operator, &QLineEdit::editingFinished, this, &SettingsPage::onOperatorEdited);
+    connect(m_users, &QPushButton::clicked, this, &SettingsPage::openUsers);
+    connect(m_audit, &QPushButton::clicked, this, &SettingsPage::openAudit);
+    if (context.session) {
+        connect(m_logOut, &QPushButton::clicked, context.session, [s = context.session] { s->logOut(); });
+        connect(context.session, &UserSession::loggedIn, this, &SettingsPage::showSession);
+        connect(context.session, &UserSession::loggedOut, this, &SettingsPage::showSession);
+    }
+    retranslate();
+}
+
+void SettingsPage::buildLayout() {
     m_sectionGeneral->setObjectName(QStringLiteral("SectionTitle"));
     m_sectionUsers->setObjectName(QStringLiteral("SectionTitle"));
     m_user->setObjectName(QStringLiteral("sessionUser"));
@@ -70,23 +90,6 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
     userRow->addWidget(m_audit);
     layout->addLayout(userRow);
     layout->addStretch(1);
-
-    fillLanguages();
-    const QString savedOperator = QSettings().value(kOperatorKey).toString();
-    m_operator->setText(savedOperator);
-    if (context.state && !context.session) context.state->setOperatorName(savedOperator);
-    m_database->setText(context.databasePath);
-
-    connect(m_language, &QComboBox::activated, this, &SettingsPage::onLanguageChosen);
-    connect(m_operator, &QLineEdit::editingFinished, this, &SettingsPage::onOperatorEdited);
-    connect(m_users, &QPushButton::clicked, this, &SettingsPage::openUsers);
-    connect(m_audit, &QPushButton::clicked, this, &SettingsPage::openAudit);
-    if (context.session) {
-        connect(m_logOut, &QPushButton::clicked, context.session, [s = context.session] { s->logOut(); });
-        connect(context.session, &UserSession::loggedIn, this, &SettingsPage::showSession);
-        connect(context.session, &UserSession::loggedOut, this, &SettingsPage::showSession);
-    }
-    retranslate();
 }
 
 QString SettingsPage::title() const {

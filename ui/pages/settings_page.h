@@ -20,6 +20,9 @@ public:
     void retranslate() override;
 
 private:
+    /// The general section (language, operator, database) and the users section (who is logged in,
+    /// log out, users, audit trail).
+    void buildLayout();
     void fillLanguages();
     void onLanguageChosen(int index);
     void onOperatorEdited();

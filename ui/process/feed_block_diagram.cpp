@@ -94,26 +94,39 @@ void FeedBlockDiagram::paintEvent(QPaintEvent*) {
     textFont.setPointSizeF(10.0);
 
     p.setPen(QPen(kLine, 1.6));
-    for (int k = 0; k < kFeedBlockCount; ++k) {
-        const FeedBlock block = static_cast<FeedBlock>(k);
-        const QRectF r = blockRect(block);
-        const bool chosen = block == m_selected;
-        p.setPen(QPen(chosen ? kSelectedBorder : kLine, chosen ? 3.0 : 1.6));
-        p.setBrush(chosen ? kSelectedFill : kBlockFill);
-        p.drawRoundedRect(r, 6, 6);
-        p.setPen(kLine);
-        p.setFont(titleFont);
-        const QRectF titleRect(r.left() + 3, r.top() + 3, r.width() - 6, 22);
-        p.drawText(titleRect, Qt::AlignCenter,
-                   p.fontMetrics().elidedText(m_titles[k], Qt::ElideRight, static_cast<int>(titleRect.width())));
-        p.setFont(textFont);
-        p.drawText(QRectF(r.left() + 2, r.top() + 24, r.width() - 4, r.height() - 25), Qt::AlignHCenter | Qt::AlignTop,
-                   m_equations[k]);
-        if (k + 1 < kFeedBlockCount) {
-            p.setPen(QPen(kLine, 1.6));
-            arrow(p, QPointF(r.right(), r.center().y()), QPointF(r.right() + kGap - 1, r.center().y()));
-        }
+    for (int k = 0; k < kFeedBlockCount; ++k)
+        paintBlock(p, static_cast<FeedBlock>(k), titleFont, textFont);
+    paintFeedLoop(p, titleFont, textFont);
+    paintLoad(p, textFont);
+    if (hasFocus()) {
+        p.setPen(QPen(kSelectedBorder, 1, Qt::DotLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(rect().adjusted(0, 0, -1, -1));
     }
+}
+
+void FeedBlockDiagram::paintBlock(QPainter& p, FeedBlock block, const QFont& titleFont, const QFont& textFont) const {
+    const int k = static_cast<int>(block);
+    const QRectF r = blockRect(block);
+    const bool chosen = block == m_selected;
+    p.setPen(QPen(chosen ? kSelectedBorder : kLine, chosen ? 3.0 : 1.6));
+    p.setBrush(chosen ? kSelectedFill : kBlockFill);
+    p.drawRoundedRect(r, 6, 6);
+    p.setPen(kLine);
+    p.setFont(titleFont);
+    const QRectF titleRect(r.left() + 3, r.top() + 3, r.width() - 6, 22);
+    p.drawText(titleRect, Qt::AlignCenter,
+               p.fontMetrics().elidedText(m_titles[k], Qt::ElideRight, static_cast<int>(titleRect.width())));
+    p.setFont(textFont);
+    p.drawText(QRectF(r.left() + 2, r.top() + 24, r.width() - 4, r.height() - 25), Qt::AlignHCenter | Qt::AlignTop,
+               m_equations[k]);
+    if (k + 1 < kFeedBlockCount) {
+        p.setPen(QPen(kLine, 1.6));
+        arrow(p, QPointF(r.right(), r.center().y()), QPointF(r.right() + kGap - 1, r.center().y()));
+    }
+}
+
+void FeedBlockDiagram::paintFeedLoop(QPainter& p, const QFont& titleFont, const QFont& textFont) const {
     // The feed leaves the cylinder to the right and comes back under the chain to the sensor.
     const QRectF sensor = blockRect(FeedBlock::Sensor);
     const QRectF cylinder = blockRect(FeedBlock::Cylinder);
@@ -135,7 +148,12 @@ void FeedBlockDiagram::paintEvent(QPaintEvent*) {
     p.setFont(textFont);
     p.drawText(QRectF(sensor.center().x() + 8, bottom - 1, turn - sensor.center().x() - 16, kBottomBand - 6),
                Qt::AlignHCenter | Qt::AlignTop, m_loop);
+}
+
+void FeedBlockDiagram::paintLoad(QPainter& p, const QFont& textFont) const {
     // The load acts on the tool (read by the sensor) and on the cylinder (leakage).
+    const QRectF sensor = blockRect(FeedBlock::Sensor);
+    const QRectF cylinder = blockRect(FeedBlock::Cylinder);
     p.setPen(QPen(kLoad, 1.8));
     const double top = 4.0;
     p.drawLine(QPointF(sensor.center().x(), top + 8), QPointF(cylinder.center().x(), top + 8));
@@ -147,11 +165,6 @@ void FeedBlockDiagram::paintEvent(QPaintEvent*) {
                       p.fontMetrics().horizontalAdvance(m_load) + 12, 20),
                palette().window());
     p.drawText(loadRect, Qt::AlignCenter, m_load);
-    if (hasFocus()) {
-        p.setPen(QPen(kSelectedBorder, 1, Qt::DotLine));
-        p.setBrush(Qt::NoBrush);
-        p.drawRect(rect().adjusted(0, 0, -1, -1));
-    }
 }
 
 void FeedBlockDiagram::mousePressEvent(QMouseEvent* event) {

@@ -5,6 +5,8 @@
 #include <QWidget>
 #include <array>
 
+class QPainter;
+
 namespace tt::ui {
 
 /// The blocks of the hydraulic feed stabiliser's chain (paper 003), in signal order.
@@ -43,6 +45,13 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
+    /// Block `block`: its box (highlighted when chosen), title and equation, and the arrow to the next.
+    void paintBlock(QPainter& p, FeedBlock block, const QFont& titleFont, const QFont& textFont) const;
+    /// The feed leaving the cylinder and the loop back under the chain to the sensor.
+    void paintFeedLoop(QPainter& p, const QFont& titleFont, const QFont& textFont) const;
+    /// The load acting on the sensor (through the tool) and on the cylinder (leakage).
+    void paintLoad(QPainter& p, const QFont& textFont) const;
+
     std::array<QString, kFeedBlockCount> m_titles;
     std::array<QString, kFeedBlockCount> m_equations;
     QString m_load;

@@ -114,6 +114,20 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
     buildLayout();
     configureBoxes();
     m_save->setEnabled(false);  // until there is a program
+    connectControls();
+    setBusy(false, QString());
+    retranslate();
+    // The built-in set-up's experiments and model, so the page shows a schedule at once (worker thread).
+    if (m_preset) simulateExperiments();
+}
+
+FeedScheduleTool::~FeedScheduleTool() = default;
+
+QString FeedScheduleTool::title() const {
+    return tr("Feed schedule");
+}
+
+void FeedScheduleTool::connectControls() {
     connect(m_simulate, &QPushButton::clicked, this, &FeedScheduleTool::simulateExperiments);
     connect(m_fitCsv, &QPushButton::clicked, this, &FeedScheduleTool::fitCsvFile);
     connect(m_load, &QPushButton::clicked, this, &FeedScheduleTool::loadModelFile);
@@ -129,16 +143,6 @@ FeedScheduleTool::FeedScheduleTool(AppContext& context, QWidget* parent)
         connect(box, &QDoubleSpinBox::valueChanged, this, [this] { reschedule(); });
     connect(m_dialect, &QComboBox::currentIndexChanged, this, [this] { updateProgram(); });
     connect(m_switch, &QComboBox::currentIndexChanged, this, [this] { reschedule(); });
-    setBusy(false, QString());
-    retranslate();
-    // The built-in set-up's experiments and model, so the page shows a schedule at once (worker thread).
-    if (m_preset) simulateExperiments();
-}
-
-FeedScheduleTool::~FeedScheduleTool() = default;
-
-QString FeedScheduleTool::title() const {
-    return tr("Feed schedule");
 }
 
 void FeedScheduleTool::buildLayout() {

@@ -107,6 +107,8 @@ signals:
 private:
     void buildLayout();
     void configureBoxes();
+    /// The buttons, the model task, the level slider and the pass boxes to what they do.
+    void connectControls();
     void useModel(config::DeformationModelFile file);
     void taskDone(const FeedTaskResult& result, bool cancelled);
     void setBusy(bool busy, const QString& what);

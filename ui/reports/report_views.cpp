@@ -46,6 +46,14 @@ ReportViews::ReportViews(QWidget* parent)
       m_profile(new plot::Chart(this)),
       m_multiplesHost(new QWidget(this)),
       m_multiplesGrid(new QGridLayout(m_multiplesHost)) {
+    setUpWidgets();
+    buildLayout();
+    connect(m_point, &QComboBox::activated, this, [this](int index) { showPoint(index); });
+    connect(m_part, &QSpinBox::valueChanged, this, &ReportViews::showPart);
+    retranslate();
+}
+
+void ReportViews::setUpWidgets() {
     m_tabs->setObjectName(QStringLiteral("reportTabs"));
     m_point->setObjectName(QStringLiteral("reportPoint"));
     m_summary->setObjectName(QStringLiteral("reportPointSummary"));
@@ -64,6 +72,10 @@ ReportViews::ReportViews(QWidget* parent)
     m_location->setMinimumSize(400, 200);
     m_histogram->setMinimumSize(380, 220);
     m_profile->setMinimumSize(400, 220);
+    setUpCapabilityTable();
+}
+
+void ReportViews::setUpCapabilityTable() {
     m_capability->setColumnCount(3);
     m_capability->verticalHeader()->setVisible(false);
     m_capability->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -74,7 +86,9 @@ ReportViews::ReportViews(QWidget* parent)
     m_capability->setColumnWidth(2, 150);
     m_capability->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_capability->setMinimumWidth(480);
+}
 
+void ReportViews::buildLayout() {
     auto* pointBar = new QHBoxLayout;
     pointBar->addWidget(m_pointLabel);
     pointBar->addWidget(m_point);
@@ -115,10 +129,6 @@ ReportViews::ReportViews(QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addLayout(pointBar);
     layout->addWidget(m_tabs, 1);
-
-    connect(m_point, &QComboBox::activated, this, [this](int index) { showPoint(index); });
-    connect(m_part, &QSpinBox::valueChanged, this, &ReportViews::showPart);
-    retranslate();
 }
 
 void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points) {

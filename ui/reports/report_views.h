@@ -52,6 +52,12 @@ public:
     const std::vector<plot::Chart*>& multiples() const { return m_multiples; }
 
 private:
+    /// Object names, wrapping and the minimum sizes that keep the window within 1280 px.
+    void setUpWidgets();
+    /// The capability table: statistic, value, interval; only the first column stretches.
+    void setUpCapabilityTable();
+    /// The point bar above the tabs: control charts, distribution, part profile, small multiples.
+    void buildLayout();
     void fillPointChoice();
     void showMultiples();
 

@@ -181,23 +181,7 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
                                                core::toolFieldText(r.edited, fieldOf(column)));
     switch (role) {
         case Qt::DisplayRole:
-            if (column == Section)
-                return r.edited.section.shape == core::SectionShape::Round ? tr("round") : tr("rectangular");
-            if (column == ComputedStiffness) {
-                try {
-                    return QString::number(core::computedStiffnessNPerMm(r.edited), 'f', 0);
-                } catch (const std::invalid_argument&) {
-                    return QStringLiteral("—");
-                }
-            }
-            if (column == Slenderness) {
-                try {
-                    return QString::number(core::slendernessRatio(r.edited), 'f', 1);
-                } catch (const std::invalid_argument&) {
-                    return QStringLiteral("—");
-                }
-            }
-            return QString::fromStdString(core::toolFieldText(r.edited, fieldOf(column)));
+            return displayText(r, column);
         case Qt::EditRole:
             if (!editableField) return {};
             return QString::fromStdString(core::toolFieldText(r.edited, fieldOf(column)));
@@ -205,11 +189,7 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
             return isNumeric(column) ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
                                      : QVariant(Qt::AlignLeft | Qt::AlignVCenter);
         case Qt::BackgroundRole:
-            if (r.removed) return QBrush(kRemoved);
-            if (!editableField || !(flags(index) & Qt::ItemIsEditable)) return QBrush(kComputed);
-            if (!rowProblems(index.row()).isEmpty()) return QBrush(kProblem);
-            if (cellPending) return QBrush(kPending);
-            return {};
+            return background(index, cellPending);
         case Qt::FontRole:
             if (r.removed) {
                 QFont f;
@@ -217,14 +197,8 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
                 return f;
             }
             return {};
-        case Qt::ToolTipRole: {
-            QStringList lines = rowProblems(index.row());
-            if (r.removed) lines.prepend(tr("Removed when you apply the changes"));
-            if (cellPending && r.stored)
-                lines << tr("Applied value: %1")
-                             .arg(QString::fromStdString(core::toolFieldText(*r.stored, fieldOf(column))));
-            return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
-        }
+        case Qt::ToolTipRole:
+            return toolTip(index, cellPending);
         case PendingRole:
             return cellPending || (r.removed && r.stored.has_value());
         case ProblemRole:
@@ -232,6 +206,44 @@ QVariant ToolTableModel::data(const QModelIndex& index, int role) const {
         default:
             return {};
     }
+}
+
+QString ToolTableModel::displayText(const ToolRow& r, int column) const {
+    if (column == Section) return r.edited.section.shape == core::SectionShape::Round ? tr("round") : tr("rectangular");
+    if (column == ComputedStiffness) {
+        try {
+            return QString::number(core::computedStiffnessNPerMm(r.edited), 'f', 0);
+        } catch (const std::invalid_argument&) {
+            return QStringLiteral("—");
+        }
+    }
+    if (column == Slenderness) {
+        try {
+            return QString::number(core::slendernessRatio(r.edited), 'f', 1);
+        } catch (const std::invalid_argument&) {
+            return QStringLiteral("—");
+        }
+    }
+    return QString::fromStdString(core::toolFieldText(r.edited, fieldOf(column)));
+}
+
+QVariant ToolTableModel::background(const QModelIndex& index, bool cellPending) const {
+    const ToolRow& r = m_rows.at(static_cast<std::size_t>(index.row()));
+    if (r.removed) return QBrush(kRemoved);
+    if (index.column() >= ComputedStiffness || !(flags(index) & Qt::ItemIsEditable)) return QBrush(kComputed);
+    if (!rowProblems(index.row()).isEmpty()) return QBrush(kProblem);
+    if (cellPending) return QBrush(kPending);
+    return {};
+}
+
+QVariant ToolTableModel::toolTip(const QModelIndex& index, bool cellPending) const {
+    const ToolRow& r = m_rows.at(static_cast<std::size_t>(index.row()));
+    QStringList lines = rowProblems(index.row());
+    if (r.removed) lines.prepend(tr("Removed when you apply the changes"));
+    if (cellPending && r.stored)
+        lines << tr("Applied value: %1")
+                     .arg(QString::fromStdString(core::toolFieldText(*r.stored, fieldOf(index.column()))));
+    return lines.isEmpty() ? QVariant() : QVariant(lines.join(QLatin1Char('\n')));
 }
 
 double ToolTableModel::modulusOf(const std::string& material) const {

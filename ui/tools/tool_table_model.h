@@ -116,6 +116,13 @@ private:
     void dropLastRow();
     QString nextFreeId() const;
     double modulusOf(const std::string& material) const;
+    /// What a cell shows: the field's text, the section's shape in words, the computed stiffness and
+    /// slenderness ("—" when the tool's data do not allow them).
+    QString displayText(const ToolRow& r, int column) const;
+    /// A cell's colour: removed, computed or not editable, a problem in the row, an edit not applied.
+    QVariant background(const QModelIndex& index, bool cellPending) const;
+    /// The row's problems, removal and the value applied before an edit.
+    QVariant toolTip(const QModelIndex& index, bool cellPending) const;
 
     std::vector<ToolRow> m_rows;
     std::vector<core::Material> m_materials;

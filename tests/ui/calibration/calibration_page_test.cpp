@@ -34,9 +34,15 @@
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/calibration/device_calibration_probe.h"
+#include "ui/calibration/kp_fit_page.h"
+#include "ui/calibration/kp_loads_page.h"
+#include "ui/calibration/kp_save_page.h"
+#include "ui/calibration/kp_setup_page.h"
 #include "ui/calibration/kp_wizard.h"
+#include "ui/calibration/probe_accept_page.h"
 #include "ui/calibration/probe_capture_page.h"
 #include "ui/calibration/probe_fit_page.h"
+#include "ui/calibration/probe_save_page.h"
 #include "ui/calibration/probe_wizard.h"
 
 namespace tt::ui {
