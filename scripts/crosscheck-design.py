@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Reference values for the prediction variance of a least-squares fit and its sequential design
-(tests/core/feed_schedule/optimal_design_test.cpp), computed with statsmodels' OLS.
+(tests/core/model/optimal_design_test.cpp), computed with statsmodels' OLS.
 
   scripts/crosscheck-design.py
 

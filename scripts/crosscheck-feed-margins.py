@@ -10,7 +10,7 @@ scipy.signal (TransferFunction, freqresp) on a logarithmic grid of 0.1 .. 1e6 ra
 scipy.optimize.brentq, it computes the gain margin (1/|L| where the phase is -180 deg), the phase margin
 (180 deg + arg L where |L| = 1), their frequencies and the closed-loop poles (numpy.roots of den + num), and
 compares them with the JSON's `margins`: margins and frequencies within 1e-6 relative, poles within 1e-6.
-Also prints the preset's figures, the reference values of tests/core/hydraulic/feed_feedback_test.cpp.
+Also prints the preset's figures, the reference values of tests/core/sim/hydraulic/feed_feedback_test.cpp.
 Exits 1 when a figure differs by more than its tolerance.
 
 Debian 12: python3-numpy, python3-scipy (scripts/install-deps.sh --with-test-tools).

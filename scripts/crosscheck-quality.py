@@ -29,7 +29,7 @@ from scipy import integrate, special, stats
 from statsmodels.stats.diagnostic import normal_ad
 
 # Montgomery, Introduction to Statistical Quality Control (2009), Table 6.3 (piston rings, 25 x 5) and
-# Section 6.4 (mortgage-loan costs), as in tests/core/quality/published_data.h.
+# Section 6.4 (mortgage-loan costs), as in tests/core/support/published_data.h.
 PISTON_RINGS = [
     74.030, 74.002, 74.019, 73.992, 74.008, 73.995, 73.992, 74.001, 74.011, 74.004, 73.988, 74.024, 74.021,
     74.005, 74.002, 74.002, 73.996, 73.993, 74.015, 74.009, 73.992, 74.007, 74.015, 73.989, 74.014, 74.009,

@@ -24,7 +24,7 @@ test_packages=(
     file help2man lintian desktop-file-utils appstream
 )
 # Octave with its control package: tests/crosscheck/lqg_margins.m, run by hand, produced the fixed reference
-# margins of tests/core/lqg/margins_test.cpp. Not needed by ./test.sh (it would add minutes to CI).
+# margins of tests/core/control/margins_test.cpp. Not needed by ./test.sh (it would add minutes to CI).
 crosscheck_packages=(octave octave-control)
 for option in "$@"; do
     case "$option" in

@@ -57,7 +57,7 @@ struct PointReadings {
 std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFilter& filter);
 
 /// Per control point aggregates computed in SQL over the plausible readings (the Reports page's overview of all
-/// points; cross-checked against the same figures from the raw rows in tests/storage/history).
+/// points; cross-checked against the same figures from the raw rows in tests/core/storage/history).
 struct PointAggregate {
     int pointIndex = 0;  ///< 0-based
     std::int64_t count = 0;

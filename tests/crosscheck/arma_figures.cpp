@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/control/arma_identification.h"
-#include "tests/core/robust/arma_series.h"
+#include "tests/core/support/arma_series.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "../../storage/scratch_database.h"
+#include "tests/core/storage/scratch_database.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "tests/support/patient_wait.h"

@@ -94,7 +94,7 @@ TEST_F(FeedRegulatorCommand, RampAndStepSequenceStayInTheBand) {
 }
 
 // The margins of the designed loop; scipy.signal on the same transfer function gives gain margin 4.71435 at
-// 550.479 rad/s and phase margin 50.0001 deg at 182.392 rad/s (tests/core/hydraulic/feed_feedback_test.cpp).
+// 550.479 rad/s and phase margin 50.0001 deg at 182.392 rad/s (tests/core/sim/hydraulic/feed_feedback_test.cpp).
 TEST_F(FeedRegulatorCommand, ReportsTheMarginsInJsonAndText) {
     const QJsonObject j = feedStabilise({});
     const QJsonObject m = j.value(QStringLiteral("margins")).toObject();

@@ -84,7 +84,7 @@ TEST_F(FeedStabiliseCommand, GainLimitOfTheChipLoopIsConfirmedBySimulation) {
                        QStringLiteral("hydraulic-feed-chip"), QStringLiteral("--sweep"), QStringLiteral("gain"),
                        QStringLiteral("--sweep-values"), QStringLiteral("70,137.6,160")});
     const QJsonObject stability = j.value(QStringLiteral("stability")).toObject();
-    // u = 1 - b + b (K/K*)^2 u^1.2 folds at K/K* = 1.02219 (tests/core/hydraulic).
+    // u = 1 - b + b (K/K*)^2 u^1.2 folds at K/K* = 1.02219 (tests/core/sim/hydraulic).
     EXPECT_NEAR(number(stability, "gain_limit") / number(stability, "design_gain"), 1.02219, 1e-4);
     const QJsonObject check = stability.value(QStringLiteral("simulation_check")).toObject();
     EXPECT_TRUE(check.value(QStringLiteral("below_settles")).toBool());

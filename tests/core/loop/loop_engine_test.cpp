@@ -15,7 +15,7 @@
 #include "core/loop/manual_gauge.h"
 #include "core/sim/shaft/lathe_simulator.h"
 #include "core/sim/shaft/lathe_station.h"
-#include "loop_test_support.h"
+#include "support/loop_test_support.h"
 
 namespace tt::core {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "core/quality/capability.h"
 #include "core/quality/distributions.h"
-#include "published_data.h"
+#include "support/published_data.h"
 
 namespace tt::core {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/quality/ewma_cusum.h"
-#include "published_data.h"
+#include "support/published_data.h"
 
 namespace tt::core {
 namespace {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/quality/individual_charts.h"
-#include "published_data.h"
+#include "support/published_data.h"
 
 namespace tt::core {
 namespace {

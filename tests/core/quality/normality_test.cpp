@@ -8,7 +8,7 @@
 
 #include "core/quality/distributions.h"
 #include "core/quality/normality.h"
-#include "published_data.h"
+#include "support/published_data.h"
 
 namespace tt::core {
 namespace {

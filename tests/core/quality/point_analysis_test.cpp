@@ -4,7 +4,7 @@
 #include <vector>
 
 #include "core/quality/point_analysis.h"
-#include "published_data.h"
+#include "support/published_data.h"
 
 namespace tt::core {
 namespace {

@@ -10,7 +10,7 @@
 #include "devices/api/simulated_instrument.h"
 #include "devices/api/steady_clock.h"
 #include "devices/simulator/simulator_plugin.h"
-#include "tests/core/boring/heavy_scenario.h"
+#include "tests/core/support/heavy_scenario.h"
 
 namespace tt::devices {
 namespace {
