@@ -16,6 +16,7 @@
 #include "app/cli/command.h"
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
+#include "app/cli/run_history.h"
 #include "app/cli/run_interrupt.h"
 #include "app/cli/simulate_checks.h"
 #include "config/json_eigen.h"
@@ -376,6 +377,7 @@ int run(const QStringList& arguments) {
                                     "stored controller state: --resume N continues run N, --resume alone the newest."));
     parser.addOption(QStringLiteral("run"), QStringLiteral("With --resume: the run to continue (as --resume N)."),
                      QStringLiteral("N"));
+    addRunHistoryOptions(parser);
     addProgressOption(parser);
     parser.addOption(QStringLiteral("speed"),
                      QStringLiteral("Simulated time per wall time: 0 (the default: as fast as possible) or 1..1e9 "
@@ -392,17 +394,11 @@ int run(const QStringList& arguments) {
     const std::optional<std::int64_t> resumeRun = resumeRunId(parser);
     const double profileStep = parser.number(QStringLiteral("profile-step"), 1.0, 100.0);
 
-    std::unique_ptr<storage::Database> db;
-    std::unique_ptr<storage::SqlHistoryStore> history;
+    std::unique_ptr<RunHistory> history;  // a plant database (postgresql://) through the terminal's journal
     if (database) {
         if (resume && !isPostgresOption(*database) && !QFileInfo::exists(*database))
             throw UsageError("--db: '" + database->toStdString() + "' does not exist, so there is nothing to resume");
-        try {
-            db = std::make_unique<storage::Database>(databaseConfigFromOption(*database));
-            history = std::make_unique<storage::SqlHistoryStore>(*db);
-        } catch (const storage::StorageError& e) {
-            throw UsageError(std::string("--db: ") + e.what());
-        }
+        history = std::make_unique<RunHistory>(parser, *database, parser.isSet(QStringLiteral("progress")));
     }
 
     RunChoice choice;
@@ -416,7 +412,7 @@ int run(const QStringList& arguments) {
             throw UsageError(
                 "--resume: a resumed run keeps its own plant and controller; leave the plant, step, "
                 "integral and mismatch options out");
-        resumePoint = findResumePoint(*history, resumeRun);
+        resumePoint = findResumePoint(history->store(), resumeRun);
         const QJsonObject stored =
             QJsonDocument::fromJson(QByteArray::fromStdString(resumePoint->run.description.settingsJson)).object();
         choice = RunChoice::fromJson(stored);
@@ -461,7 +457,7 @@ int run(const QStringList& arguments) {
             options.profileZMm.push_back(std::min(length, i * profileStep));
         if (options.profileZMm.back() < length - 1e-9) options.profileZMm.push_back(length);
     }
-    options.history = history.get();
+    options.history = history ? &history->store() : nullptr;
     options.resume = resumePoint;
     options.description = {choice.preset.toStdString(),
                            core::controllerKindName(choice.controller),
@@ -479,10 +475,12 @@ int run(const QStringList& arguments) {
     const std::optional<core::LatheStudyResult> study = runStudyUntilStopped(
         scenario, choice.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
     if (!study) return kExitInterrupted;
+    if (history) history->finish();
     const core::LatheStudyResult& result = *study;
     if (parser.json()) {
         QJsonObject out = toJson(result, parser.isSet(QStringLiteral("profile")), database);
         addRobustJson(out, result, scenario);
+        if (history) history->addJson(out);
         printJson(out);
     } else {
         printText(choice.preset, result, choice.seed, parser.isSet(QStringLiteral("profile")));

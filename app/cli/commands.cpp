@@ -17,6 +17,8 @@ Command makeCornerCommand();
 Command makeReportCommand();
 Command makeGenerateHistoryCommand();
 Command makeIdentifyCommand();
+Command makePlantCommand();
+Command makeForwardCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -34,6 +36,8 @@ const std::vector<Command>& commands() {
         makeReportCommand(),
         makeGenerateHistoryCommand(),
         makeIdentifyCommand(),
+        makePlantCommand(),
+        makeForwardCommand(),
     };
     return all;
 }

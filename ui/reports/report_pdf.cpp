@@ -19,7 +19,8 @@ namespace tt::ui {
 
 namespace {
 
-/// Logical units of the PDF pages: 96 per inch, so the charts are laid out as on a screen.
+/// Logical units of the PDF pages: 96 per inch, so the charts are laid out as on a screen. A chart's series are
+/// decimated to its width in these units (a printed pixel column each, keeping its lowest and highest point).
 constexpr int kDpi = 96;
 constexpr int kChartFontPt = 8;
 constexpr int kSmallMultiplesPerRow = 3;
@@ -212,7 +213,7 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
             const int row = static_cast<int>(i) / kSmallMultiplesPerRow,
                       column = static_cast<int>(i) % kSmallMultiplesPerRow;
             if (top + (row + 1) * cellHeight > sheet.y() + sheet.remaining() - signatureHeight) break;
-            ReportCharts::showLocation(*multiple, points[i], true);
+            ReportCharts::showLocation(*multiple, points[i], true, cell);
             multiple->setFontPointSize(7);
             sheet.chart(*multiple, QRect(column * cell, top + row * cellHeight, cell - 4, cellHeight - 4));
         }
@@ -231,11 +232,11 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
                            .arg(ReportCharts::chartDescription(p), ReportCharts::verdictText(p.verdicts),
                                 tr("machine %1, job %2").arg(header.machines, header.jobs)),
                        9);
-            ReportCharts::showLocation(*location, p);
+            ReportCharts::showLocation(*location, p, false, sheet.width());
             location->setLegendBelow(5);  // the page is wide enough for one legend row
             location->setFontPointSize(kChartFontPt);
             sheet.chart(*location, sheet.take(290));
-            ReportCharts::showSpread(*spread, p);
+            ReportCharts::showSpread(*spread, p, sheet.width());
             spread->setFontPointSize(kChartFontPt);
             sheet.chart(*spread, sheet.take(170));
             const QRect bottom = sheet.take(300);
