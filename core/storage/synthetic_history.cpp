@@ -110,6 +110,7 @@ private:
     QString partTime(std::int64_t partIndex) const {
         return QDateTime::fromSecsSinceEpoch(m_spec.firstPartEpochS + partIndex * static_cast<qint64>(kPartCycleS),
                                              QTimeZone::utc())
+            .toUTC()  // "...Z" as every stored time (utcNowText), so times compare as text
             .toString(Qt::ISODateWithMs);
     }
 

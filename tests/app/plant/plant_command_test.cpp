@@ -67,7 +67,9 @@ TEST_P(PlantCommand, ShowsEveryMachineWithTheReportsFigures) {
         EXPECT_EQ(m["state"].toString(), k == 0 ? QStringLiteral("offline") : QStringLiteral("idle"));
         EXPECT_EQ(m["last_part_at"].toString(), QStringLiteral("2026-03-10T04:39:00.000Z"));
         EXPECT_EQ(m["backlog_parts"].isNull(), k != 0);
-        if (k == 0) EXPECT_EQ(m["backlog_parts"].toInteger(), 42);
+        if (k == 0) {
+            EXPECT_EQ(m["backlog_parts"].toInteger(), 42);
+        }
         EXPECT_EQ(m["open_alarms"].toInteger(), 0);
         // The day's parts, as the report counts them.
         const QJsonObject today = m["today"].toObject();
