@@ -50,6 +50,35 @@ QString interval(const std::optional<core::ConfidenceInterval>& ci) {
 
 }  // namespace
 
+ChartSeries decimateMinMax(const std::vector<double>& xs, const std::vector<double>& ys, int columns) {
+    if (columns < 1 || xs.size() <= 2 * static_cast<std::size_t>(columns) || xs.size() != ys.size()) return {xs, ys};
+    ChartSeries out;
+    out.xs.reserve(2 * static_cast<std::size_t>(columns));
+    out.ys.reserve(2 * static_cast<std::size_t>(columns));
+    const double first = xs.front();
+    const double width = (xs.back() - first) / columns;
+    const auto columnOf = [&](double x) {
+        return width > 0.0 ? std::min(static_cast<int>((x - first) / width), columns - 1) : 0;
+    };
+    const auto keep = [&](std::size_t k) {
+        out.xs.push_back(xs[k]);
+        out.ys.push_back(ys[k]);
+    };
+    std::size_t i = 0;
+    while (i < xs.size()) {
+        const int column = columnOf(xs[i]);
+        std::size_t end = i, low = i, high = i;
+        for (; end < xs.size() && columnOf(xs[end]) == column; ++end) {
+            if (ys[end] < ys[low]) low = end;
+            if (ys[end] > ys[high]) high = end;
+        }
+        keep(std::min(low, high));
+        if (low != high) keep(std::max(low, high));
+        i = end;
+    }
+    return out;
+}
+
 ReportHistogram histogramOf(const runtime::PointReport& point) {
     const std::vector<double>& values = point.series.valuesMm;
     ReportHistogram h;
@@ -92,7 +121,7 @@ PartProfile partProfileOf(const std::vector<storage::MeasurementRow>& rows, std:
     return p;
 }
 
-void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact) {
+void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact, int columns) {
     const core::ControlChart& c = point.analysis.chart;
     const bool individuals = c.limits.kind == core::ChartKind::IndividualsMovingRange;
     chart.clear();
@@ -101,8 +130,9 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
     const double last = xs.empty() ? 1.0 : xs.back();
     chart.setTitle(compact ? pointTitle(point) : (individuals ? tr("Individual diameters") : tr("Subgroup means")));
     chart.setAxisTitles(individuals ? tr("part in order") : tr("subgroup"), compact ? tr("mm") : tr("diameter, mm"));
-    chart.setSeries(QStringLiteral("values"), compact ? QString() : (individuals ? tr("diameter") : tr("mean")), xs,
-                    c.locationMm, kData, compact ? plot::Chart::Style::Line : plot::Chart::Style::LineAndPoints);
+    const ChartSeries values = decimateMinMax(xs, c.locationMm, columns);
+    chart.setSeries(QStringLiteral("values"), compact ? QString() : (individuals ? tr("diameter") : tr("mean")),
+                    values.xs, values.ys, kData, compact ? plot::Chart::Style::Line : plot::Chart::Style::LineAndPoints);
     horizontal(chart, QStringLiteral("centre"), compact ? QString() : tr("centre line"), 1.0, last,
                c.limits.location.centreMm, kCentre);
     horizontal(chart, QStringLiteral("ucl"), compact ? QString() : tr("control limits"), 1.0, last,
@@ -113,8 +143,9 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
         vx.push_back(xs[p]);
         vy.push_back(c.locationMm[p]);
     }
-    chart.setSeries(QStringLiteral("violations"), compact ? QString() : tr("rule violations"), vx, vy, kViolation,
-                    compact ? plot::Chart::Style::SmallPoints : plot::Chart::Style::Points);
+    const ChartSeries marked = decimateMinMax(vx, vy, columns);
+    chart.setSeries(QStringLiteral("violations"), compact ? QString() : tr("rule violations"), marked.xs, marked.ys,
+                    kViolation, compact ? plot::Chart::Style::SmallPoints : plot::Chart::Style::Points);
     const std::size_t baseline = c.limits.baselineFirstPoint + c.limits.baselinePointCount;
     if (!compact && baseline < c.locationMm.size()) {  // phase I | phase II
         const auto [low, high] = std::minmax_element(c.locationMm.begin(), c.locationMm.end());
@@ -126,7 +157,7 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
     chart.refresh();
 }
 
-void ReportCharts::showSpread(plot::Chart& chart, const runtime::PointReport& point) {
+void ReportCharts::showSpread(plot::Chart& chart, const runtime::PointReport& point, int columns) {
     const core::ControlChart& c = point.analysis.chart;
     chart.clear();
     const std::vector<double> xs = pointNumbers(c.spreadMm.size(), c.spreadFirstPoint);
@@ -147,7 +178,8 @@ void ReportCharts::showSpread(plot::Chart& chart, const runtime::PointReport& po
     chart.setTitle(title);
     chart.setAxisTitles(c.limits.kind == core::ChartKind::IndividualsMovingRange ? tr("part in order") : tr("subgroup"),
                         tr("spread, mm"));
-    chart.setSeries(QStringLiteral("values"), QString(), xs, c.spreadMm, kData, plot::Chart::Style::LineAndPoints);
+    const ChartSeries values = decimateMinMax(xs, c.spreadMm, columns);
+    chart.setSeries(QStringLiteral("values"), QString(), values.xs, values.ys, kData, plot::Chart::Style::LineAndPoints);
     horizontal(chart, QStringLiteral("centre"), QString(), first, last, c.limits.spread.centreMm, kCentre);
     horizontal(chart, QStringLiteral("ucl"), QString(), first, last, c.limits.spread.upperMm, kLimit);
     if (c.limits.spread.lowerMm > 0.0)
@@ -157,7 +189,8 @@ void ReportCharts::showSpread(plot::Chart& chart, const runtime::PointReport& po
         bx.push_back(static_cast<double>(p + 1));
         by.push_back(c.spreadMm[p - c.spreadFirstPoint]);
     }
-    chart.setSeries(QStringLiteral("beyond"), QString(), bx, by, kViolation, plot::Chart::Style::Points);
+    const ChartSeries beyond = decimateMinMax(bx, by, columns);
+    chart.setSeries(QStringLiteral("beyond"), QString(), beyond.xs, beyond.ys, kViolation, plot::Chart::Style::Points);
     chart.rescale(true);
     chart.refresh();
 }
@@ -247,7 +280,7 @@ QString ReportCharts::pointTitle(const runtime::PointReport& point) {
 
 QString ReportCharts::chartDescription(const runtime::PointReport& point) {
     const core::ChartLimits& l = point.analysis.chart.limits;
-    const QString kind = QString::fromStdString(runtime::chartKindName(l.kind));
+    const QString kind = QString::fromStdString(chartKindName(l.kind));
     if (l.kind == core::ChartKind::IndividualsMovingRange)
         return tr("%1 chart, limits from %n parts", nullptr, static_cast<int>(l.baselinePointCount)).arg(kind);
     return tr("%1 chart of subgroups of %2, limits from %n subgroups", nullptr, static_cast<int>(l.baselinePointCount))

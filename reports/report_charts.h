@@ -41,6 +41,17 @@ struct PartProfile {
     std::vector<double> nominalMm;
 };
 
+/// A series as drawn: its x and y.
+struct ChartSeries {
+    std::vector<double> xs;
+    std::vector<double> ys;
+};
+
+/// The points of a series drawn `columns` pixel columns wide: per column (an equal share of the x range) its lowest
+/// and its highest point, in their order, so every excursion stays visible (the envelope of the drawn line is the
+/// full series'); a series of at most 2 × `columns` points, or `columns` < 1, unchanged. `xs` ascending.
+ChartSeries decimateMinMax(const std::vector<double>& xs, const std::vector<double>& ys, int columns);
+
 /// The readings of part `partNumber` of run `runId` along the shaft, ascending x.
 PartProfile partProfileOf(const std::vector<storage::MeasurementRow>& rows, std::int64_t runId,
                           std::int64_t partNumber);
@@ -52,9 +63,10 @@ class ReportCharts {
 public:
     /// The location chart (X-bar or individuals) with centre line, control limits and the chart points of
     /// rule violations marked; `compact` for a small multiple (titled with the point, no legend).
-    static void showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact = false);
-    /// The spread chart (R, s or moving range) with its centre line and limits.
-    static void showSpread(plot::Chart& chart, const runtime::PointReport& point);
+    /// `columns` > 0: the series decimated to that many pixel columns (decimateMinMax; the printed report).
+    static void showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact = false, int columns = 0);
+    /// The spread chart (R, s or moving range) with its centre line and limits; `columns` as for showLocation.
+    static void showSpread(plot::Chart& chart, const runtime::PointReport& point, int columns = 0);
     /// The histogram with the specification limits, the nominal and the fitted normal density (mean and
     /// overall sigma) scaled to counts.
     static void showHistogram(plot::Chart& chart, const runtime::PointReport& point);

@@ -19,7 +19,8 @@ namespace tt::reports {
 
 namespace {
 
-/// Logical units of the PDF pages: 96 per inch, so the charts are laid out as on a screen.
+/// Logical units of the PDF pages: 96 per inch, so the charts are laid out as on a screen. A chart's series are
+/// decimated to its width in these units (a printed pixel column each, keeping its lowest and highest point).
 constexpr int kDpi = 96;
 constexpr int kChartFontPt = 8;
 constexpr int kSmallMultiplesPerRow = 3;
@@ -235,7 +236,7 @@ void ReportPdf::writeSmallMultiples(Sheet& sheet, const std::vector<runtime::Poi
         const int row = static_cast<int>(i) / kSmallMultiplesPerRow,
                   column = static_cast<int>(i) % kSmallMultiplesPerRow;
         if (top + (row + 1) * cellHeight > sheet.y() + sheet.remaining() - signatureHeight) break;
-        ReportCharts::showLocation(*multiple, points[i], true);
+        ReportCharts::showLocation(*multiple, points[i], true, cell);
         multiple->setFontPointSize(7);
         sheet.chart(*multiple, QRect(column * cell, top + row * cellHeight, cell - 4, cellHeight - 4));
     }
@@ -250,11 +251,11 @@ void ReportPdf::writePointPage(Sheet& sheet, const ReportHeader& header, const r
                    .arg(ReportCharts::chartDescription(p), ReportCharts::verdictText(p.verdicts),
                         tr("machine %1, job %2").arg(header.machines, header.jobs)),
                9);
-    ReportCharts::showLocation(*charts.location, p);
+    ReportCharts::showLocation(*charts.location, p, false, sheet.width());
     charts.location->setLegendBelow(5);  // the page is wide enough for one legend row
     charts.location->setFontPointSize(kChartFontPt);
     sheet.chart(*charts.location, sheet.take(290));
-    ReportCharts::showSpread(*charts.spread, p);
+    ReportCharts::showSpread(*charts.spread, p, sheet.width());
     charts.spread->setFontPointSize(kChartFontPt);
     sheet.chart(*charts.spread, sheet.take(170));
     const QRect bottom = sheet.take(300);

@@ -7,6 +7,9 @@
 #                 "trueturn_big_history") on that server is dropped and created again (default: $TRUETURN_PG_URL
 #                 when set, else no PostgreSQL)
 # --parts N       default 1000000; --trueturn BIN default build/app/trueturn
+# --plant         instead: the plant history of the plant overview's benchmark on PostgreSQL (--pg or
+#                 $TRUETURN_PG_URL): 20 machines side by side, 100,000 parts each (one a minute from 2026-01-01 00:00
+#                 UTC, the last at 2026-03-11 10:39 UTC), in the database "trueturn_plant_history"
 # Prints the exports the benchmark reads. Not part of CI: it takes minutes and about 1 GB per database.
 set -euo pipefail
 
@@ -15,8 +18,10 @@ trueturn=build/app/trueturn
 sqlite=/tmp/trueturn-big-history.sqlite
 pg="${TRUETURN_PG_URL:-}"
 pg_database=trueturn_big_history
+plant=""
 while [[ $# -gt 0 ]]; do
     case "$1" in
+        --plant) plant=1; shift ;;
         --parts) parts="$2"; shift 2 ;;
         --trueturn) trueturn="$2"; shift 2 ;;
         --sqlite) sqlite="$2"; shift 2 ;;
@@ -26,6 +31,20 @@ while [[ $# -gt 0 ]]; do
     esac
 done
 [[ -x "$trueturn" ]] || { echo "make-big-history: $trueturn not built (cmake --build build --target trueturn)" >&2; exit 1; }
+
+if [[ -n "$plant" ]]; then
+    [[ -n "$pg" ]] || { echo "make-big-history: --plant needs --pg URL or TRUETURN_PG_URL" >&2; exit 1; }
+    command -v psql >/dev/null || { echo "make-big-history: psql not found (package postgresql-client)" >&2; exit 1; }
+    big="${pg%/*}/trueturn_plant_history"
+    psql -q -v ON_ERROR_STOP=1 "$pg" -c "DROP DATABASE IF EXISTS trueturn_plant_history WITH (FORCE)" \
+        -c "CREATE DATABASE trueturn_plant_history" >&2
+    echo "PostgreSQL $big: 20 machines x 100000 parts" >&2
+    "$trueturn" generate-history --db "$big" --parts 2000000 --machines 20 --runs 20 --parallel \
+        --start 2026-01-01T00:00:00Z >&2
+    psql -q -v ON_ERROR_STOP=1 "$big" -c "VACUUM ANALYZE" >&2
+    echo "export TRUETURN_PLANT_HISTORY_PG=$big"
+    exit 0
+fi
 
 rm -f "$sqlite" "$sqlite-wal" "$sqlite-shm"
 echo "SQLite $sqlite: $parts parts" >&2

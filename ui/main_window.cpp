@@ -26,6 +26,7 @@
 #include "ui/kiosk.h"
 #include "ui/language.h"
 #include "ui/pages/page_factory.h"
+#include "ui/pages/reports_page.h"
 #include "ui/prompt.h"
 #include "ui/run/verdict_counter.h"
 
@@ -77,6 +78,7 @@ MainWindow::MainWindow(AppContext& context, QWidget* parent) : QMainWindow(paren
         Page* page = createPage(id, context, m_stack);
         m_pages.append(page);
         m_stack->addWidget(page);
+        connect(page, &Page::reportsRequested, this, &MainWindow::showReportsOf);
     }
     auto* central = new QWidget(this);
     auto* outer = new QHBoxLayout(central);
@@ -206,6 +208,11 @@ void MainWindow::showPage(PageId id) {
         qCInfo(lcUi).noquote() << "page" << pageKey(id);
         return;
     }
+}
+
+void MainWindow::showReportsOf(const QString& machine) {
+    showPage(PageId::Reports);
+    if (auto* reports = qobject_cast<ReportsPage*>(page(PageId::Reports))) reports->showMachine(machine);
 }
 
 PageId MainWindow::currentPage() const {

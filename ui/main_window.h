@@ -26,6 +26,8 @@ public:
     explicit MainWindow(AppContext& context, QWidget* parent = nullptr);
 
     void showPage(PageId id);
+    /// Shows the Reports page with the reports of `machine` (all its runs), analysed.
+    void showReportsOf(const QString& machine);
     PageId currentPage() const;
     Page* page(PageId id) const;
     const QList<Page*>& pages() const { return m_pages; }

@@ -20,6 +20,8 @@ QString pageKey(PageId id) {
             return QStringLiteral("controller");
         case PageId::Reports:
             return QStringLiteral("reports");
+        case PageId::Plant:
+            return QStringLiteral("plant");
         case PageId::Devices:
             return QStringLiteral("devices");
         case PageId::Settings:

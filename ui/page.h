@@ -9,12 +9,12 @@
 namespace tt::ui {
 
 /// The pages of the main window, in navigation order.
-enum class PageId { Run, Measurements, Tools, Calibration, Process, Controller, Reports, Devices, Settings };
+enum class PageId { Run, Measurements, Tools, Calibration, Process, Controller, Reports, Plant, Devices, Settings };
 
 /// All page ids in navigation order.
-inline constexpr PageId kAllPages[] = {PageId::Run,         PageId::Measurements, PageId::Tools,
-                                       PageId::Calibration, PageId::Process,      PageId::Controller,
-                                       PageId::Reports,     PageId::Devices,      PageId::Settings};
+inline constexpr PageId kAllPages[] = {PageId::Run,        PageId::Measurements, PageId::Tools,   PageId::Calibration,
+                                       PageId::Process,    PageId::Controller,   PageId::Reports, PageId::Plant,
+                                       PageId::Devices,    PageId::Settings};
 
 /// Stable, untranslated key of a page ("run", "tools"), used by --page and screenshot names.
 QString pageKey(PageId id);
@@ -38,6 +38,10 @@ public:
     /// What the user edited on this page and did not apply yet, in the user's words ("3 changed tools");
     /// empty when nothing is pending. The window asks before quitting with pending edits.
     virtual QString unappliedEdits() const { return {}; }
+
+signals:
+    /// Asks the window to show the Reports page with the reports of `machine` (the Plant page's click).
+    void reportsRequested(const QString& machine);
 
 protected:
     void changeEvent(QEvent* event) override;

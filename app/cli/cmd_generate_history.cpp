@@ -1,6 +1,8 @@
 // `trueturn generate-history`: writes a generated quality history (storage::writeSyntheticHistory) for the
 // benchmarks of the reports at shop scale and for demonstrations of the Reports page.
+#include <QDateTime>
 #include <QElapsedTimer>
+#include <QTimeZone>
 #include <QJsonObject>
 #include <QString>
 #include <stdexcept>
@@ -37,6 +39,13 @@ int run(const QStringList& arguments) {
                      QStringLiteral("n"), QStringLiteral("3"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Seed of the values, 0..2^53 (default 1)."),
                      QStringLiteral("n"), QStringLiteral("1"));
+    parser.addOption(QStringLiteral("start"),
+                     QStringLiteral("When the first part is stored, ISO 8601 (default 2026-01-01T00:00:00Z; a time "
+                                    "without zone is UTC)."),
+                     QStringLiteral("time"));
+    parser.addOption(QStringLiteral("parallel"),
+                     QStringLiteral("The machines work side by side: each machine's parts one minute apart from "
+                                    "--start (default: one part of the history per minute)."));
     parser.parse(arguments);
 
     storage::SyntheticHistorySpec spec;
@@ -45,6 +54,15 @@ int run(const QStringList& arguments) {
     spec.runs = static_cast<int>(parser.integer(QStringLiteral("runs"), 1, std::min<long long>(1000, spec.parts)));
     spec.machines = static_cast<int>(parser.integer(QStringLiteral("machines"), 1, 100));
     spec.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
+    spec.machinesInParallel = parser.isSet(QStringLiteral("parallel"));
+    if (parser.isSet(QStringLiteral("start"))) {
+        QDateTime start = QDateTime::fromString(parser.value(QStringLiteral("start")), Qt::ISODateWithMs);
+        if (!start.isValid())
+            throw UsageError("--start: '" + parser.value(QStringLiteral("start")).toStdString() +
+                             "' is not an ISO 8601 date and time");
+        if (start.timeSpec() == Qt::LocalTime) start.setTimeZone(QTimeZone::utc());
+        spec.firstPartEpochS = start.toSecsSinceEpoch();
+    }
     const QString dbValue = parser.required(QStringLiteral("db"));
 
     QElapsedTimer timer;

@@ -1,8 +1,8 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
 // values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
-// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' runtime::analyseReport
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from runtime/reports' analyseReport
 // (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
-// stored with each reading; the files from ui/reports too (the Reports page writes the same).
+// stored with each reading; the files from runtime/reports too (the Reports page writes the same).
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
@@ -10,6 +10,8 @@
 #include <QString>
 #include <QTimeZone>
 #include <algorithm>
+#include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -38,18 +40,32 @@ QJsonObject verdictsJson(const core::VerdictCounts& counts) {
             {QStringLiteral("scrap"), static_cast<qint64>(counts.scrap)}};
 }
 
-QJsonObject pointJson(const runtime::PointReport& point) {
-    const core::PointAnalysis& a = point.analysis;
-    const core::ChartLimits& l = a.chart.limits;
+/// How many rule violations a point lists by default (their counts by rule are always given).
+constexpr std::size_t kViolationsListed = 100;
+
+/// The violations of a point: the first `listed` of them with their parts, and the counts by rule.
+std::pair<QJsonArray, QJsonObject> violationsJson(const core::PointAnalysis& a, std::size_t listed) {
     QJsonArray violations;
+    std::map<std::string, qint64> byRule;
     for (const core::PointViolation& v : a.violations) {
+        const std::string rule = core::ruleCode(v.violation.set, v.violation.rule);
+        ++byRule[rule];
+        if (static_cast<std::size_t>(violations.size()) >= listed) continue;
         QJsonArray parts;
         for (const std::int64_t part : v.partNumbers)
             parts.append(static_cast<qint64>(part));
-        violations.append(QJsonObject{
-            {QStringLiteral("rule"), QString::fromStdString(core::ruleCode(v.violation.set, v.violation.rule))},
-            {QStringLiteral("parts"), parts}});
+        violations.append(QJsonObject{{QStringLiteral("rule"), QString::fromStdString(rule)}, {QStringLiteral("parts"), parts}});
     }
+    QJsonObject counts;
+    for (const auto& [rule, n] : byRule)
+        counts.insert(QString::fromStdString(rule), n);
+    return {violations, counts};
+}
+
+QJsonObject pointJson(const runtime::PointReport& point, std::size_t violationsListed) {
+    const core::PointAnalysis& a = point.analysis;
+    const core::ChartLimits& l = a.chart.limits;
+    const auto [violations, violationCounts] = violationsJson(a, violationsListed);
     const std::optional<core::CapabilityStudy>& c = a.capability;
     const auto index = [&](double core::CapabilityIndices::*field) {
         return c ? config::finiteOrNull(c->indices.*field) : QJsonValue();
@@ -83,6 +99,8 @@ QJsonObject pointJson(const runtime::PointReport& point) {
                                                {QStringLiteral("r_ucl"), l.spread.upperMm},
                                                {QStringLiteral("r_lcl"), l.spread.lowerMm}}},
         {QStringLiteral("violations"), violations},
+        {QStringLiteral("violation_count"), static_cast<qint64>(a.violations.size())},
+        {QStringLiteral("violations_by_rule"), violationCounts},
         {QStringLiteral("verdicts"), verdictsJson(point.verdicts)},
     };
 }
@@ -113,7 +131,7 @@ void printText(const QJsonArray& points) {
                       .arg(p[QStringLiteral("sigma_within_mm")].toDouble(), 9, 'f', 4)
                       .arg(index("cpk"), 6)
                       .arg(index("ppk"), 6)
-                      .arg(p[QStringLiteral("violations")].toArray().size(), 5)
+                      .arg(p[QStringLiteral("violation_count")].toInteger(), 5)
                       .arg(verdicts[QStringLiteral("good")].toInteger())
                       .arg(verdicts[QStringLiteral("rework")].toInteger())
                       .arg(verdicts[QStringLiteral("scrap")].toInteger()));
@@ -173,6 +191,18 @@ int run(const QStringList& arguments) {
                      QStringLiteral("Phase I: control limits from the first N chart points (subgroups, or parts for "
                                     "I-MR), then held for the rest (phase II); default: all."),
                      QStringLiteral("n"));
+    parser.addOption(QStringLiteral("last"),
+                     QStringLiteral("Per point only its newest N readings (parts measured there), 2..10000000: a "
+                                    "capability window, as the Plant page's; not with --csv, --dfq or --pdf."),
+                     QStringLiteral("n"));
+    parser.addOption(QStringLiteral("skip"),
+                     QStringLiteral("With --last: leave out the newest M readings first (--last 125 --skip 125: the "
+                                    "125 before the newest 125), 0..10000000."),
+                     QStringLiteral("m"));
+    parser.addOption(QStringLiteral("violations"),
+                     QStringLiteral("How many rule violations each point lists with their parts: a number "
+                                    "0..10000000 or all (default 100; their counts by rule are always given)."),
+                     QStringLiteral("n|all"));
     parser.addOption(QStringLiteral("pdf"),
                      QStringLiteral("Also write the report as PDF: a title page (machine, job, dates, summary, every "
                                     "point's chart, signature line) and one page per control point."),
@@ -201,6 +231,21 @@ int run(const QStringList& arguments) {
         filter.toUtc = utcBound(QStringLiteral("to"), parser.value(QStringLiteral("to")), true);
     if (filter.fromUtc && filter.toUtc && *filter.toUtc <= *filter.fromUtc)
         throw UsageError("--to: must come after --from");
+    if (parser.isSet(QStringLiteral("last"))) {
+        filter.lastReadings = parser.integer(QStringLiteral("last"), 2, 10000000);
+        for (const char* file : {"csv", "dfq", "pdf"})
+            if (parser.isSet(QString::fromLatin1(file)))
+                throw UsageError(std::string("--last: a window of the statistics only, not with --") + file);
+    }
+    if (parser.isSet(QStringLiteral("skip"))) {
+        if (!filter.lastReadings) throw UsageError("--skip: only with --last");
+        filter.skipNewest = parser.integer(QStringLiteral("skip"), 0, 10000000);
+    }
+    std::size_t violationsListed = kViolationsListed;
+    if (parser.isSet(QStringLiteral("violations")))
+        violationsListed = parser.value(QStringLiteral("violations")) == QLatin1String("all")
+                               ? std::numeric_limits<std::size_t>::max()
+                               : static_cast<std::size_t>(parser.integer(QStringLiteral("violations"), 0, 10000000));
     const int subgroup = static_cast<int>(parser.integer(QStringLiteral("subgroup"), 1, 25));
     runtime::ReportChart chart = runtime::ReportChart::Automatic;
     if (parser.isSet(QStringLiteral("chart"))) {
@@ -225,11 +270,17 @@ int run(const QStringList& arguments) {
     std::vector<storage::PointReadings> readings;
     std::vector<storage::MeasurementRow> rows;  // every column of every reading: only for the files and the PDF
     std::vector<core::RunSummary> runs;
+    std::optional<core::VerdictCounts> partVerdicts;  // every chosen point of each part: without --point or --last
     const bool pdf = parser.isSet(QStringLiteral("pdf"));
     const bool files = parser.isSet(QStringLiteral("csv")) || parser.isSet(QStringLiteral("dfq")) || pdf;
     try {
-        db = std::make_unique<storage::Database>(databaseConfigFromOption(dbValue));
+        // PostgreSQL in read-only transactions: a report may read a hot standby, and never changes the plant's
+        // history. (An SQLite history is the terminal's own file: opened as before, brought up to date.)
+        storage::DatabaseConfig config = databaseConfigFromOption(dbValue);
+        config.readOnly = config.kind == storage::DatabaseConfig::Kind::Postgres;
+        db = std::make_unique<storage::Database>(config);
         readings = storage::queryPointReadings(*db, filter);
+        if (!filter.pointIndex && !filter.lastReadings) partVerdicts = storage::queryPartVerdicts(*db, filter);
         if (files) rows = storage::queryMeasurements(*db, filter);
         if (pdf) runs = storage::SqlHistoryStore(*db).runs();
     } catch (const storage::StorageError& e) {
@@ -241,7 +292,7 @@ int run(const QStringList& arguments) {
     const std::vector<runtime::PointReport> reports = runtime::analyseReport(readings, settings);
     QJsonArray points;
     for (const runtime::PointReport& point : reports)
-        points.append(pointJson(point));
+        points.append(pointJson(point, violationsListed));
     if (parser.isSet(QStringLiteral("csv"))) runtime::writeMeasurementsCsv(parser.value(QStringLiteral("csv")), rows);
     if (parser.isSet(QStringLiteral("dfq"))) runtime::writeMeasurementsDfq(parser.value(QStringLiteral("dfq")), rows);
     if (parser.isSet(QStringLiteral("pdf")))
@@ -252,6 +303,7 @@ int run(const QStringList& arguments) {
                          QString::fromStdString(runtime::chartKindName(reports.front().analysis.chart.limits.kind))},
                         {QStringLiteral("points"), points}};
         if (filter.runId) out.insert(QStringLiteral("run"), static_cast<qint64>(*filter.runId));
+        if (partVerdicts) out.insert(QStringLiteral("part_verdicts"), verdictsJson(*partVerdicts));
         printJson(out);
     } else {
         printText(points);

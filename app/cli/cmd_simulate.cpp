@@ -13,6 +13,7 @@
 #include "app/cli/command.h"
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
+#include "app/cli/run_history.h"
 #include "app/cli/run_interrupt.h"
 #include "app/cli/simulate_checks.h"
 #include "app/cli/simulate_output.h"
@@ -27,12 +28,6 @@ namespace tt::cli {
 
 namespace {
 
-/// The history of a --db run, opened before the run.
-struct StudyHistory {
-    std::unique_ptr<storage::Database> database;
-    std::unique_ptr<storage::SqlHistoryStore> store;
-};
-
 /// What the invocation runs: the request and, with --resume, where the stored run continues.
 struct Invocation {
     runtime::RunRequest request;
@@ -41,6 +36,7 @@ struct Invocation {
 
 void addSimulateOptions(CommandParser& parser) {
     addRunRequestOptions(parser);
+    addRunHistoryOptions(parser);
     parser.addOption(QStringLiteral("profile"),
                      QStringLiteral("Add the profile of the finished parts: mean and standard deviation of the "
                                     "diameter error along the part, after the loop's start-up (2z + 5 parts)."));
@@ -75,17 +71,12 @@ std::optional<QString> databaseOption(const CommandParser& parser) {
     return parser.value(QStringLiteral("db"));
 }
 
-StudyHistory openHistory(const QString& database, bool resume) {
+/// The history of a --db run, opened before the run: an SQLite file itself, a plant database (postgresql://)
+/// through the terminal's journal.
+std::unique_ptr<RunHistory> openHistory(const CommandParser& parser, const QString& database, bool resume) {
     if (resume && !isPostgresOption(database) && !QFileInfo::exists(database))
         throw UsageError("--db: '" + database.toStdString() + "' does not exist, so there is nothing to resume");
-    StudyHistory h;
-    try {
-        h.database = std::make_unique<storage::Database>(databaseConfigFromOption(database));
-        h.store = std::make_unique<storage::SqlHistoryStore>(*h.database);
-    } catch (const storage::StorageError& e) {
-        throw UsageError(std::string("--db: ") + e.what());
-    }
-    return h;
+    return std::make_unique<RunHistory>(parser, database, parser.isSet(QStringLiteral("progress")));
 }
 
 /// The stored run --resume continues, with its own request.
@@ -144,14 +135,14 @@ std::vector<double> profilePositions(double lengthMm, double stepMm) {
     return z;
 }
 
-int runStudy(const CommandParser& parser, const Invocation& run, core::HistoryStore* history) {
+int runStudy(const CommandParser& parser, const Invocation& run, RunHistory* history) {
     const config::LoopScenario scenario = runtime::scenarioOf(run.request);
     core::LatheStudyOptions options = runtime::studyOptionsOf(run.request, scenario);
     const bool profile = parser.isSet(QStringLiteral("profile"));
     if (profile)
         options.profileZMm =
             profilePositions(scenario.partLengthMm, parser.number(QStringLiteral("profile-step"), 1.0, 100.0));
-    options.history = history;
+    options.history = history ? &history->store() : nullptr;
     options.resume = run.resume;
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1 with
     // the reason; what was stored stays stored and the run can be resumed. Ctrl-C or SIGTERM: the run stops
@@ -161,10 +152,14 @@ int runStudy(const CommandParser& parser, const Invocation& run, core::HistorySt
     const std::optional<core::LatheStudyResult> study = runStudyUntilStopped(
         scenario, run.request.seed, options, parser.isSet(QStringLiteral("progress")), database.value_or(QString()));
     if (!study) return kExitInterrupted;
-    if (parser.json())
-        printJson(simulateJson(*study, scenario, profile, database));
-    else
+    if (history) history->finish();
+    if (parser.json()) {
+        QJsonObject out = simulateJson(*study, scenario, profile, database);
+        if (history) history->addJson(out);
+        printJson(out);
+    } else {
         printSimulateText(run.request.preset, *study, run.request.seed, profile);
+    }
     return kExitOk;
 }
 
@@ -182,12 +177,12 @@ int run(const QStringList& arguments) {
     const bool resume = parser.isSet(QStringLiteral("resume"));
     if (resume && !database) throw UsageError("--resume: needs --db, the history of the run to continue");
     resumeRunId(parser);  // --run without --resume, or a bad number, is refused before anything is opened
-    StudyHistory history;
+    std::unique_ptr<RunHistory> history;
     if (parser.isSet(QStringLiteral("dump-preset")) && database && !resume)
         throw UsageError("--dump-preset: prints the set-up and runs nothing; leave --db out");
     const bool dumps = parser.isSet(QStringLiteral("dump-request")) || parser.isSet(QStringLiteral("dump-preset"));
-    if (database && (!dumps || resume)) history = openHistory(*database, resume);
-    const Invocation run = invocationOf(parser, database, history.store.get());
+    if (database && (!dumps || resume)) history = openHistory(parser, *database, resume);
+    const Invocation run = invocationOf(parser, database, history ? &history->store() : nullptr);
     if (parser.isSet(QStringLiteral("dump-request"))) {
         printJson(runtime::toJson(run.request));
         return kExitOk;
@@ -196,7 +191,7 @@ int run(const QStringList& arguments) {
         printJson(presetDump(runtime::scenarioOf(run.request)));
         return kExitOk;
     }
-    return runStudy(parser, run, history.store.get());
+    return runStudy(parser, run, history.get());
 }
 
 }  // namespace

@@ -19,6 +19,8 @@ Command makeGenerateHistoryCommand();
 Command makeIdentifyCommand();
 Command makeAuditCommand();
 Command makeCncProgramCommand();
+Command makePlantCommand();
+Command makeForwardCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -38,6 +40,8 @@ const std::vector<Command>& commands() {
         makeIdentifyCommand(),
         makeAuditCommand(),
         makeCncProgramCommand(),
+        makePlantCommand(),
+        makeForwardCommand(),
     };
     return all;
 }

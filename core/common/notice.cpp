@@ -46,6 +46,9 @@ std::string stateText(const Notice& n) {
             return "run complete: " + partText(n.part) + " was the last";
         case NoticeKind::PausedOnScrap:
             return "paused: " + partText(n.part) + " is scrap; check the machine, then continue" + kHeld;
+        case NoticeKind::HistoryFull:
+            return "paused: the history takes no new part (" + n.cause + "); the run goes on by itself when it does" +
+                   kHeld;
         case NoticeKind::PartFinished:
             return partText(n.part) + " finished";
         case NoticeKind::PartMeasured:
@@ -187,9 +190,10 @@ constexpr const char* kKindNames[] = {"none",
                                       "out-of-tolerance-rework",
                                       "out-of-tolerance-scrap",
                                       "paused-on-scrap",
-                                      "model-mismatch"};
+                                      "model-mismatch",
+                                      "history-full"};
 constexpr std::size_t kKinds = sizeof kKindNames / sizeof kKindNames[0];
-static_assert(kKinds == static_cast<std::size_t>(NoticeKind::ModelMismatch) + 1, "one name per kind");
+static_assert(kKinds == static_cast<std::size_t>(NoticeKind::HistoryFull) + 1, "one name per kind");
 
 }  // namespace
 

@@ -63,6 +63,11 @@ enum class NoticeKind {
     /// in the window, reference: 1 = the correlation test, 0 = the variance test; cause: "hold" when the
     /// CNC now keeps the last correction
     ModelMismatch,
+    // ---- the history ----
+    /// The history store takes no new part (a terminal's journal at its size limit while the plant database
+    /// is unreachable): value: bytes used, limit: the limit in bytes, cause: the store's words. The loop pauses
+    /// before the next part and goes on by itself once the store takes parts again.
+    HistoryFull,
 };
 
 /// One notice with its data (which fields are set depends on the kind, see NoticeKind).

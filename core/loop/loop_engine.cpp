@@ -212,6 +212,10 @@ void LoopEngine::step() {
             setState(LoopState::Running, notice(NoticeKind::GaugeBack));
         }
     }
+    if (m_state == LoopState::Paused && m_pauseCause == PauseCause::History && !m_ports.history->refusesNextPart()) {
+        m_pauseCause = PauseCause::None;
+        setState(LoopState::Running, notice(NoticeKind::Continuing));
+    }
     if (m_state == LoopState::Running && !m_inProgress) startNextPart();
     maybeComplete();
 }
@@ -428,6 +432,7 @@ void LoopEngine::startNextPart() {
             setState(LoopState::Running, notice(NoticeKind::MeasuringLastParts, m_awaiting.front()));
         return;
     }
+    if (historyRefusesPart()) return;
     const std::int64_t n = m_nextPart;
     const std::int64_t due = n - m_config.delayParts;
     const double now = m_ports.clock.nowS();
@@ -507,6 +512,17 @@ void LoopEngine::startNextPart() {
     event.corrections = m_inProgress->corrections;
     event.path = std::move(correction.path);
     notify(std::move(event));
+}
+
+bool LoopEngine::historyRefusesPart() {
+    if (!m_ports.history || !m_runId) return false;
+    Notice refusal = m_ports.history->refusesNextPart();
+    if (!refusal) return false;
+    refusal.part = m_nextPart;
+    m_pauseCause = PauseCause::History;
+    setState(LoopState::Paused, refusal);
+    alarm("history-full", refusal);
+    return true;
 }
 
 void LoopEngine::maybeComplete() {

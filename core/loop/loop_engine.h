@@ -134,14 +134,16 @@ private:
     };
     /// Why the loop paused: the operator; a gauge that is not ready (continues when it is); diameters
     /// that did not come from a gauge that says it is ready (continues when they come, or when they are
-    /// typed by hand).
-    enum class PauseCause { None, Operator, Gauge, GaugeSilent };
+    /// typed by hand); a history store that refuses new parts.
+    /// The history that takes no new part (continues when it does again).
+    enum class PauseCause { None, Operator, Gauge, GaugeSilent, History };
 
     void collectFinishedParts();
     void collectReadings();
     void completeMeasurement(PartMeasurementRecord record);
     bool measurementDueReady(std::int64_t partNumber);
     void startNextPart();
+    bool historyRefusesPart();  // pauses (PauseCause::History) when the store takes no new part
     void maybeComplete();
     PartMeasurementRecord judge(std::int64_t partNumber, const std::vector<std::optional<double>>& diameters,
                                 double timeS) const;

@@ -142,6 +142,12 @@ public:
     /// Where run `runId` (the newest run when none) can continue; none when there is no run or it has
     /// no part yet.
     virtual std::optional<ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) = 0;
+
+    /// Whether the store takes another part now: a notice (kind HistoryFull, with the bytes used and the limit)
+    /// when it does not, e.g. a terminal's journal at its size limit while the plant database is unreachable.
+    /// The loop asks before it starts a part, pauses on a refusal (nothing is dropped) and goes on by itself
+    /// once the store takes parts again. The default store always does.
+    virtual Notice refusesNextPart() { return {}; }
 };
 
 }  // namespace tt::core

@@ -7,6 +7,7 @@
 #include <QDateTime>
 #include <QFileInfo>
 #include <QSqlError>
+#include <QStringList>
 #include <QUrl>
 #include <QUuid>
 
@@ -132,13 +133,16 @@ void Database::configureSqlite() {
                            "); it was left untouched");
     }
     check.finish();  // an active statement holds a read transaction; WAL cannot be switched on inside one
-    for (const char* pragma : {
-             "PRAGMA journal_mode=WAL",
-             "PRAGMA foreign_keys=ON",
-             "PRAGMA synchronous=NORMAL",
-         }) {
+    QStringList pragmas;
+    if (m_config.readOnly)
+        pragmas << QStringLiteral("PRAGMA query_only=ON");
+    else
+        pragmas << QStringLiteral("PRAGMA journal_mode=WAL") << QStringLiteral("PRAGMA foreign_keys=ON")
+                << (m_config.durable ? QStringLiteral("PRAGMA synchronous=FULL")
+                                     : QStringLiteral("PRAGMA synchronous=NORMAL"));
+    for (const QString& pragma : pragmas) {
         QSqlQuery q(connection());
-        if (!q.exec(QString::fromLatin1(pragma)))
+        if (!q.exec(pragma))
             throw StorageError("cannot configure the history file: " +
                                sqlError(q.lastError(), m_config.sqlitePath).toStdString());
     }
@@ -157,9 +161,25 @@ void Database::openPostgres() {
     if (!db.open())
         throw StorageError("cannot connect to " + m_config.describe().toStdString() + ": " +
                            sqlError(db.lastError()).toStdString());
+    // A report's connection: every transaction read-only, so it runs on a hot standby and can change nothing.
+    if (m_config.readOnly) exec(QStringLiteral("SET SESSION CHARACTERISTICS AS TRANSACTION READ ONLY"));
+}
+
+bool Database::hasTable(const QString& table) {
+    QSqlQuery q = isPostgres() ? exec(QStringLiteral("SELECT to_regclass(?) IS NOT NULL"), {table})
+                               : exec(QStringLiteral("SELECT COUNT(*) FROM sqlite_master WHERE type = 'table' AND "
+                                                     "name = ?"),
+                                      {table});
+    return q.next() && q.value(0).toBool();
 }
 
 void Database::ensureVersionTable() {
+    // A role that may not create tables (a terminal's, the quality engineer's) or a hot standby opens a
+    // database whose version table exists without trying to create it.
+    if (hasTable(QStringLiteral("schema_versions"))) return;
+    if (m_config.readOnly)
+        throw StorageError(m_config.describe().toStdString() +
+                           " holds no TrueTurn history (no schema_versions table); it was opened read-only");
     withSchemaLock([this] {
         exec(
             QStringLiteral("CREATE TABLE IF NOT EXISTS schema_versions ("
@@ -282,6 +302,12 @@ void Database::migrate(const SchemaModule& module) {
     const int seen = schemaVersion(module.name);
     checkNotNewer(seen);
     if (seen == known) return;
+    if (m_config.readOnly)
+        throw StorageError(m_config.describe().toStdString() + " holds '" + module.name.toStdString() +
+                           "' schema version " + std::to_string(seen) + ", older than this TrueTurn's (" +
+                           std::to_string(known) +
+                           "); it was opened read-only: open it once with write access (a terminal, or `trueturn "
+                           "plant --db` as its owner) to bring it up to date");
     // Another client may be migrating at this moment: under the schema lock, read the version again.
     withSchemaLock([&] {
         const int current = schemaVersion(module.name);

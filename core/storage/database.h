@@ -29,6 +29,13 @@ struct DatabaseConfig {
     QString databaseName;
     QString user;
     QString password;
+    /// Read-only: every transaction is READ ONLY (PostgreSQL; a hot standby accepts nothing else) or the
+    /// connection is query-only (SQLite); nothing is created or migrated (a schema older than this program is
+    /// refused with the reason). For reports.
+    bool readOnly = false;
+    /// SQLite: every commit is on the disk before it returns (synchronous=FULL), for a terminal's journal,
+    /// which must survive a power cut; otherwise NORMAL (a commit survives a killed process).
+    bool durable = false;
 
     /// An SQLite file at `path`.
     static DatabaseConfig sqlite(const QString& path);
@@ -79,6 +86,8 @@ public:
     void migrate(const SchemaModule& module);
     /// Version of `module` in the database; 0 when never migrated.
     int schemaVersion(const QString& module);
+    /// Whether `table` exists (in PostgreSQL: on the search path).
+    bool hasTable(const QString& table);
 
     /// Replaces the dialect placeholders: {pk} (auto-increment integer primary key),
     /// {real} (double), {blob} (bytes), {bigint}.

@@ -1,9 +1,12 @@
 #include "core/storage/history_store.h"
 
+#include "core/storage/plant_roles.h"
+
 #include <array>
 #include <cmath>
 
 #include <QSqlQuery>
+#include <QUuid>
 #include <QVariant>
 #include <cerrno>
 #include <cstdio>
@@ -122,6 +125,32 @@ SchemaModule historySchema() {
                   " measured_s, reason_kind, verdict)");
              exec(db, "DROP INDEX measurements_by_point");
          }});
+    module.migrations.push_back(
+        {5,
+         QStringLiteral("the plant-wide history: runs known by a unique id, alarms by the terminal's sequence, the ends "
+                        "of runs as rows, the terminals' reports, the plant overview's indexes; on PostgreSQL the "
+                        "roles of the terminals and of the quality engineer with row-level security by machine"),
+         [](Database& db) {
+             // A run keeps its id wherever it is copied (a terminal's journal -> the plant database): the natural
+             // key of a forwarded row is (run_uid, part, point), so a batch sent twice inserts nothing twice.
+             exec(db, "ALTER TABLE runs ADD COLUMN run_uid TEXT");
+             exec(db, "CREATE UNIQUE INDEX runs_by_uid ON runs (run_uid)");
+             exec(db, "CREATE INDEX runs_by_machine ON runs (machine, id)");
+             exec(db, "ALTER TABLE alarms ADD COLUMN terminal_seq {bigint}");
+             exec(db, "CREATE UNIQUE INDEX alarms_by_terminal_seq ON alarms (run_id, terminal_seq)");
+             // A run's end as a row (the plant database's roles insert and never update history).
+             exec(db,
+                  "CREATE TABLE run_ends (run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                  " seq INTEGER NOT NULL, status TEXT NOT NULL, finished_at TEXT NOT NULL, PRIMARY KEY (run_id, seq))");
+             // The parts of a machine stored on one day (the plant overview's counts).
+             exec(db, "CREATE INDEX parts_by_run_time ON parts (run_id, recorded_at)");
+             // What each terminal last said about itself: its journal's backlog (the plant overview shows it).
+             exec(db,
+                  "CREATE TABLE plant_terminal_status (machine TEXT PRIMARY KEY, reported_at TEXT NOT NULL,"
+                  " backlog_parts {bigint} NOT NULL, journal_bytes {bigint} NOT NULL,"
+                  " journal_limit_bytes {bigint} NOT NULL)");
+             if (db.isPostgres()) createPlantRoles(db);
+         }});
     return module;
 }
 
@@ -163,9 +192,10 @@ std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
     m_db.transaction([&] {
         QSqlQuery insert = m_db.exec(
             QStringLiteral("INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
-                           " part_length_mm, settings, machine) VALUES (?, 'running', ?, ?, ?, ?, ?, ?, ?)"),
+                           " part_length_mm, settings, machine, run_uid) VALUES (?, 'running', ?, ?, ?, ?, ?, ?, ?, ?)"),
             {utcNowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm,
-             run.partLengthMm, text(run.settingsJson), text(run.machine)});
+             run.partLengthMm, text(run.settingsJson), text(run.machine),
+             QUuid::createUuid().toString(QUuid::WithoutBraces)});
         runId = m_db.lastInsertId(insert);
         for (std::size_t i = 0; i < run.pointZMm.size(); ++i)
             m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
@@ -230,10 +260,16 @@ void SqlHistoryStore::recordMeasurement(std::int64_t runId, const core::PartMeas
 }
 
 void SqlHistoryStore::recordAlarm(std::int64_t runId, const core::AlarmRecord& alarm) {
-    m_db.exec(QStringLiteral("INSERT INTO alarms (run_id, part_number, time_s, kind, message, recorded_at)"
-                             " VALUES (?, ?, ?, ?, ?, ?)"),
-              {id(runId), nullable<qlonglong>(alarm.partNumber), alarm.timeS, text(alarm.kind), text(alarm.message),
-               utcNowText()});
+    insertAlarm(runId, alarm);
+}
+
+std::int64_t SqlHistoryStore::insertAlarm(std::int64_t runId, const core::AlarmRecord& alarm) {
+    QSqlQuery insert =
+        m_db.exec(QStringLiteral("INSERT INTO alarms (run_id, part_number, time_s, kind, message, recorded_at)"
+                                 " VALUES (?, ?, ?, ?, ?, ?)"),
+                  {id(runId), nullable<qlonglong>(alarm.partNumber), alarm.timeS, text(alarm.kind),
+                   text(alarm.message), utcNowText()});
+    return m_db.lastInsertId(insert);
 }
 
 void SqlHistoryStore::finishRun(std::int64_t runId, const std::string& status) {
@@ -244,11 +280,12 @@ void SqlHistoryStore::finishRun(std::int64_t runId, const std::string& status) {
 std::vector<core::RunSummary> SqlHistoryStore::runs() {
     std::vector<core::RunSummary> out;
     QSqlQuery q = m_db.exec(
-        QStringLiteral("SELECT r.id, r.started_at, r.finished_at, r.status, r.preset, r.controller, r.delay_parts,"
-                       " r.nominal_diameter_mm, r.part_length_mm, r.settings,"
+        QStringLiteral("SELECT r.id, r.started_at, COALESCE(e.finished_at, r.finished_at), COALESCE(e.status, r.status),"
+                       " r.preset, r.controller, r.delay_parts, r.nominal_diameter_mm, r.part_length_mm, r.settings,"
                        " (SELECT COUNT(*) FROM parts p WHERE p.run_id = r.id),"
                        " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id), r.machine"
-                       " FROM runs r ORDER BY r.id DESC"));
+                       " FROM runs r LEFT JOIN run_ends e ON e.run_id = r.id"
+                       " AND e.seq = (SELECT MAX(seq) FROM run_ends x WHERE x.run_id = r.id) ORDER BY r.id DESC"));
     while (q.next()) {
         core::RunSummary s;
         s.runId = q.value(0).toLongLong();

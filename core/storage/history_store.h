@@ -5,7 +5,8 @@
 
 namespace tt::storage {
 
-/// The schema module "history" (runs, run_points, parts, corrections, measurements, run_state, alarms).
+/// The schema module "history" (runs, run_points, parts, corrections, measurements, run_state, alarms; since
+/// version 5 run_ends and plant_terminal_status, and on PostgreSQL the plant's roles: plant_roles.h).
 SchemaModule historySchema();
 
 /// The run history over SQL (SQLite file or PostgreSQL), implementing the loop's HistoryStore port.
@@ -28,6 +29,9 @@ public:
     std::vector<core::StoredPart> parts(std::int64_t runId) override;
     std::vector<core::AlarmRecord> alarms(std::int64_t runId) override;
     std::optional<core::ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) override;
+
+    /// Stores an alarm (as recordAlarm) and returns its row id.
+    std::int64_t insertAlarm(std::int64_t runId, const core::AlarmRecord& alarm);
 
     /// The database the history is stored in.
     Database& database() { return m_db; }

@@ -13,6 +13,15 @@ namespace tt::storage {
 
 namespace {
 
+}  // namespace
+
+QString plausibleReadingCondition() {
+    return QStringLiteral("m.measured_mm IS NOT NULL AND (m.reason_kind IS NULL OR m.reason_kind NOT IN"
+                          " ('implausible', 'not-finite', 'not-a-number'))");
+}
+
+namespace {
+
 /// The FROM and WHERE of the plausible readings a filter chooses (a value measured and not refused as
 /// implausible or not a number), with their bindings.
 struct Selection {
@@ -30,9 +39,7 @@ enum class PartsJoin {
 };
 
 Selection selectionOf(const MeasurementFilter& filter, PartsJoin join) {
-    QStringList where{QStringLiteral("m.measured_mm IS NOT NULL"),
-                      QStringLiteral("(m.reason_kind IS NULL OR m.reason_kind NOT IN ('implausible', 'not-finite', "
-                                     "'not-a-number'))")};
+    QStringList where{plausibleReadingCondition()};
     Selection s;
     if (filter.runId) {
         where << QStringLiteral("p.run_id = ?");
@@ -149,19 +156,26 @@ struct PointRow {
     int verdict = 0;  ///< 1 good, 2 rework, 3 scrap, 0 none
 };
 
-/// The rows of one point in production order (run, part), as the statistics take them.
-PointReadings pointReadingsOf(int pointIndex, std::vector<PointRow>& rows) {
+/// The rows of one point in production order (run, part), as the statistics take them; with a window of the
+/// filter (lastReadings, skipNewest) only those.
+PointReadings pointReadingsOf(int pointIndex, std::vector<PointRow>& rows, const MeasurementFilter& filter) {
     const auto before = [](const PointRow& a, const PointRow& b) {
         return a.runId != b.runId ? a.runId < b.runId : a.partNumber < b.partNumber;
     };
     // Parts are numbered as they are stored, so the rows usually come in order already.
     if (!std::is_sorted(rows.begin(), rows.end(), before)) std::sort(rows.begin(), rows.end(), before);
+    auto last = rows.end() - static_cast<std::ptrdiff_t>(
+                                 std::min<std::int64_t>(filter.skipNewest, static_cast<std::int64_t>(rows.size())));
+    auto first = rows.begin();
+    if (filter.lastReadings && last - first > *filter.lastReadings)
+        first = last - static_cast<std::ptrdiff_t>(*filter.lastReadings);
     PointReadings p;
     p.pointIndex = pointIndex;
-    p.valuesMm.reserve(rows.size());
-    p.partNumbers.reserve(rows.size());
-    p.timesS.reserve(rows.size());
-    for (const PointRow& r : rows) {
+    p.valuesMm.reserve(static_cast<std::size_t>(last - first));
+    p.partNumbers.reserve(static_cast<std::size_t>(last - first));
+    p.timesS.reserve(static_cast<std::size_t>(last - first));
+    for (auto it = first; it != last; ++it) {
+        const PointRow& r = *it;
         p.valuesMm.push_back(r.valueMm);
         p.partNumbers.push_back(r.partNumber);
         p.timesS.push_back(r.timeS);
@@ -203,8 +217,12 @@ std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFil
     }
     std::vector<PointReadings> points;
     for (auto& [index, pointRows] : rows) {
-        points.push_back(pointReadingsOf(index, pointRows));
+        points.push_back(pointReadingsOf(index, pointRows, filter));
         std::vector<PointRow>().swap(pointRows);
+        if (points.back().valuesMm.empty()) {
+            points.pop_back();
+            continue;
+        }
         readPointFacts(db, filter, points.back());
     }
     return points;
@@ -240,6 +258,34 @@ std::vector<PointAggregate> queryPointAggregates(Database& db, const Measurement
     for (PointAggregate& a : out)
         if (const auto it = verdicts.find(a.pointIndex); it != verdicts.end()) a.verdicts = it->second;
     return out;
+}
+
+core::VerdictCounts queryPartVerdicts(Database& db, const MeasurementFilter& filter) {
+    db.migrate(historySchema());
+    const Selection s = selectionOf(filter, PartsJoin::AsNeeded);
+    QSqlQuery q = select(db,
+                         QStringLiteral("SELECT w, COUNT(*) FROM (SELECT m.part_id AS part_id, MAX(CASE m.verdict WHEN"
+                                        " 'good' THEN 1 WHEN 'rework' THEN 2 WHEN 'scrap' THEN 3 ELSE 0 END) AS w") +
+                             s.from + s.where + QStringLiteral(" GROUP BY m.part_id) t GROUP BY w"),
+                         s.bindings);
+    core::VerdictCounts counts;
+    while (q.next()) {
+        const std::int64_t n = q.value(1).toLongLong();
+        switch (q.value(0).toInt()) {
+            case 1:
+                counts.good += n;
+                break;
+            case 2:
+                counts.rework += n;
+                break;
+            case 3:
+                counts.scrap += n;
+                break;
+            default:
+                break;
+        }
+    }
+    return counts;
 }
 
 std::vector<MeasurementRow> queryMeasurements(Database& db, const MeasurementFilter& filter) {

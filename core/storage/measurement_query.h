@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QString>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -17,7 +18,16 @@ struct MeasurementFilter {
     std::optional<std::string> machine;
     std::optional<std::string> fromUtc;  ///< parts stored at or after this ISO 8601 UTC time
     std::optional<std::string> toUtc;    ///< parts stored before this ISO 8601 UTC time
+    /// Per point only its newest `lastReadings` readings (after leaving out the newest `skipNewest`), in the
+    /// statistics of queryPointReadings (a capability window: the plant overview's last 125 parts and the 125
+    /// before); none: all.
+    std::optional<std::int64_t> lastReadings;
+    std::int64_t skipNewest = 0;
 };
+
+/// The SQL condition (on the readings table as `m`) of a plausible reading: a value measured and not refused as
+/// implausible or not a number, what a quality report counts.
+QString plausibleReadingCondition();
 
 /// One stored reading of one control point of one part, as the reports use it.
 struct MeasurementRow {
@@ -70,6 +80,10 @@ struct PointAggregate {
 
 /// The aggregates of every chosen control point, in point order. Throws StorageError on failure.
 std::vector<PointAggregate> queryPointAggregates(Database& db, const MeasurementFilter& filter);
+
+/// The chosen parts counted by their verdict, the worst verdict of their chosen plausible readings (a part
+/// without a judged reading is not counted), in one SQL aggregate. Throws StorageError on failure.
+core::VerdictCounts queryPartVerdicts(Database& db, const MeasurementFilter& filter);
 
 /// The plausible readings of the history (a value measured and not refused as implausible or not a number:
 /// what a quality report counts; "accepted" is kept), ordered by run, part and point. One query joined in

@@ -4,6 +4,7 @@
 #include <QSqlQuery>
 #include <QTimeZone>
 #include <charconv>
+#include <map>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -16,8 +17,7 @@ namespace {
 
 /// Parts written by one INSERT statement (their readings: this times the points).
 constexpr std::int64_t kPartsPerStatement = 1000;
-/// One part every minute, the first on 2026-01-01 00:00 UTC.
-constexpr qint64 kFirstPartEpochS = 1767225600;
+/// One part every minute.
 constexpr double kPartCycleS = 60.0;
 
 void requireRange(const char* name, double value, double lo, double hi) {
@@ -84,13 +84,15 @@ private:
     double zMm(int point) const { return 10.0 + 130.0 * point / std::max(1, m_spec.points - 1); }
 
     std::int64_t writeRun(int runIndex, std::int64_t count) {
+        const int machine = runIndex % m_spec.machines;
+        if (m_spec.machinesInParallel) m_partsWritten = m_machineParts[machine];
         const QString started = partTime(m_partsWritten);
         const QString finished = partTime(m_partsWritten + count);
         QSqlQuery insert = m_db.exec(
             QStringLiteral("INSERT INTO runs (started_at, finished_at, status, preset, controller, delay_parts,"
                            " nominal_diameter_mm, part_length_mm, settings, machine)"
                            " VALUES (?, ?, 'finished', 'synthetic', 'lqg', 1, ?, 150.0, '{}', ?)"),
-            {started, finished, m_spec.nominalMm, QStringLiteral("lathe-%1").arg(runIndex % m_spec.machines + 1)});
+            {started, finished, m_spec.nominalMm, QStringLiteral("lathe-%1").arg(machine + 1)});
         const std::int64_t runId = m_db.lastInsertId(insert);
         for (int p = 0; p < m_spec.points; ++p)
             m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
@@ -101,12 +103,14 @@ private:
             process.offsetMm = -0.0105 + offset(m_random);
         for (std::int64_t first = 0; first < count; first += kPartsPerStatement)
             writeParts(runId, first, std::min(kPartsPerStatement, count - first), processes);
+        m_machineParts[machine] = m_partsWritten;
         return runId;
     }
 
     QString partTime(std::int64_t partIndex) const {
-        return QDateTime::fromSecsSinceEpoch(kFirstPartEpochS + partIndex * static_cast<qint64>(kPartCycleS),
+        return QDateTime::fromSecsSinceEpoch(m_spec.firstPartEpochS + partIndex * static_cast<qint64>(kPartCycleS),
                                              QTimeZone::utc())
+            .toUTC()  // "...Z" as every stored time (utcNowText), so times compare as text
             .toString(Qt::ISODateWithMs);
     }
 
@@ -192,6 +196,7 @@ private:
     std::uniform_real_distribution<double> m_uniform{0.0, 1.0};
     std::int64_t m_nextPartId = 1;
     std::int64_t m_partsWritten = 0;
+    std::map<int, std::int64_t> m_machineParts;  ///< parts written per machine (machinesInParallel)
 };
 
 }  // namespace

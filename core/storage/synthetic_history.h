@@ -19,6 +19,10 @@ struct SyntheticHistorySpec {
     double upperDeviationMm = 0.0;       ///< es of the tolerance (h7 at 27 mm: 0)
     double lowerDeviationMm = -0.021;    ///< ei of the tolerance (h7 at 27 mm: -0.021 mm, ISO 286-1)
     double implausibleFraction = 0.001;  ///< share of readings stored as refused (implausible), 0 .. 0.5
+    std::int64_t firstPartEpochS = 1767225600;  ///< when the first part is stored (default 2026-01-01 00:00 UTC)
+    /// The machines work side by side: each machine's parts are one minute apart from the first part on (a
+    /// shop), instead of every part of the history one minute after the previous one (one machine at a time).
+    bool machinesInParallel = false;
 };
 
 /// Largest history writeSyntheticHistory writes in one call.

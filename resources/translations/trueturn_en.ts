@@ -1454,6 +1454,10 @@
         <source>The plant no longer matches the controller&apos;s model (part %1, point %2): the %3 test of the innovations over %4 parts is %5, above its limit %6. %7</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Paused before part %1: the history takes no new part (%2). The run goes on by itself when it does; the CNC keeps the last correction</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -5795,6 +5799,106 @@ Quit anyway?</source>
     <message>
         <source>Process</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plant</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::PlantModel</name>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offline, last part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>idle, last part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpk of the last %1 parts; %2 parts before: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kept on
+terminal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Today
+good / rework / scrap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cpk
+point %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::PlantPage</name>
+    <message>
+        <source>Refresh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a machine to open its reports. Cpk of the last %1 parts per control point, ▲▼ its change against the %1 before; the page reads the plant database every %2 s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plant database: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No machine has written to the plant database yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every terminal that stores its runs here appears with its state, the parts it still keeps, today&apos;s verdicts, the capability of its last parts and its open alarms.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reading the plant database…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot read the plant database: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Read at %1: %n machine(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -1456,6 +1456,10 @@
         <source>The plant no longer matches the controller&apos;s model (part %1, point %2): the %3 test of the innovations over %4 parts is %5, above its limit %6. %7</source>
         <translation>Объект больше не соответствует модели регулятора (деталь %1, точка %2): %3 критерий невязок за %4 деталей равен %5, выше предела %6. %7</translation>
     </message>
+    <message>
+        <source>Paused before part %1: the history takes no new part (%2). The run goes on by itself when it does; the CNC keeps the last correction</source>
+        <translation>Пауза перед деталью %1: история не принимает новых деталей (%2). Работа продолжится сама, когда примет; ЧПУ держит последнюю коррекцию</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -5838,6 +5842,110 @@ Quit anyway?</source>
     <message>
         <source>Process</source>
         <translation>Технология</translation>
+    </message>
+    <message>
+        <source>Plant</source>
+        <translation>Цех</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::PlantModel</name>
+    <message>
+        <source>running</source>
+        <translation>работает</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>нет связи</translation>
+    </message>
+    <message>
+        <source>offline, last part %1</source>
+        <translation>нет связи, последняя деталь %1</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>простаивает</translation>
+    </message>
+    <message>
+        <source>idle, last part %1</source>
+        <translation>простаивает, последняя деталь %1</translation>
+    </message>
+    <message>
+        <source>Cpk of the last %1 parts; %2 parts before: %3</source>
+        <translation>Cpk последних %1 деталей; %2 деталей до них: %3</translation>
+    </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Состояние</translation>
+    </message>
+    <message>
+        <source>Kept on
+terminal</source>
+        <translation>Хранится
+на терминале</translation>
+    </message>
+    <message>
+        <source>Today
+good / rework / scrap</source>
+        <translation>Сегодня
+годные / доработка / брак</translation>
+    </message>
+    <message>
+        <source>Alarms</source>
+        <translation>Тревоги</translation>
+    </message>
+    <message>
+        <source>Cpk
+point %1</source>
+        <translation>Cpk
+точка %1</translation>
+    </message>
+</context>
+<context>
+    <name>tt::ui::PlantPage</name>
+    <message>
+        <source>Refresh</source>
+        <translation>Обновить</translation>
+    </message>
+    <message>
+        <source>Click a machine to open its reports. Cpk of the last %1 parts per control point, ▲▼ its change against the %1 before; the page reads the plant database every %2 s.</source>
+        <translation>Нажмите на станок, чтобы открыть его отчёты. Cpk последних %1 деталей по каждой контрольной точке, ▲▼ — изменение относительно %1 деталей до них; страница читает базу цеха каждые %2 с.</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>нет</translation>
+    </message>
+    <message>
+        <source>Plant database: %1</source>
+        <translation>База цеха: %1</translation>
+    </message>
+    <message>
+        <source>No machine has written to the plant database yet</source>
+        <translation>Ни один станок ещё не писал в базу цеха</translation>
+    </message>
+    <message>
+        <source>Every terminal that stores its runs here appears with its state, the parts it still keeps, today&apos;s verdicts, the capability of its last parts and its open alarms.</source>
+        <translation>Каждый терминал, который хранит здесь свои работы, появится с состоянием, деталями, которые он ещё хранит у себя, сегодняшними заключениями, воспроизводимостью последних деталей и открытыми тревогами.</translation>
+    </message>
+    <message>
+        <source>Reading the plant database…</source>
+        <translation>Чтение базы цеха…</translation>
+    </message>
+    <message>
+        <source>Cannot read the plant database: %1</source>
+        <translation>Не удаётся прочитать базу цеха: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Read at %1: %n machine(s)</source>
+        <translation>
+            <numerusform>Прочитано в %1: %n станок</numerusform>
+            <numerusform>Прочитано в %1: %n станка</numerusform>
+            <numerusform>Прочитано в %1: %n станков</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "ui/pages/controller_page.h"
 #include "ui/pages/devices_page.h"
 #include "ui/pages/measurements_page.h"
+#include "ui/pages/plant_page.h"
 #include "ui/pages/planned_page.h"
 #include "ui/pages/process_page.h"
 #include "ui/pages/reports_page.h"
@@ -31,6 +32,8 @@ Page* createPage(PageId id, AppContext& context, QWidget* parent) {
             return new DevicesPage(context, parent);
         case PageId::Reports:
             return new ReportsPage(context, parent);
+        case PageId::Plant:
+            return new PlantPage(context, parent);
         case PageId::Controller:
             return new ControllerPage(context, parent);
         default:

@@ -22,6 +22,8 @@ QString pageTitle(PageId id) {
             return PlannedPage::tr("Controller");
         case PageId::Reports:
             return PlannedPage::tr("Reports");
+        case PageId::Plant:
+            return PlannedPage::tr("Plant");
         case PageId::Devices:
             return PlannedPage::tr("Devices");
         case PageId::Settings:
@@ -74,6 +76,7 @@ void PlannedPage::retranslate() {
                                  "to the CNC; the built-in simulator is always available."));
             break;
         case PageId::Reports:  // ReportsPage
+        case PageId::Plant:    // PlantPage
         case PageId::Process:  // ProcessPage
         case PageId::Settings:
             break;

@@ -122,6 +122,14 @@ void ReportsPage::refresh() {
     if (m_stack->currentWidget() == m_empty) showEmpty();
 }
 
+void ReportsPage::showMachine(const QString& machine) {
+    if (busy()) cancel();
+    refresh();
+    m_filter->selectMachine(machine);
+    m_analysedOnce = true;  // the page's first showing analyses this choice, not the default one
+    analyse();
+}
+
 void ReportsPage::setBusy(bool busy) {
     m_progress->setVisible(busy);
     m_cancel->setVisible(busy);

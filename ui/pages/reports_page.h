@@ -28,6 +28,8 @@ public:
 
     /// Reads the stored runs again (machine and run lists).
     void refresh();
+    /// Shows the reports of `machine` (all its runs, any date) and analyses them.
+    void showMachine(const QString& machine);
     /// Reads and analyses the chosen readings in the worker; `analysed` when done.
     void analyse();
     /// Writes the PDF report of the shown analysis to `path` (progress, cancel); false when cancelled or

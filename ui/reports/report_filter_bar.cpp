@@ -111,6 +111,19 @@ void ReportFilterBar::setRuns(const std::vector<core::RunSummary>& runs) {
     fillRuns();
 }
 
+void ReportFilterBar::selectMachine(const QString& machine) {
+    int index = m_machine->findData(machine);
+    if (index < 0) {  // not among the stored runs read last: chosen all the same (the page reads them again)
+        m_machine->addItem(machine, machine);
+        index = m_machine->count() - 1;
+    }
+    m_machine->setCurrentIndex(index);
+    fillRuns();
+    m_run->setCurrentIndex(0);
+    m_from->setDate(m_from->minimumDate());
+    m_to->setDate(m_to->minimumDate());
+}
+
 void ReportFilterBar::fillRuns() {
     const qint64 chosen = m_run->currentData().toLongLong();
     const std::string machine = m_machine->currentData().toString().toStdString();

@@ -24,6 +24,8 @@ public:
 
     /// Fills the machine and run lists from the stored runs, keeping the current choice where it remains.
     void setRuns(const std::vector<core::RunSummary>& runs);
+    /// Chooses `machine` with all its runs and any date (the Plant page opens a machine's reports).
+    void selectMachine(const QString& machine);
     /// The readings chosen (every point: the page shows one and all side by side).
     storage::MeasurementFilter filter() const;
     /// The chart settings; throws std::invalid_argument on a bad combination (I-MR with subgroups).

@@ -55,6 +55,12 @@ QString stateText(const core::Notice& n) {
                        "Notice",
                        "Paused: part %1 is scrap; check the machine, then continue. The CNC keeps the last correction")
                 .arg(n.part);
+        case K::HistoryFull:
+            return QCoreApplication::translate("Notice",
+                                               "Paused before part %1: the history takes no new part (%2). The run "
+                                               "goes on by itself when it does; the CNC keeps the last correction")
+                .arg(n.part)
+                .arg(cause(n));
         case K::PartFinished:
             return QCoreApplication::translate("Notice", "Part %1 finished").arg(n.part);
         case K::PartMeasured:

@@ -81,7 +81,7 @@ TEST_F(ReportTest, JsonPerPointHasTheIssuesFieldsAndTheTextbookFigures) {
     ASSERT_EQ(points.size(), 5);
     const QStringList keys{"cp",       "cpk",         "cpk_ci", "cpm", "limits", "mean_mm",          "method",
                            "n",        "normality_p", "point",  "pp",  "ppk",    "sigma_overall_mm", "sigma_within_mm",
-                           "verdicts", "violations",  "x_mm"};
+                           "verdicts", "violation_count", "violations", "violations_by_rule", "x_mm"};
     for (int i = 1; i <= 5; ++i) {
         const QJsonObject p = points[i - 1].toObject();
         QStringList have = p.keys();
@@ -130,7 +130,23 @@ TEST_F(ReportTest, JsonPerPointHasTheIssuesFieldsAndTheTextbookFigures) {
             EXPECT_TRUE(v.toObject()["rule"].toString().startsWith(QLatin1String("WE")));
             EXPECT_FALSE(v.toObject()["parts"].toArray().isEmpty());
         }
+        // The counts by rule add up to every violation; at most the first 100 are listed by default.
+        qint64 byRule = 0;
+        for (const QJsonValue& n : p["violations_by_rule"].toObject())
+            byRule += n.toInteger();
+        EXPECT_EQ(byRule, p["violation_count"].toInteger());
+        EXPECT_EQ(p["violations"].toArray().size(), std::min<qint64>(100, p["violation_count"].toInteger()));
     }
+    // The list is as long as asked: --violations N or all.
+    const QJsonObject all = runTrueturn({"report", "--db", db, "--point", "1", "--violations", "all", "--json"})
+                                .json()["points"].toArray()[0].toObject();
+    const QJsonObject one = runTrueturn({"report", "--db", db, "--point", "1", "--violations", "1", "--json"})
+                                .json()["points"].toArray()[0].toObject();
+    ASSERT_GT(all["violation_count"].toInteger(), 1);
+    EXPECT_EQ(all["violations"].toArray().size(), all["violation_count"].toInteger());
+    EXPECT_EQ(one["violations"].toArray().size(), 1);
+    EXPECT_EQ(one["violations"].toArray()[0], all["violations"].toArray()[0]);
+    EXPECT_EQ(runTrueturn({"report", "--db", db, "--violations", "some"}).exitCode, 2);
 }
 
 TEST_F(ReportTest, OnePointWithSubgroupsOfFiveAndTheCsvOfTheReadings) {

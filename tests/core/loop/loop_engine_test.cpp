@@ -256,6 +256,34 @@ TEST(LoopEngine, AHistoryThatCannotBeWrittenIsAFault) {
     EXPECT_NE(rig.engine->detail().find("disk full"), std::string::npos) << rig.engine->detail();
 }
 
+// A history that takes no new part (a terminal's journal at its bound while the plant database is away): the
+// loop pauses before the next part, the CNC keeps the last correction, nothing is dropped, and the loop goes on by
+// itself once the history takes parts again.
+TEST(LoopEngine, AHistoryThatTakesNoNewPartPausesTheLoopUntilItDoesAgain) {
+    Rig rig(1, 12);
+    rig.engine->start(rig.run());
+    rig.runUntil(3 * 400.0);
+    Notice full(NoticeKind::HistoryFull);
+    full.cause = "this terminal's journal holds 1024 MiB, its limit 1024 MiB";
+    rig.history.refusal = full;
+    rig.runUntil(6 * 400.0);
+    ASSERT_EQ(rig.engine->state(), LoopState::Paused);
+    EXPECT_EQ(rig.engine->status().kind, NoticeKind::HistoryFull);
+    EXPECT_NE(rig.engine->detail().find("1024 MiB"), std::string::npos) << rig.engine->detail();
+    EXPECT_TRUE(rig.recorder.hasAlarm("history-full"));
+    const std::int64_t sent = rig.station->sentCount();
+    const std::size_t stored = rig.history.parts(1).size();
+    rig.runUntil(30 * 400.0);
+    EXPECT_EQ(rig.station->sentCount(), sent) << "no part is started while the history refuses";
+    EXPECT_EQ(rig.history.parts(1).size(), stored);
+    rig.history.refusal = Notice();
+    ASSERT_TRUE(runSimulation(*rig.engine, rig.clock, *rig.station).complete);
+    const std::vector<StoredPart> parts = rig.history.parts(1);
+    ASSERT_EQ(parts.size(), 12u);
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        EXPECT_EQ(parts[i].partNumber, static_cast<std::int64_t>(i + 1));
+}
+
 TEST(LoopEngine, PauseAndContinueByTheOperator) {
     Rig rig(1, 10);
     rig.engine->start(rig.run());

@@ -137,7 +137,10 @@ public:
         return r;
     }
 
+    Notice refusesNextPart() override { return refusal; }
+
     bool failWrites = false;
+    Notice refusal;  ///< what refusesNextPart answers (a journal at its bound: HistoryFull)
 
 private:
     void store(std::int64_t runId, const PartMeasurementRecord& m) {

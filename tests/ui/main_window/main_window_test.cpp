@@ -29,7 +29,7 @@ protected:
 TEST_F(MainWindowTest, VisitsEveryPageByItsNavigationButtonAndGrabsIt) {
     MainWindow window(context);
     window.show();
-    ASSERT_EQ(window.pages().size(), 9);
+    ASSERT_EQ(window.pages().size(), 10);
     for (Page* page : window.pages()) {
         auto* button = window.findChild<QToolButton*>(QStringLiteral("nav_") + pageKey(page->id()));
         ASSERT_NE(button, nullptr) << pageKey(page->id()).toStdString();

@@ -52,8 +52,9 @@ TEST_P(HistoryStoreTest, StoresRunsPartsCorrectionsAndMeasurementsExactly) {
     TT_REQUIRE_BACKEND(scratch);
     Database db(scratch.config());
     SqlHistoryStore store(db);
-    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 4)
-        << "version 3 keeps the tolerance verdicts, 4 the covering index of the readings by point";
+    EXPECT_EQ(db.schemaVersion(QStringLiteral("history")), 5)
+        << "version 3 keeps the tolerance verdicts, 4 the covering index of the readings by point, 5 the plant-wide "
+           "history's keys";
     const std::int64_t run = store.beginRun(paperRun(2));
     store.recordPart(run, finished(1));
     store.recordMeasurement(run, measured(1, 0.012));
