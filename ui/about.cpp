@@ -31,6 +31,7 @@ constexpr const char* kImplemented[] = {
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Falling back to a safe controller on a model mismatch (it holds)"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe on the Run page and in simulate"),
 };
 
 template <std::size_t N>

@@ -2801,6 +2801,10 @@
         <source>Devices in a thread of their own</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The LinuxCNC lathe on the Run page and in simulate</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>

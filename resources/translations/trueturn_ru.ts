@@ -2811,6 +2811,10 @@
         <source>Devices in a thread of their own</source>
         <translation>Устройства в собственном потоке</translation>
     </message>
+    <message>
+        <source>The LinuxCNC lathe on the Run page and in simulate</source>
+        <translation>Станок LinuxCNC на странице «Работа» и в simulate</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>
