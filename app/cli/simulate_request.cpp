@@ -171,7 +171,7 @@ void addRunRequestOptions(CommandParser& parser) {
 std::optional<QString> runOptionGiven(const CommandParser& parser) {
     for (const char* option : {"preset", "delay", "parts", "warmup", "seed", "controller", "ewma-weight", "plant-gain",
                                "plant-delay", "step-at", "step-mm", "step-point", "integral", "integral-weight",
-                               "mismatch-action", "drift-weight", "machine"})
+                               "mismatch-action", "drift-weight"})
         if (parser.isSet(QString::fromLatin1(option))) return QStringLiteral("--") + QString::fromLatin1(option);
     return std::nullopt;
 }

@@ -93,7 +93,8 @@ TEST(Gui, SavesAScreenshotOfEveryPage) {
     EXPECT_EQ(
         pages,
         (QStringList{QStringLiteral("calibration.png"), QStringLiteral("controller.png"), QStringLiteral("devices.png"),
-                     QStringLiteral("measurements.png"), QStringLiteral("process.png"), QStringLiteral("reports.png"),
+                     QStringLiteral("measurements.png"), QStringLiteral("plant.png"), QStringLiteral("process.png"),
+                     QStringLiteral("reports.png"),
                      QStringLiteral("run.png"), QStringLiteral("settings.png"), QStringLiteral("tools.png")}));
 }
 

@@ -43,16 +43,18 @@ void runWriters(const QString& dbOption, const storage::DatabaseConfig& config) 
     }
     for (auto& p : writers)
         p->waitForFinished(tt::test::kPatientWaitMs);
-    std::vector<qint64> runIds;
     for (auto& p : writers) {
         ASSERT_EQ(p->state(), QProcess::NotRunning);
         const QString err = QString::fromUtf8(p->readAllStandardError());
         ASSERT_EQ(p->exitCode(), 0) << qPrintable(err);
         EXPECT_FALSE(err.contains(QLatin1String("locked"))) << qPrintable(err);
-        const QJsonObject out = QJsonDocument::fromJson(p->readAllStandardOutput()).object();
-        runIds.push_back(out[QStringLiteral("run_id")].toInteger());
     }
     storage::Database db(config);
+    // The runs as the database numbered them: a plant database (postgresql://) gets them through each terminal's
+    // journal, whose own run numbers (the JSON's run_id) are not the plant's.
+    std::vector<qint64> runIds;
+    for (QSqlQuery q = db.exec(QStringLiteral("SELECT id FROM runs ORDER BY id")); q.next();)
+        runIds.push_back(q.value(0).toLongLong());
     EXPECT_EQ(scalar(db, QStringLiteral("SELECT COUNT(*) FROM runs")), kWriters);
     EXPECT_EQ(scalar(db, QStringLiteral("SELECT COUNT(*) FROM schema_versions WHERE module = 'history'")),
               static_cast<qint64>(storage::historySchema().migrations.size()))
