@@ -90,12 +90,11 @@ TEST(Gui, SavesAScreenshotOfEveryPage) {
     const CliResult r = runTrueturn({QStringLiteral("--screenshots"), shots}, 60000, offscreenGui(home));
     EXPECT_EQ(r.exitCode, 0) << r.err.toStdString();
     const QStringList pages = QDir(shots).entryList({QStringLiteral("*.png")}, QDir::Files, QDir::Name);
-    EXPECT_EQ(
-        pages,
-        (QStringList{QStringLiteral("calibration.png"), QStringLiteral("controller.png"), QStringLiteral("devices.png"),
-                     QStringLiteral("measurements.png"), QStringLiteral("plant.png"), QStringLiteral("process.png"),
-                     QStringLiteral("reports.png"),
-                     QStringLiteral("run.png"), QStringLiteral("settings.png"), QStringLiteral("tools.png")}));
+    EXPECT_EQ(pages,
+              (QStringList{QStringLiteral("calibration.png"), QStringLiteral("controller.png"),
+                           QStringLiteral("devices.png"), QStringLiteral("measurements.png"),
+                           QStringLiteral("plant.png"), QStringLiteral("process.png"), QStringLiteral("reports.png"),
+                           QStringLiteral("run.png"), QStringLiteral("settings.png"), QStringLiteral("tools.png")}));
 }
 
 }  // namespace
