@@ -144,7 +144,9 @@ python3 - "$work/simulate.json" <<'EOF' || fail "trueturn simulate --json: unexp
 import json, math, sys
 d = json.load(open(sys.argv[1]))
 assert d["controller"] == "lqg" and d["parts"] == 200, d
-assert sum(d["verdicts"].values()) == 200 + 100, d["verdicts"]  # the parts and the default 100 warm-up parts
+v = d["verdicts"]  # every machined part: the 200 and the default 100 warm-up parts, which are also counted apart
+assert v["good"] + v["rework"] + v["scrap"] == v["machined_parts"] == 200 + 100, v
+assert sum(v["warmup"].values()) == d["warmup_parts"] == 100, v
 numbers = [d["k_eff"]] + [v for p in d["points"] for v in p.values()]
 assert all(math.isfinite(v) for v in numbers), "a non-finite number"
 # k_eff = open-loop / closed-loop variance. The preset's analytic value (k_eff_analytic, delay 4) is 2.23;
