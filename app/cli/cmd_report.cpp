@@ -1,8 +1,8 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
 // values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
-// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports' runtime::analyseReport
-// (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
-// stored with each reading; the files from ui/reports too (the Reports page writes the same).
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from ui/reports'
+// runtime::analyseReport (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits),
+// the verdicts as stored with each reading; the files from ui/reports too (the Reports page writes the same).
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
@@ -20,9 +20,9 @@
 #include "core/quality/point_analysis.h"
 #include "core/storage/history_store.h"
 #include "core/storage/measurement_query.h"
+#include "reports/report_pdf.h"
 #include "runtime/reports/point_report.h"
 #include "runtime/reports/report_files.h"
-#include "reports/report_pdf.h"
 
 namespace tt::cli {
 
