@@ -193,7 +193,8 @@ void ReportPdf::write(const QString& path, const ReportHeader& header, const std
         throw std::runtime_error("writing '" + path.toStdString() + "' failed: " + file.errorString().toStdString());
 }
 
-void ReportPdf::writeTitlePage(Sheet& sheet, const ReportHeader& header, const std::vector<runtime::PointReport>& points) {
+void ReportPdf::writeTitlePage(Sheet& sheet, const ReportHeader& header,
+                               const std::vector<runtime::PointReport>& points) {
     sheet.text(tr("Quality report"), 18, true);
     sheet.text(tr("Machine: %1").arg(header.machines), 11);
     sheet.text(tr("Job: %1").arg(header.jobs), 11);
@@ -244,7 +245,8 @@ void ReportPdf::writeSmallMultiples(Sheet& sheet, const std::vector<runtime::Poi
     sheet.text(tr("Checked by: ______________________   Date: ____________   Signature: ______________________"), 10);
 }
 
-void ReportPdf::writePointPage(Sheet& sheet, const ReportHeader& header, const runtime::PointReport& p, PointCharts& charts) {
+void ReportPdf::writePointPage(Sheet& sheet, const ReportHeader& header, const runtime::PointReport& p,
+                               PointCharts& charts) {
     sheet.newPage();
     sheet.text(ReportCharts::pointTitle(p), 14, true);
     sheet.text(QStringLiteral("%1 · %2 · %3")

@@ -40,11 +40,13 @@ private:
     struct PointCharts;
     /// The title block, the summary line of every point, the points' location charts side by side and
     /// the signature line.
-    static void writeTitlePage(Sheet& sheet, const ReportHeader& header, const std::vector<runtime::PointReport>& points);
+    static void writeTitlePage(Sheet& sheet, const ReportHeader& header,
+                               const std::vector<runtime::PointReport>& points);
     /// The points' location charts in rows of three, as many as fit above the signature line, then the line.
     static void writeSmallMultiples(Sheet& sheet, const std::vector<runtime::PointReport>& points);
     /// A control point's page: its control charts, histogram, capability table and rule violations.
-    static void writePointPage(Sheet& sheet, const ReportHeader& header, const runtime::PointReport& p, PointCharts& charts);
+    static void writePointPage(Sheet& sheet, const ReportHeader& header, const runtime::PointReport& p,
+                               PointCharts& charts);
 };
 
 }  // namespace tt::reports

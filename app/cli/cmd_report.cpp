@@ -1,8 +1,8 @@
 // `trueturn report`: argument parsing and output only. The readings come from the history (per point only the
 // values the statistics need and their verdict counts, one pass: storage::queryPointReadings; every column of every
-// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from runtime/reports' analyseReport
-// (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the verdicts as
-// stored with each reading; the files from runtime/reports too (the Reports page writes the same).
+// reading for the CSV, DFQ and PDF files: storage::queryMeasurements), the statistics from runtime/reports'
+// analyseReport (core/quality's analysePoint: chart, run rules, capability with the stored tolerance limits), the
+// verdicts as stored with each reading; the files from runtime/reports too (the Reports page writes the same).
 #include <QDateTime>
 #include <QFile>
 #include <QJsonArray>
@@ -22,9 +22,9 @@
 #include "core/quality/point_analysis.h"
 #include "core/storage/history_store.h"
 #include "core/storage/measurement_query.h"
+#include "reports/report_pdf.h"
 #include "runtime/reports/point_report.h"
 #include "runtime/reports/report_files.h"
-#include "reports/report_pdf.h"
 
 namespace tt::cli {
 
@@ -54,7 +54,8 @@ std::pair<QJsonArray, QJsonObject> violationsJson(const core::PointAnalysis& a, 
         QJsonArray parts;
         for (const std::int64_t part : v.partNumbers)
             parts.append(static_cast<qint64>(part));
-        violations.append(QJsonObject{{QStringLiteral("rule"), QString::fromStdString(rule)}, {QStringLiteral("parts"), parts}});
+        violations.append(
+            QJsonObject{{QStringLiteral("rule"), QString::fromStdString(rule)}, {QStringLiteral("parts"), parts}});
     }
     QJsonObject counts;
     for (const auto& [rule, n] : byRule)

@@ -12,10 +12,9 @@
 namespace tt::core {
 
 /// The real lathe as a ShaftMachine, seen from the loop's thread: the devices live in another thread (the
-/// device thread's), joined through relays that the device side pumps (runtime/devices/lathe_link.h): the CNC output's writes
-/// go through a CorrectionRelay, the gauge's readings through a GaugeRelay, and the part cycle is the
-/// operator's (OperatorCycle: the Part finished button). Its time is the wall clock. Every member is
-/// thread-safe.
+/// device thread's), joined through relays that the device side pumps (runtime/devices/lathe_link.h): the CNC output's
+/// writes go through a CorrectionRelay, the gauge's readings through a GaugeRelay, and the part cycle is the operator's
+/// (OperatorCycle: the Part finished button). Its time is the wall clock. Every member is thread-safe.
 class RelayedLathe final : public ShaftMachine {
 public:
     /// `outputNominalDiameterMm`: the diameter the CNC output writes its programs for, if it has one.

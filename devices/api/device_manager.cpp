@@ -5,7 +5,6 @@
 #include <QSettings>
 #include <stdexcept>
 
-
 namespace tt::devices {
 
 namespace {

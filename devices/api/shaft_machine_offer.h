@@ -15,9 +15,9 @@ namespace tt::devices {
 /// own cycle end could offer its lathe the same way). The Run page lists the offers beside the lathe
 /// assembled from the devices of the Devices page and never asks what is behind one.
 struct ShaftMachineOffer {
-    QString key;           ///< stable id, stored with the page's choices ("simulated-lathe")
-    QString name;          ///< in the user's language when the offers were asked for
-    QString description;   ///< one sentence for the page (what turns, measures and corrects the parts)
+    QString key;          ///< stable id, stored with the page's choices ("simulated-lathe")
+    QString name;         ///< in the user's language when the offers were asked for
+    QString description;  ///< one sentence for the page (what turns, measures and corrects the parts)
     /// Its time is simulated (ShaftMachine::jumpTo): the run paces it at a settable multiple of the wall clock.
     bool adjustableSpeed = false;
     /// Makes the machine for one run of `scenario`, its random sources seeded by `seed`. Called in the loop's

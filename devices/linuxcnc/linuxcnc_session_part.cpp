@@ -113,8 +113,7 @@ void LinuxCncSession::sampleUntilIdle(std::vector<std::array<double, 2>>& sample
     const Clock::time_point deadline = Clock::now() + std::chrono::seconds(m_settings.partTimeoutS);
     // After cycle start LinuxCNC may show the program idle for a few task cycles (longer on a busy computer); a
     // program that stays idle this long did not start (a guard refused it, or it failed at once).
-    const Clock::time_point startBy =
-        waitForStart ? deadline : Clock::now() + std::chrono::milliseconds(kStartGraceMs);
+    const Clock::time_point startBy = waitForStart ? deadline : Clock::now() + std::chrono::milliseconds(kStartGraceMs);
     const std::array<double, 2> ref = *m_reference;
     for (std::uint64_t i = 0; !m_stop; ++i) {
         if (i % 16 == 0) {

@@ -63,8 +63,7 @@ private:
 /// worded in the operator's language like every device's.
 class TerminalLathe final : public core::ShaftMachine {
 public:
-    TerminalLathe(const core::ShaftScenario& scenario, std::uint64_t seed)
-        : m_lathe(scenario.shopSpec(seed)) {}
+    TerminalLathe(const core::ShaftScenario& scenario, std::uint64_t seed) : m_lathe(scenario.shopSpec(seed)) {}
 
     core::MachineCycle& cycle() override { return m_cycle; }
     core::CorrectionOutput& output() override { return m_output; }

@@ -40,9 +40,9 @@ struct RunLayout {
     int delay = 1;
     QString controller;
     QString preset;
-    QString machineName;           ///< the machine as the page named it
-    bool operatorCycle = false;    ///< the operator confirms each part
-    bool adjustableSpeed = false;  ///< the machine's time runs at a settable multiple of the wall clock
+    QString machineName;                    ///< the machine as the page named it
+    bool partsConfirmedByOperator = false;  ///< the operator confirms each part
+    bool adjustableSpeed = false;           ///< the machine's time runs at a settable multiple of the wall clock
 };
 
 }  // namespace tt::runtime

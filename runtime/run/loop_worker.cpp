@@ -87,7 +87,7 @@ RunLayout LoopWorker::layoutOf(const RunStart& start) const {
     layout.controller = QString::fromStdString(core::controllerKindName(start.request.controller));
     layout.preset = start.request.preset;
     layout.machineName = start.machineName;
-    layout.operatorCycle = start.can.operatorCycle;
+    layout.partsConfirmedByOperator = start.can.partsConfirmedByOperator;
     layout.adjustableSpeed = m_run->stepper->simulatedTime();
     if (const auto& model = m_run->scenario.systematicModel)
         for (int i = 0; i <= kModelSamples; ++i) {

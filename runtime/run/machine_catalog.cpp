@@ -86,7 +86,7 @@ MachineOffer MachineCatalog::devicesLathe() const {
         "tt::runtime::MachineCatalog",
         "each part's corrections go to the CNC; you machine the part and press Part finished.");
     m.can.usesDevices = true;
-    m.can.operatorCycle = true;
+    m.can.partsConfirmedByOperator = true;
     DeviceHub* hub = m_hub;
     m.startProblem = [hub](const RunRequest& request) { return devicesProblem(hub, request); };
     m.prepare = [hub](const RunRequest& request) -> MachineMaker {

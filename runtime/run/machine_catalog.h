@@ -28,7 +28,7 @@ using MachineMaker = std::function<std::shared_ptr<core::ShaftMachine>(const cor
 struct MachineCapabilities {
     bool adjustableSpeed = false;  ///< its time is simulated: the run paces it at a settable multiple of the wall clock
     bool usesDevices = false;      ///< its CNC output and gauge are chosen from the Devices page
-    bool operatorCycle = false;    ///< the operator confirms each part (Part finished)
+    bool partsConfirmedByOperator = false;  ///< the operator confirms each part (Part finished)
 };
 
 /// One machine a run can go on: a complete machine a device plugin offers (QGroundControl's MockLink is just

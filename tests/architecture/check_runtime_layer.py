@@ -4,7 +4,7 @@
 - runtime/ includes no QtGui, QtWidgets or QtPrintSupport header (an include <QName> is looked up in the
   Qt include folder given);
 - app/cli/ includes nothing from ui/, and ui/ nothing from app/;
-- ui/ does not branch on the kind of machine: none of the names of the former branches (realLatheChosen,
+- ui/ does not branch on the kind of machine: none of the names of the former branches (realLatheChosen, operatorCycle,
   kOwnPass, onSourcesPass, boringTruth, kDevicesMachineKey) and no machine key compared with a literal.
 
 Usage: check_runtime_layer.py SOURCE_DIR QT_INCLUDE_DIR
@@ -14,7 +14,7 @@ import re
 import sys
 
 GUI_MODULES = ("QtGui", "QtWidgets", "QtPrintSupport")
-BRANCH_NAMES = re.compile(r"\b(realLatheChosen|kOwnPass|onSourcesPass|boringTruth|kDevicesMachineKey|kBuiltInLatheKey|"
+BRANCH_NAMES = re.compile(r"\b(realLatheChosen|operatorCycle|kOwnPass|onSourcesPass|boringTruth|kDevicesMachineKey|kBuiltInLatheKey|"
                           r"kDevicesLatheKey)\b")
 MACHINE_KEYS = re.compile(r'"(simulated-lathe|devices-lathe|real-lathe|real)"')
 KEY_COMPARED = re.compile(r"\bmachine\w*(\(\))?\s*(==|!=)\s*(QStringLiteral|QLatin1String|u\"|\")")

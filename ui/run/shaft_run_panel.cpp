@@ -659,7 +659,7 @@ void ShaftRunPanel::updateControls() {
     const runtime::MachineCapabilities can = offer ? offer->can : runtime::MachineCapabilities{};
     // Devices are chosen while idle; during a run the operator's part cycle takes their place.
     m_devicePicker->setVisible(can.usesDevices && idle);
-    m_lathePanel->setVisible(can.operatorCycle && !idle);
+    m_lathePanel->setVisible(can.partsConfirmedByOperator && !idle);
     const bool adjustable = idle ? can.adjustableSpeed : m_layout.adjustableSpeed;
     m_speedLabel->setVisible(adjustable);
     m_speed->setVisible(adjustable);
@@ -668,7 +668,7 @@ void ShaftRunPanel::updateControls() {
 
 void ShaftRunPanel::updateLathePanel() {
     LathePanel::View v;
-    const bool cycleRun = m_haveRun && m_layout.operatorCycle;
+    const bool cycleRun = m_haveRun && m_layout.partsConfirmedByOperator;
     v.runGoing =
         cycleRun && (m_snapshot.state == core::LoopState::Running || m_snapshot.state == core::LoopState::Paused);
     if (cycleRun) {
