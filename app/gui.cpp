@@ -4,6 +4,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QLoggingCategory>
+#include <QSettings>
 #include <QTimer>
 #include <cstdio>
 #include <memory>
@@ -12,6 +13,7 @@
 #include "core/storage/database_location.h"
 #include "devices/api/plugin_folder.h"
 #include "runtime/devices/terminal_devices.h"
+#include "runtime/history/terminal_history.h"
 #include "ui/app_state.h"
 #include "ui/auth/log_in_gate.h"
 #include "ui/auth/user_session.h"
@@ -76,6 +78,8 @@ int runGui(int argc, char** argv) {
     for (const QString& problem : devices.problems())
         std::fprintf(stderr, "trueturn: devices: %s\n", qPrintable(problem));
 
+    if (!options.machine.isEmpty())
+        QSettings().setValue(QString::fromLatin1(runtime::kMachineNameSetting), options.machine);
     ui::AppState state;
     ui::DialogPrompt prompt;
     ui::AppContext context{&prompt, &state, &language,

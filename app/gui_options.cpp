@@ -31,7 +31,14 @@ void addOptions(QCommandLineParser& parser) {
     parser.addOption({QStringLiteral("page"), QStringLiteral("Page to open: %1.").arg(pageKeys().join(u", ")),
                       QStringLiteral("name")});
     parser.addOption({QStringLiteral("lang"), QStringLiteral("Interface language: en or ru."), QStringLiteral("code")});
-    parser.addOption({QStringLiteral("db"), QStringLiteral("Run history database file."), QStringLiteral("file")});
+    parser.addOption({QStringLiteral("db"),
+                      QStringLiteral("Run history: an SQLite file, or a postgresql:// plant database written through "
+                                     "this terminal's journal."),
+                      QStringLiteral("file")});
+    parser.addOption({QStringLiteral("machine"),
+                      QStringLiteral("This lathe's name in a plant database (kept for later starts; default: the "
+                                     "computer's name)."),
+                      QStringLiteral("name")});
     parser.addOption({QStringLiteral("screenshots"), QStringLiteral("Save every page as PNG into the folder and quit."),
                       QStringLiteral("dir")});
     parser.addOption({QStringLiteral("kiosk"),
@@ -54,6 +61,9 @@ GuiParse readValues(const QCommandLineParser& parser) {
     if (!o.language.isEmpty() && o.language != u"en" && o.language != u"ru")
         return usage(QStringLiteral("--lang: '%1' is not en or ru").arg(o.language));
     o.databasePath = parser.value(QStringLiteral("db"));
+    o.machine = parser.value(QStringLiteral("machine")).trimmed();
+    if (parser.isSet(QStringLiteral("machine")) && o.machine.isEmpty())
+        return usage(QStringLiteral("--machine: the lathe's name is empty"));
     o.screenshotDir = parser.value(QStringLiteral("screenshots"));
     o.kiosk = parser.isSet(QStringLiteral("kiosk"));
     if (parser.isSet(QStringLiteral("quit-after-ms"))) {

@@ -11,6 +11,7 @@ struct GuiOptions {
     QString page;           ///< page to open first ("run", "devices", ...)
     QString language;       ///< "en" or "ru"; empty: the saved choice
     QString databasePath;   ///< history database; empty: the default in the user's data folder
+    QString machine;        ///< the lathe's name in a plant database (kept as a setting); empty: unchanged
     QString screenshotDir;  ///< grab every page to <dir>/<page>.png and quit
     int quitAfterMs = -1;   ///< quit after this many milliseconds (test hook); -1: never
     bool kiosk = false;     ///< full screen, no window decorations, quitting needs an engineer

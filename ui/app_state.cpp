@@ -26,6 +26,13 @@ void AppState::setDatabaseDescription(const QString& description) {
     emit databaseChanged();
 }
 
+void AppState::setPlantLink(const QString& text, bool warns) {
+    if (text == m_plantLink && warns == m_plantLinkWarns) return;
+    m_plantLink = text;
+    m_plantLinkWarns = warns;
+    emit databaseChanged();
+}
+
 void AppState::setOperatorName(const QString& name) {
     if (name == m_operatorName) return;
     m_operatorName = name;

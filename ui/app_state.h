@@ -22,6 +22,10 @@ public:
     Tone deviceTone() const { return m_deviceTone; }
     QString deviceSummary() const { return m_deviceSummary; }
     QString databaseDescription() const { return m_databaseDescription; }
+    /// The plant database's link as the operator reads it (empty with a local history).
+    QString plantLink() const { return m_plantLink; }
+    /// Whether the plant link needs the operator's eye (offline, the journal nearly full).
+    bool plantLinkWarns() const { return m_plantLinkWarns; }
     /// Where the application's log is written (ui/log_file.h); empty when it is not written.
     QString logFilePath() const { return m_logFilePath; }
     void setLogFilePath(const QString& path) { m_logFilePath = path; }
@@ -30,6 +34,7 @@ public:
     void setLoop(Loop loop, const QString& detail);
     void setDevices(Tone tone, const QString& summary);
     void setDatabaseDescription(const QString& description);
+    void setPlantLink(const QString& text, bool warns);
     void setOperatorName(const QString& name);
 
     /// Translated name of a loop state ("Running").
@@ -47,6 +52,8 @@ private:
     Tone m_deviceTone = Tone::Idle;
     QString m_deviceSummary;
     QString m_databaseDescription;
+    QString m_plantLink;
+    bool m_plantLinkWarns = false;
     QString m_logFilePath;
     QString m_operatorName;
 };

@@ -318,7 +318,12 @@ void MainWindow::updateDeviceState() {
 void MainWindow::updateDatabase() {
     QString db = m_context.state ? m_context.state->databaseDescription() : QString();
     if (db.isEmpty()) db = m_context.databasePath;
-    m_statusDatabase->setText(tr("History: %1").arg(db));
+    const QString plant = m_context.state ? m_context.state->plantLink() : QString();
+    // With a plant database its link is what the operator needs to read; the URL is in the tooltip.
+    m_statusDatabase->setText(plant.isEmpty() ? tr("History: %1").arg(db) : plant);
+    m_statusDatabase->setToolTip(tr("History: %1").arg(db));
+    setTone(m_statusDatabase,
+            m_context.state && m_context.state->plantLinkWarns() ? QStringLiteral("warn") : QStringLiteral("idle"));
 }
 
 }  // namespace tt::ui

@@ -11,6 +11,7 @@
 #include "app/cli/command.h"
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
+#include "core/storage/history_store.h"
 #include "runtime/reports/plant_report.h"
 
 namespace tt::cli {
@@ -28,10 +29,12 @@ void printText(const runtime::PlantOverview& overview) {
                        overview.dayFrom.toString(QStringLiteral("yyyy-MM-dd HH:mm")))
                   .arg(overview.windowParts));
     for (const runtime::PlantMachine& m : overview.machines) {
-        QString line = QStringLiteral("%1  %2").arg(QString::fromStdString(m.machine), -12).arg(
-            QString::fromStdString(runtime::machineStateName(m.state)), -8);
-        line += m.lastPartAt ? QStringLiteral("  last part %1").arg(m.lastPartAt->toString(QStringLiteral("MM-dd HH:mm")))
-                             : QStringLiteral("  no part");
+        QString line = QStringLiteral("%1  %2")
+                           .arg(QString::fromStdString(m.machine), -12)
+                           .arg(QString::fromStdString(runtime::machineStateName(m.state)), -8);
+        line += m.lastPartAt
+                    ? QStringLiteral("  last part %1").arg(m.lastPartAt->toString(QStringLiteral("MM-dd HH:mm")))
+                    : QStringLiteral("  no part");
         if (m.backlogParts) line += QStringLiteral("  backlog %1").arg(*m.backlogParts);
         line += QStringLiteral("  today %1/%2/%3").arg(m.today.good).arg(m.today.rework).arg(m.today.scrap);
         for (const runtime::PlantPointCapability& p : m.points) {
@@ -44,6 +47,18 @@ void printText(const runtime::PlantOverview& overview) {
         }
         if (m.openAlarmCount > 0) line += QStringLiteral("  alarms %1").arg(m.openAlarmCount);
         printLine(line);
+    }
+}
+
+/// `--setup`: migrates the history schema with write access (on PostgreSQL also the plant's roles and policies).
+void setUpPlantDatabase(const storage::DatabaseConfig& config) {
+    try {
+        storage::Database db(config);
+        db.migrate(storage::historySchema());
+    } catch (const storage::StorageError& e) {
+        throw UsageError(std::string("--setup: the plant database cannot be set up (it needs its owner's login, "
+                                     "allowed to create roles or with the two group roles made first): ") +
+                         e.what());
     }
 }
 
@@ -61,12 +76,19 @@ int run(const QStringList& arguments) {
                      QStringLiteral("Judge the states and the day at this ISO 8601 time (default: now; a time without "
                                     "zone is UTC)."),
                      QStringLiteral("time"));
-    parser.addOption(QStringLiteral("window"),
-                     QStringLiteral("Parts in a capability window, 10..10000 (default %1).").arg(runtime::kPlantWindowParts),
-                     QStringLiteral("n"));
+    parser.addOption(
+        QStringLiteral("window"),
+        QStringLiteral("Parts in a capability window, 10..10000 (default %1).").arg(runtime::kPlantWindowParts),
+        QStringLiteral("n"));
+    parser.addOption(
+        QStringLiteral("setup"),
+        QStringLiteral("First bring the plant database up to date, as its owner: the history tables, the "
+                       "group roles trueturn_terminal and trueturn_quality, their rights and the row-level "
+                       "policies (once for a new plant database and after an update of TrueTurn)."));
     parser.parse(arguments);
 
     storage::DatabaseConfig config = databaseConfigFromOption(parser.required(QStringLiteral("db")));
+    if (parser.isSet(QStringLiteral("setup"))) setUpPlantDatabase(config);
     config.readOnly = config.kind == storage::DatabaseConfig::Kind::Postgres;  // a hot standby, the quality role
     QDateTime at = QDateTime::currentDateTimeUtc();
     if (parser.isSet(QStringLiteral("at"))) {

@@ -9,6 +9,7 @@
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
 #include "core/storage/history_store.h"
+#include "runtime/history/terminal_history.h"
 
 namespace tt::cli {
 
@@ -42,21 +43,25 @@ void addRunHistoryOptions(CommandParser& parser) {
 }
 
 storage::JournalOptions journalOptionsOf(const CommandParser& parser, const storage::DatabaseConfig& plant) {
-    storage::JournalOptions options;
-    options.machine = parser.isSet(QStringLiteral("machine")) ? parser.value(QStringLiteral("machine"))
-                                                               : QSysInfo::machineHostName();
-    if (options.machine.trimmed().isEmpty())
-        throw UsageError("--machine: the lathe's name is empty (a plant database tells its machines by name)");
-    options.plant = plant.describe();
-    options.limitBytes = parser.isSet(QStringLiteral("journal-limit-mb"))
-                             ? parser.integer(QStringLiteral("journal-limit-mb"), 1, 1LL << 20) * 1024 * 1024
-                             : storage::journalLimitFromSettings();
     try {
-        options.path = parser.isSet(QStringLiteral("journal")) ? parser.value(QStringLiteral("journal"))
-                                                               : storage::defaultJournalPath(options.machine, plant);
-    } catch (const storage::StorageError& e) {
-        throw UsageError(std::string("--journal: ") + e.what());
+        return runtime::journalOptionsFor(terminalOptionsOf(parser, plant.describe()), plant);
+    } catch (const runtime::TerminalHistoryError& e) {
+        throw UsageError(std::string(parser.isSet(QStringLiteral("journal")) ? "--journal: " : "--machine: ") +
+                         e.what());
     }
+}
+
+runtime::TerminalHistoryOptions terminalOptionsOf(const CommandParser& parser, const QString& database) {
+    runtime::TerminalHistoryOptions options;
+    options.location = database;
+    options.machine =
+        parser.isSet(QStringLiteral("machine")) ? parser.value(QStringLiteral("machine")) : QSysInfo::machineHostName();
+    options.journalLimitBytes = parser.isSet(QStringLiteral("journal-limit-mb"))
+                                    ? parser.integer(QStringLiteral("journal-limit-mb"), 1, 1LL << 20) * 1024 * 1024
+                                    : storage::journalLimitFromSettings();
+    if (parser.isSet(QStringLiteral("journal"))) options.journalPath = parser.value(QStringLiteral("journal"));
+    if (parser.isSet(QStringLiteral("forward-batch")))
+        options.batchParts = static_cast<int>(parser.integer(QStringLiteral("forward-batch"), 1, 10000));
     return options;
 }
 
@@ -64,47 +69,30 @@ RunHistory::RunHistory(const CommandParser& parser, const QString& database, boo
     const storage::DatabaseConfig config = databaseConfigFromOption(database);
     if (parser.isSet(QStringLiteral("drain-wait")))
         m_drainWaitS = static_cast<double>(parser.integer(QStringLiteral("drain-wait"), 0, 86400));
-    if (config.kind == storage::DatabaseConfig::Kind::Sqlite) {
+    if (config.kind == storage::DatabaseConfig::Kind::Sqlite)
         for (const char* option : {"journal", "journal-limit-mb", "forward-batch", "drain-wait"})
             if (parser.isSet(QString::fromLatin1(option)))
                 throw UsageError(std::string("--") + option +
                                  ": only with a plant database (--db postgresql://...); an SQLite file is the history");
-        try {
-            m_database = std::make_unique<storage::Database>(config);
-            m_store = std::make_unique<storage::SqlHistoryStore>(*m_database);
-        } catch (const storage::StorageError& e) {
-            throw UsageError(std::string("--db: ") + e.what());
-        }
-        return;
-    }
-    storage::ForwarderOptions forward;
-    forward.plant = config;
-    const storage::JournalOptions journal = journalOptionsOf(parser, config);
-    if (parser.isSet(QStringLiteral("forward-batch")))
-        forward.settings.batchParts = static_cast<int>(parser.integer(QStringLiteral("forward-batch"), 1, 10000));
+    runtime::TerminalHistoryOptions options = terminalOptionsOf(parser, database);
+    if (config.kind != storage::DatabaseConfig::Kind::Sqlite && options.machine.trimmed().isEmpty())
+        throw UsageError("--machine: the lathe's name is empty (a plant database tells its machines by name)");
     try {
-        auto store = std::make_unique<storage::HistoryJournal>(journal);
-        m_journal = store.get();
-        m_store = std::move(store);
-    } catch (const storage::StorageError& e) {
-        throw UsageError(std::string("--journal: ") + e.what());
+        m_history = std::make_unique<runtime::TerminalHistory>(options);
+    } catch (const runtime::TerminalHistoryError& e) {
+        throw UsageError(
+            std::string(e.part() == runtime::TerminalHistoryError::Part::Database ? "--db: " : "--journal: ") +
+            e.what());
     }
-    forward.journalPath = journal.path;
-    forward.machine = journal.machine;
-    forward.journalLimitBytes = journal.limitBytes;
-    m_forwarder = std::make_unique<storage::PlantForwarderThread>(forward);
-    m_forwarder->setStatusCallback([this](const storage::ForwarderStatus& s) { printStatus(s); });
-    m_journal->setWrittenCallback([forwarder = m_forwarder.get()] { forwarder->wake(); });
-    m_forwarder->start();
+    if (storage::PlantForwarderThread* forwarder = m_history->forwarder())
+        forwarder->setStatusCallback([this](const storage::ForwarderStatus& s) { printStatus(s); });
+    m_history->startForwarding();
 }
 
-RunHistory::~RunHistory() {
-    if (m_journal) m_journal->setWrittenCallback({});
-    m_forwarder.reset();
-}
+RunHistory::~RunHistory() = default;
 
 core::HistoryStore& RunHistory::store() {
-    return *m_store;
+    return m_history->store();
 }
 
 void RunHistory::printStatus(const storage::ForwarderStatus& s) {
@@ -124,9 +112,10 @@ void RunHistory::printStatus(const storage::ForwarderStatus& s) {
 }
 
 void RunHistory::finish() {
-    if (!m_forwarder) return;
-    const bool drained = m_forwarder->drainAndStop(m_drainWaitS);
-    const storage::ForwarderStatus s = m_forwarder->status();
+    storage::PlantForwarderThread* forwarder = m_history->forwarder();
+    if (!forwarder) return;
+    const bool drained = m_history->drain(m_drainWaitS);
+    const storage::ForwarderStatus s = forwarder->status();
     if (drained) {
         if (m_progress) std::fprintf(stderr, "%s\n", qPrintable(s.describe()));
         return;
@@ -134,16 +123,17 @@ void RunHistory::finish() {
     std::fprintf(stderr,
                  "trueturn: the plant database did not take every part within %.0f s: %lld part(s) are kept in the "
                  "journal %s and are sent by the next run or `trueturn forward` (%s)\n",
-                 m_drainWaitS, static_cast<long long>(s.backlogParts), qPrintable(m_journal->options().path),
+                 m_drainWaitS, static_cast<long long>(s.backlogParts), qPrintable(m_history->journal()->options().path),
                  qPrintable(s.reason.isEmpty() ? s.describe() : s.reason));
 }
 
 void RunHistory::addJson(QJsonObject& out) const {
-    if (!m_forwarder) return;
-    const storage::ForwarderStatus s = m_forwarder->status();
+    if (!forwarding()) return;
+    const storage::ForwarderStatus s = m_history->forwarder()->status();
+    const storage::JournalOptions& journal = m_history->journal()->options();
     out.insert(QStringLiteral("plant"),
-               QJsonObject{{QStringLiteral("journal"), m_journal->options().path},
-                           {QStringLiteral("machine"), m_journal->options().machine},
+               QJsonObject{{QStringLiteral("journal"), journal.path},
+                           {QStringLiteral("machine"), journal.machine},
                            {QStringLiteral("drained"), s.drained && s.backlogParts == 0},
                            {QStringLiteral("backlog_parts"), static_cast<qint64>(s.backlogParts)},
                            {QStringLiteral("sent_parts"), static_cast<qint64>(s.sentParts)}});

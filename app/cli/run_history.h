@@ -8,6 +8,7 @@
 #include "core/storage/database.h"
 #include "core/storage/history_journal.h"
 #include "core/storage/plant_forwarder_thread.h"
+#include "runtime/history/terminal_history.h"
 
 namespace tt::cli {
 
@@ -31,7 +32,7 @@ public:
     /// The store the loop writes.
     core::HistoryStore& store();
     /// Whether the runs go to a plant database through the journal.
-    bool forwarding() const { return m_forwarder != nullptr; }
+    bool forwarding() const { return m_history->forwarder() != nullptr; }
     /// At the end of the command: waits until the forwarder has sent everything, at most --drain-wait
     /// seconds, and says on stderr what was not sent (it stays in the journal and goes with the next run
     /// or `trueturn forward`).
@@ -42,10 +43,7 @@ public:
 private:
     void printStatus(const storage::ForwarderStatus& status);
 
-    std::unique_ptr<storage::Database> m_database;
-    std::unique_ptr<core::HistoryStore> m_store;
-    storage::HistoryJournal* m_journal = nullptr;
-    std::unique_ptr<storage::PlantForwarderThread> m_forwarder;
+    std::unique_ptr<runtime::TerminalHistory> m_history;
     double m_drainWaitS = 600.0;
     bool m_progress = false;
     qint64 m_lastPrintMs = -1;
@@ -56,6 +54,10 @@ private:
 /// Adds the options of a plant-database run: --journal FILE, --journal-limit-mb N, --forward-batch N,
 /// --drain-wait S.
 void addRunHistoryOptions(CommandParser& parser);
+
+/// The terminal's history options of --db (`database`), --machine, --journal, --journal-limit-mb and
+/// --forward-batch; throws UsageError.
+runtime::TerminalHistoryOptions terminalOptionsOf(const CommandParser& parser, const QString& database);
 
 /// The journal options of --db (a postgresql:// URL), --machine and --journal / --journal-limit-mb; throws
 /// UsageError.

@@ -171,7 +171,12 @@ void Database::openPostgres() {
     db.setDatabaseName(m_config.databaseName);
     db.setUserName(m_config.user);
     db.setPassword(m_config.password);
-    db.setConnectOptions(QStringLiteral("connect_timeout=5"));
+    // A server that stops answering (killed, the network gone) must not hold a terminal's thread for ever:
+    // a bounded connect, TCP keep-alives and an unacknowledged-data timeout end a dead connection within
+    // about 15 s with an error, and the caller retries.
+    db.setConnectOptions(
+        QStringLiteral("connect_timeout=5;keepalives=1;keepalives_idle=5;keepalives_interval=2;"
+                       "keepalives_count=3;tcp_user_timeout=15000"));
     if (!db.open())
         throw StorageError("cannot connect to " + m_config.describe().toStdString() + ": " +
                            sqlError(db.lastError()).toStdString());

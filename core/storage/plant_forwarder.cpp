@@ -7,7 +7,8 @@
 namespace tt::storage {
 
 QString ForwarderStatus::describe() const {
-    const QString kept = QStringLiteral("%1 part%2 kept on this terminal").arg(backlogParts).arg(backlogParts == 1 ? "" : "s");
+    const QString kept =
+        QStringLiteral("%1 part%2 kept on this terminal").arg(backlogParts).arg(backlogParts == 1 ? "" : "s");
     QString line;
     switch (link) {
         case Link::Offline:
@@ -52,6 +53,9 @@ PlantForwarder::~PlantForwarder() = default;
 Database& PlantForwarder::plant() {
     if (!m_plant) {
         auto plant = std::make_unique<Database>(m_plantConfig);
+        // A batch that waits on the server (a lock, a recovering server) fails after a bound and is sent again
+        // instead of holding the forwarder (and the terminal's shutdown) for ever.
+        plant->exec(QStringLiteral("SET statement_timeout = %1").arg(kForwardStatementTimeoutMs));
         // The owner of the plant database brings its schema up to date; a terminal's role finds it current.
         plant->migrate(historySchema());
         m_plant = std::move(plant);

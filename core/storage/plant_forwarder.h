@@ -17,6 +17,10 @@ namespace tt::storage {
 /// 20 terminals against one server).
 inline constexpr int kDefaultForwardBatchParts = 200;
 
+/// The longest a statement of the forwarder may run on the plant database before the server cancels it (the
+/// batch is then sent again), ms.
+inline constexpr int kForwardStatementTimeoutMs = 60000;
+
 /// How the forwarder sends and retries.
 struct ForwarderSettings {
     int batchParts = kDefaultForwardBatchParts;  ///< parts per batch, 1 .. 10000
@@ -42,7 +46,8 @@ struct ForwarderStatus {
 
     /// The journal is at kJournalWarnShare of its bound or more (the operator is warned).
     bool nearFull() const {
-        return journalLimitBytes > 0 && journalBytes >= static_cast<std::int64_t>(kJournalWarnShare * journalLimitBytes);
+        return journalLimitBytes > 0 &&
+               journalBytes >= static_cast<std::int64_t>(kJournalWarnShare * journalLimitBytes);
     }
     /// The journal is at its bound: the loop takes no new part.
     bool full() const { return journalLimitBytes > 0 && journalBytes >= journalLimitBytes; }

@@ -2724,6 +2724,33 @@
     </message>
 </context>
 <context>
+    <name>tt::ui</name>
+    <message>
+        <source>Plant database offline since %1; parts kept on this terminal: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plant database: connecting; parts kept on this terminal: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plant database: every part sent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plant database: sending; parts kept on this terminal: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1. The journal on this terminal is full (%2 of %3 MiB): the loop takes no new part until the plant database has taken parts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1. The journal on this terminal is nearly full (%2 of %3 MiB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::About</name>
     <message>
         <source>In-process compensation of boring-bar deflection</source>
@@ -6722,6 +6749,10 @@ point %1</source>
     </message>
     <message>
         <source>Audit trail…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This lathe in the plant database</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

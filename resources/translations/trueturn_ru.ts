@@ -2734,6 +2734,33 @@
     </message>
 </context>
 <context>
+    <name>tt::ui</name>
+    <message>
+        <source>Plant database offline since %1; parts kept on this terminal: %2</source>
+        <translation>Заводская база данных недоступна с %1; деталей хранится на этом терминале: %2</translation>
+    </message>
+    <message>
+        <source>Plant database: connecting; parts kept on this terminal: %1</source>
+        <translation>Заводская база данных: подключение; деталей хранится на этом терминале: %1</translation>
+    </message>
+    <message>
+        <source>Plant database: every part sent</source>
+        <translation>Заводская база данных: все детали переданы</translation>
+    </message>
+    <message>
+        <source>Plant database: sending; parts kept on this terminal: %1</source>
+        <translation>Заводская база данных: передача; деталей хранится на этом терминале: %1</translation>
+    </message>
+    <message>
+        <source>%1. The journal on this terminal is full (%2 of %3 MiB): the loop takes no new part until the plant database has taken parts</source>
+        <translation>%1. Журнал на этом терминале заполнен (%2 из %3 МиБ): цикл не берёт новую деталь, пока заводская база данных не примет детали</translation>
+    </message>
+    <message>
+        <source>%1. The journal on this terminal is nearly full (%2 of %3 MiB)</source>
+        <translation>%1. Журнал на этом терминале почти заполнен (%2 из %3 МиБ)</translation>
+    </message>
+</context>
+<context>
     <name>tt::ui::About</name>
     <message>
         <source>Run-to-run LQG control of the shaft profile</source>
@@ -6775,6 +6802,10 @@ point %1</source>
     <message>
         <source>Audit trail…</source>
         <translation>Журнал аудита…</translation>
+    </message>
+    <message>
+        <source>This lathe in the plant database</source>
+        <translation>Этот станок в заводской базе данных</translation>
     </message>
 </context>
 <context>

@@ -62,16 +62,23 @@ double LoopWorker::wallS() const {
 void LoopWorker::openHistory(const QString& path) {
     if (path.isEmpty()) {
         m_history.reset();
-        m_database.reset();
-        m_openDatabasePath.clear();
         return;
     }
-    if (m_history && path == m_openDatabasePath) return;
+    if (m_history && path == m_history->location()) return;
     m_history.reset();
-    m_database.reset();
-    m_database = std::make_unique<storage::Database>(storage::DataStores(path).config());
-    m_history = std::make_unique<storage::SqlHistoryStore>(*m_database);
-    m_openDatabasePath = path;
+    TerminalHistoryOptions options;
+    options.location = path;
+    options.machine = terminalMachineName();
+    options.journalLimitBytes = storage::journalLimitFromSettings();
+    m_history = std::make_unique<TerminalHistory>(options);
+    if (storage::PlantForwarderThread* forwarder = m_history->forwarder())
+        connect(forwarder, &storage::PlantForwarderThread::statusChanged, this, &LoopWorker::plantStatus,
+                Qt::QueuedConnection);
+    m_history->startForwarding();
+}
+
+core::HistoryStore* LoopWorker::history() const {
+    return m_history ? &m_history->store() : nullptr;
 }
 
 RunLayout LoopWorker::layoutOf(const RunStart& start) const {
@@ -140,7 +147,7 @@ void LoopWorker::begin(const RunStart& start, std::optional<qint64> resumeRunId)
 }
 
 void LoopWorker::launch(const RunStart& start, std::optional<qint64> resumeRunId) {
-    m_run = assembleRun(start.request, start.make, m_history.get());
+    m_run = assembleRun(start.request, start.make, history());
     m_run->engine->setListener(m_relay.get());
     m_pace.emplace(m_run->machine->clock().nowS(), wallS(), start.request.speed);
     qCInfo(lcLoop).noquote() << "run started:" << start.request.preset
@@ -151,10 +158,10 @@ void LoopWorker::launch(const RunStart& start, std::optional<qint64> resumeRunId
         startRun(*m_run);
         return;
     }
-    const std::optional<core::ResumePoint> point = m_history ? m_history->resumePoint(*resumeRunId) : std::nullopt;
+    const std::optional<core::ResumePoint> point = m_history ? history()->resumePoint(*resumeRunId) : std::nullopt;
     if (!point) throw std::runtime_error("run " + std::to_string(*resumeRunId) + " has no part to continue from");
     emit started(layoutOf(start));
-    resumeRun(*m_run, *point, m_history->parts(*resumeRunId));
+    resumeRun(*m_run, *point, history()->parts(*resumeRunId));
     m_pace.emplace(m_run->machine->clock().nowS(), wallS(), start.request.speed);
     qCInfo(lcLoop).noquote() << "run" << *resumeRunId << "resumed from part" << point->lastPartNumber + 1;
 }
@@ -236,7 +243,6 @@ void LoopWorker::shutdown() {
     if (m_run && m_run->engine->state() != core::LoopState::Idle) m_run->engine->stop();
     m_run.reset();
     m_history.reset();
-    m_database.reset();
 }
 
 void LoopWorker::tick() {

@@ -11,6 +11,7 @@
 #include "core/control/run_to_run_setup.h"
 #include "core/loop/loop_events.h"
 #include "core/loop/shaft_run_stepper.h"
+#include "runtime/history/terminal_history.h"
 #include "runtime/run/loop_snapshot.h"
 #include "runtime/run/machine_catalog.h"
 #include "runtime/run/run_request.h"
@@ -93,6 +94,9 @@ signals:
     void tuningTaken(qint64 partNumber);
     /// A command was not taken (wrong part, no run), in plain words.
     void notice(const QString& text);
+    /// The plant database's forwarder changed state (only with a plant database): online, offline since,
+    /// the parts kept on this terminal.
+    void plantStatus(const tt::storage::ForwarderStatus& status);
 
 private:
     class Relay;
@@ -104,7 +108,10 @@ private:
     void publish();
     LoopSnapshot snapshotNow() const;
     void onEvent(const core::LoopEvent& event);
+    /// Opens the history `path` (an SQLite file, or a plant database through this terminal's journal and its
+    /// forwarder) unless it is open; throws TerminalHistoryError.
     void openHistory(const QString& path);
+    core::HistoryStore* history() const;
     RunLayout layoutOf(const RunStart& start) const;
 
     QTimer* m_timer = nullptr;
@@ -113,11 +120,9 @@ private:
     std::unique_ptr<Relay> m_relay;
     std::optional<core::WallPace> m_pace;
     LoopSnapshot m_last;
-    std::string m_lastDetail;  ///< the engine's status as last published
-    QString m_openDatabasePath;
+    std::string m_lastDetail;      ///< the engine's status as last published
     bool m_tuningPending = false;  ///< a replaced controller waits for the next part
-    std::unique_ptr<storage::Database> m_database;
-    std::unique_ptr<storage::SqlHistoryStore> m_history;
+    std::unique_ptr<TerminalHistory> m_history;
 };
 
 }  // namespace tt::runtime

@@ -23,6 +23,7 @@ RunSession::RunSession(QObject* parent) : QObject(parent) {
     connect(m_worker, &LoopWorker::partProfile, this, &RunSession::partProfile);
     connect(m_worker, &LoopWorker::notice, this, &RunSession::notice);
     connect(m_worker, &LoopWorker::tuningTaken, this, &RunSession::tuningTaken);
+    connect(m_worker, &LoopWorker::plantStatus, this, &RunSession::plantStatus);
     m_thread.start();
 }
 

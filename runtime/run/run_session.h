@@ -51,6 +51,9 @@ signals:
     void notice(const QString& text);
     /// The running loop's controller was replaced by the applied tuning from part `partNumber` on.
     void tuningTaken(qint64 partNumber);
+    /// The plant database's forwarder changed state (runs stored in a plant database through this terminal's
+    /// journal): online or offline since when, and the parts kept on this terminal.
+    void plantStatus(const tt::storage::ForwarderStatus& status);
 
 private:
     QThread m_thread;

@@ -9,6 +9,7 @@
 #include <QSettings>
 #include <QVBoxLayout>
 
+#include "runtime/history/terminal_history.h"
 #include "ui/app_state.h"
 #include "ui/auth/audit_dialog.h"
 #include "ui/auth/audit_trail.h"
@@ -31,6 +32,8 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
       m_operator(new QLineEdit(this)),
       m_databaseLabel(new QLabel(this)),
       m_database(new QLabel(this)),
+      m_machineLabel(new QLabel(this)),
+      m_machine(new QLabel(this)),
       m_sectionGeneral(new QLabel(this)),
       m_sectionUsers(new QLabel(this)),
       m_userLabel(new QLabel(this)),
@@ -44,6 +47,10 @@ SettingsPage::SettingsPage(AppContext& context, QWidget* parent)
     m_operator->setText(savedOperator);
     if (context.state && !context.session) context.state->setOperatorName(savedOperator);
     m_database->setText(context.databasePath);
+    m_machine->setText(runtime::terminalMachineName());
+    m_machine->setObjectName(QStringLiteral("plantMachine"));
+    m_machineLabel->setVisible(runtime::isPlantDatabase(context.databasePath));
+    m_machine->setVisible(runtime::isPlantDatabase(context.databasePath));
 
     connect(m_language, &QComboBox::activated, this, &SettingsPage::onLanguageChosen);
     connect(m_operator, &QLineEdit::editingFinished, this, &SettingsPage::onOperatorEdited);
@@ -75,6 +82,7 @@ void SettingsPage::buildLayout() {
     form->addRow(m_languageLabel, m_language);
     form->addRow(m_operatorLabel, m_operator);
     form->addRow(m_databaseLabel, m_database);
+    form->addRow(m_machineLabel, m_machine);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(32, 24, 32, 24);
     layout->addWidget(m_sectionGeneral);
@@ -157,6 +165,7 @@ void SettingsPage::retranslate() {
     m_operatorLabel->setText(tr("Operator"));
     m_operator->setPlaceholderText(tr("Name recorded with every change you apply"));
     m_databaseLabel->setText(tr("Run history"));
+    m_machineLabel->setText(tr("This lathe in the plant database"));
     if (context().language) m_language->setCurrentIndex(m_language->findData(context().language->current()));
 }
 

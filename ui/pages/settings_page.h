@@ -37,6 +37,8 @@ private:
     QLineEdit* m_operator;
     QLabel* m_databaseLabel;
     QLabel* m_database;
+    QLabel* m_machineLabel;
+    QLabel* m_machine;  ///< this lathe's name in a plant database (shown with a plant database only)
     QLabel* m_sectionGeneral;
     QLabel* m_sectionUsers;
     QLabel* m_userLabel;

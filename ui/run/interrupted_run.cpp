@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/storage/data_stores.h"
+#include "runtime/history/terminal_history.h"
 #include "runtime/run/machine_catalog.h"
 #include "ui/app_context.h"
 #include "ui/log_categories.h"
@@ -27,6 +28,15 @@ QString machineOf(AppContext& context, const runtime::InterruptedRun& run) {
 
 std::optional<runtime::InterruptedRun> findInterruptedRun(AppContext& context) {
     try {
+        if (runtime::isPlantDatabase(context.databasePath)) {
+            // The runs this terminal may continue are in its journal (their numbers are the journal's): the
+            // plant database holds every machine's and may be unreachable now.
+            runtime::TerminalHistoryOptions options;
+            options.location = context.databasePath;
+            options.machine = runtime::terminalMachineName();
+            runtime::TerminalHistory local(options);
+            return runtime::findInterruptedRun(local.store());
+        }
         core::HistoryStore* history = context.data().history();
         return history ? runtime::findInterruptedRun(*history) : std::nullopt;
     } catch (const std::exception& e) {

@@ -27,6 +27,7 @@
 #include "ui/run/lathe_panel.h"
 #include "ui/run/manual_entry_panel.h"
 #include "ui/run/notice_text.h"
+#include "ui/run/plant_link_text.h"
 #include "ui/run/profile_panel.h"
 #include "ui/run/verdict_counter.h"
 
@@ -165,6 +166,11 @@ QWidget* ShaftRunPanel::buildLeft() {
     options->addStretch(1);
     column->addLayout(options);
     column->addWidget(m_devices);  // the machine and its devices in words, under the profile
+    m_plantLink = new QLabel(left);
+    m_plantLink->setObjectName(QStringLiteral("plantLink"));
+    m_plantLink->setWordWrap(true);
+    m_plantLink->hide();
+    column->addWidget(m_plantLink);
     column->addWidget(m_manual);
     return left;
 }
@@ -212,6 +218,7 @@ void ShaftRunPanel::connectSession() {
     connect(m_session, &runtime::RunSession::notice, this, [this](const QString& text) { addAlarm(text, false); });
     connect(m_session, &runtime::RunSession::tuningTaken, this,
             [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
+    connect(m_session, &runtime::RunSession::plantStatus, this, &ShaftRunPanel::onPlantStatus);
     if (ControllerTuning* tuning = m_context.tuning)
         connect(tuning, &ControllerTuning::applied, m_session, &runtime::RunSession::applyTuning);
 }
@@ -740,6 +747,16 @@ QString ShaftRunPanel::deviceText() const {
     const QString diameters = m_snapshot.manualEntry || !gauge ? tr("Diameters: typed in by hand")
                                                                : line(tr("Gauge"), gauge->name, m_snapshot.gauge);
     return QStringLiteral("%1\n%2").arg(line(tr("CNC"), output ? output->name : QString(), m_snapshot.cnc), diameters);
+}
+
+void ShaftRunPanel::onPlantStatus(const storage::ForwarderStatus& status) {
+    const QString text = plantLinkText(status);
+    const bool warns = plantLinkWarns(status);
+    m_plantLink->setText(text);
+    m_plantLink->setStyleSheet(warns ? QStringLiteral("color: #9a5b00; font-weight: bold;") : QString());
+    m_plantLink->setToolTip(status.reason);
+    m_plantLink->show();
+    if (m_context.state) m_context.state->setPlantLink(text, warns);
 }
 
 void ShaftRunPanel::updateTexts() {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/loop/loop_events.h"
+#include "core/storage/plant_forwarder.h"
 #include "runtime/run/loop_snapshot.h"
 #include "runtime/run/machine_catalog.h"
 #include "runtime/run/run_request.h"
@@ -77,6 +78,8 @@ private:
     QWidget* buildLeft();
     void connectControls();
     void connectSession();
+    /// Shows the plant database's link on the page and in the status bar.
+    void onPlantStatus(const storage::ForwarderStatus& status);
     void connectDevices();
     void onStart();
     /// Readies the offer's machine for `request` and hands the run to the loop thread; `resumeRunId` continues
@@ -147,6 +150,7 @@ private:
     QLabel* m_state;
     QLabel* m_detail;
     QLabel* m_devices;
+    QLabel* m_plantLink = nullptr;  ///< the plant database's link (shown with a plant database only)
     QCheckBox* m_manualMode;
     ManualEntryPanel* m_manual;
     QPushButton* m_skip;

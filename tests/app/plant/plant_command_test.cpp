@@ -8,9 +8,9 @@
 #include <QJsonObject>
 #include <QSqlQuery>
 
-#include "tests/core/storage/scratch_database.h"
 #include "../cli_runner.h"
 #include "core/storage/history_store.h"
+#include "tests/core/storage/scratch_database.h"
 
 namespace tt {
 namespace {
@@ -45,8 +45,9 @@ TEST_P(PlantCommand, ShowsEveryMachineWithTheReportsFigures) {
         // lathe-1's terminal last reported 5 minutes before the overview (offline), with 42 parts kept; lathe-4 is
         // running a run with an open alarm.
         storage::Database owner(scratch.config());
-        owner.exec(QStringLiteral("INSERT INTO plant_terminal_status (machine, reported_at, backlog_parts, journal_bytes,"
-                                  " journal_limit_bytes) VALUES ('lathe-1', '2026-03-10T09:55:00.000Z', 42, 1000, 1073741824)"));
+        owner.exec(QStringLiteral(
+            "INSERT INTO plant_terminal_status (machine, reported_at, backlog_parts, journal_bytes,"
+            " journal_limit_bytes) VALUES ('lathe-1', '2026-03-10T09:55:00.000Z', 42, 1000, 1073741824)"));
         storage::SqlHistoryStore history(owner);
         core::RunDescription run{"paper-2012", "lqg", 1, 27.0, 325.0, {0.0, 100.0}, "{}", "lathe-4"};
         const std::int64_t id = history.beginRun(run);
@@ -74,8 +75,8 @@ TEST_P(PlantCommand, ShowsEveryMachineWithTheReportsFigures) {
         // The day's parts, as the report counts them.
         const QJsonObject today = m["today"].toObject();
         EXPECT_EQ(today["parts"].toInteger(), 280);
-        const CliResult day = runTrueturn({"report", "--db", db, "--machine", name, "--from", out["day_from"].toString(),
-                                           "--to", out["day_to"].toString(), "--json"});
+        const CliResult day = runTrueturn({"report", "--db", db, "--machine", name, "--from",
+                                           out["day_from"].toString(), "--to", out["day_to"].toString(), "--json"});
         ASSERT_EQ(day.exitCode, 0) << qPrintable(day.err);
         const QJsonObject verdicts = day.json()["part_verdicts"].toObject();
         for (const char* v : {"good", "rework", "scrap"})
@@ -90,8 +91,8 @@ TEST_P(PlantCommand, ShowsEveryMachineWithTheReportsFigures) {
             SCOPED_TRACE("point " + point.toStdString());
             EXPECT_EQ(p["n"].toInteger(), 125);
             EXPECT_EQ(p["n_before"].toInteger(), 125);
-            const CliResult last = runTrueturn(
-                {"report", "--db", db, "--machine", name, "--point", point, "--last", "125", "--json"});
+            const CliResult last =
+                runTrueturn({"report", "--db", db, "--machine", name, "--point", point, "--last", "125", "--json"});
             const CliResult before = runTrueturn({"report", "--db", db, "--machine", name, "--point", point, "--last",
                                                   "125", "--skip", "125", "--json"});
             ASSERT_EQ(last.exitCode, 0) << qPrintable(last.err);
@@ -121,6 +122,36 @@ TEST_P(PlantCommand, RefusesBadInputWithAReason) {
     const CliResult at = runTrueturn({"plant", "--db", urlOf(scratch.config()), "--at", "yesterday"});
     EXPECT_EQ(at.exitCode, 2);
     EXPECT_TRUE(at.err.contains(QLatin1String("--at"))) << qPrintable(at.err);
+}
+
+// A plant's administrator sets a new plant database up with `plant --setup` as its owner (README, "The plant-wide
+// history"): the history tables, the group roles and plant_terminals; the quality engineer's login then reads the
+// overview (read-only), and a terminal's login may not set it up.
+TEST(PlantSetup, BringsANewPlantDatabaseUpAndTheQualityRoleReadsIt) {
+    storage::test::ScratchDatabase scratch("postgres");
+    TT_REQUIRE_BACKEND(scratch);
+    storage::DatabaseConfig quality = scratch.config();
+    quality.user = QStringLiteral("terminal_m1");
+    const CliResult refused = runTrueturn({"plant", "--db", urlOf(quality), "--setup"});
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_TRUE(refused.err.contains(QLatin1String("--setup: the plant database cannot be set up")))
+        << qPrintable(refused.err);
+
+    const CliResult setup = runTrueturn({"plant", "--db", urlOf(scratch.config()), "--setup", "--json"});
+    ASSERT_EQ(setup.exitCode, 0) << qPrintable(setup.err);
+    EXPECT_EQ(setup.json()["machines"].toArray().size(), 0);
+    storage::Database owner(scratch.config());
+    QSqlQuery tables =
+        owner.exec(QStringLiteral("SELECT to_regclass('plant_terminals') IS NOT NULL, "
+                                  "(SELECT COUNT(*) FROM pg_roles WHERE rolname IN "
+                                  "('trueturn_terminal', 'trueturn_quality'))"));
+    ASSERT_TRUE(tables.next());
+    EXPECT_TRUE(tables.value(0).toBool());
+    EXPECT_EQ(tables.value(1).toInt(), 2);
+
+    quality.user = QStringLiteral("quality");
+    const CliResult read = runTrueturn({"plant", "--db", urlOf(quality), "--json"});
+    EXPECT_EQ(read.exitCode, 0) << qPrintable(read.err);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, PlantCommand, ::testing::ValuesIn(storage::test::backends()),
