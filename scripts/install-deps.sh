@@ -9,7 +9,7 @@ packages=(
     qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools
     libqt6sql6-sqlite libqt6sql6-psql qt6-serialport-dev qt6-serialbus-dev libqt6svg6
     qt6-qpa-plugins libgl-dev fonts-dejavu-core
-    libeigen3-dev libqcustomplot-dev libboost-dev libsodium-dev
+    libeigen3-dev libqcustomplot-dev libboost-dev libsodium-dev libsqlite3-dev
 )
 # file, help2man, lintian, desktop-file-utils, appstream: scripts/check-package.sh (CPack's dependency list,
 # the manual page, the package and metadata checks).

@@ -2,9 +2,14 @@
 
 #include "core/quality/individual_charts.h"
 
+#include <future>
+
 namespace tt::core {
 
 namespace {
+
+/// From this many values the capability study runs on a thread of its own beside the rule scan.
+constexpr std::size_t kParallelCapabilityValues = 100000;
 
 ControlChart chartOf(std::span<const double> values, const PointAnalysisSettings& settings) {
     if (settings.heldLimits)
@@ -44,20 +49,25 @@ PointAnalysis analysePoint(const MeasuredSeries& series, const PointAnalysisSett
 
     result.chart = chartOf(values, settings);
     const ChartLimits& limits = result.chart.limits;
+    // The capability study (a sort and the normality test of every value) runs beside the rule scan: over a
+    // million readings each is a tenth of a second (docs/BENCHMARKS.md, "The plant-wide history").
+    std::future<CapabilityStudy> capability;
+    if (settings.spec) {
+        CapabilitySettings study;
+        study.within = withinMethodOf(limits);
+        study.subgroupSize = limits.subgroupSize;
+        study.confidence = settings.confidence;
+        study.normalityAlpha = settings.normalityAlpha;
+        capability =
+            std::async(values.size() >= kParallelCapabilityValues ? std::launch::async : std::launch::deferred,
+                       [values, spec = *settings.spec, study] { return capabilityStudy(values, spec, study); });
+    }
     for (RuleViolation& v : findRuleViolations(result.chart.locationMm, limits.location.centreMm,
                                                limits.locationSigmaMm, settings.rules)) {
         std::vector<std::int64_t> parts = partsOfPoints(series, limits.subgroupSize, v.points);
         result.violations.push_back({std::move(v), std::move(parts)});
     }
-
-    if (settings.spec) {
-        CapabilitySettings capability;
-        capability.within = withinMethodOf(limits);
-        capability.subgroupSize = limits.subgroupSize;
-        capability.confidence = settings.confidence;
-        capability.normalityAlpha = settings.normalityAlpha;
-        result.capability = capabilityStudy(values, *settings.spec, capability);
-    }
+    if (capability.valid()) result.capability = capability.get();
     return result;
 }
 

@@ -8,16 +8,16 @@
 #include <map>
 
 #include "core/storage/history_store.h"
+#include "core/storage/numeric_rows.h"
 
 namespace tt::storage {
 
-namespace {
-
-}  // namespace
+namespace {}  // namespace
 
 QString plausibleReadingCondition() {
-    return QStringLiteral("m.measured_mm IS NOT NULL AND (m.reason_kind IS NULL OR m.reason_kind NOT IN"
-                          " ('implausible', 'not-finite', 'not-a-number'))");
+    return QStringLiteral(
+        "m.measured_mm IS NOT NULL AND (m.reason_kind IS NULL OR m.reason_kind NOT IN"
+        " ('implausible', 'not-finite', 'not-a-number'))");
 }
 
 namespace {
@@ -196,23 +196,21 @@ std::vector<PointReadings> queryPointReadings(Database& db, const MeasurementFil
         // The verdict as a small number in the same pass (no string per reading, no second scan). No ORDER BY:
         // the join streams from the covering index in part-id order (PostgreSQL: a merge join) instead of a
         // sort of every row spilling to disk; the rows are put in production order here.
-        QSqlQuery q =
-            select(db,
-                   QStringLiteral("SELECT m.point_index, p.run_id, p.part_number, m.measured_s, m.measured_mm,"
-                                  " CASE m.verdict WHEN 'good' THEN 1 WHEN 'rework' THEN 2"
-                                  " WHEN 'scrap' THEN 3 ELSE 0 END") +
-                       s.from + s.where,
-                   s.bindings);
+        NumericRows q(db,
+                      QStringLiteral("SELECT m.point_index, p.run_id, p.part_number, m.measured_s, m.measured_mm,"
+                                     " CASE m.verdict WHEN 'good' THEN 1 WHEN 'rework' THEN 2"
+                                     " WHEN 'scrap' THEN 3 ELSE 0 END") +
+                          s.from + s.where,
+                      s.bindings);
         std::vector<PointRow>* current = nullptr;
         int currentIndex = -1;
         while (q.next()) {
-            const int index = q.value(0).toInt();
+            const auto index = static_cast<int>(q.integer(0));
             if (!current || index != currentIndex) {
                 current = &rows[index];
                 currentIndex = index;
             }
-            current->push_back({q.value(1).toLongLong(), q.value(2).toLongLong(), q.value(3).toDouble(),
-                                q.value(4).toDouble(), q.value(5).toInt()});
+            current->push_back({q.integer(1), q.integer(2), q.real(3), q.real(4), static_cast<int>(q.integer(5))});
         }
     }
     std::vector<PointReadings> points;

@@ -71,6 +71,29 @@ void BM_ReportCommandOnePoint(benchmark::State& state, const char* backend) {
     state.counters["json_bytes"] = static_cast<double>(bytes);
 }
 
+/// The floor the report is held against (issue 24, item 7: at most 1.5 times it): the sqlite3 shell reading point
+/// 1's diameters in part order from the same file, printed into a pipe that is read whole.
+void BM_SqliteShellFloorOnePoint(benchmark::State& state) {
+    const std::optional<QString> db = bigHistory("sqlite");
+    if (!db) {
+        state.SkipWithError("no big history: run scripts/make-big-history.sh and export what it prints");
+        return;
+    }
+    std::int64_t bytes = 0;
+    for (auto _ : state) {
+        QProcess shell;
+        shell.start(QStringLiteral("sqlite3"),
+                    {*db, QStringLiteral("SELECT m.measured_mm FROM measurements m JOIN parts p ON p.id = m.part_id "
+                                         "WHERE m.point_index = 0 ORDER BY p.run_id, p.part_number")});
+        if (!shell.waitForFinished(600000) || shell.exitCode() != 0) {
+            state.SkipWithError("the sqlite3 shell (package sqlite3) failed or is missing");
+            return;
+        }
+        bytes = shell.readAllStandardOutput().size();
+    }
+    state.counters["text_bytes"] = static_cast<double>(bytes);
+}
+
 /// The in-process part: point 1's readings from the database and its whole analysis (I-MR, Western Electric
 /// rules, capability against the stored tolerance).
 void BM_ReportReadAndAnalyseOnePoint(benchmark::State& state, const char* backend) {
@@ -106,6 +129,7 @@ void BM_ReportReadAndAnalyseOnePoint(benchmark::State& state, const char* backen
 }
 
 BENCHMARK_CAPTURE(BM_ReportCommandOnePoint, sqlite, "sqlite")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_SqliteShellFloorOnePoint)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ReportCommandOnePoint, postgres, "postgres")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ReportReadAndAnalyseOnePoint, sqlite, "sqlite")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ReportReadAndAnalyseOnePoint, postgres, "postgres")->Unit(benchmark::kMillisecond)->UseRealTime();
