@@ -39,10 +39,10 @@ void ensureApplication() {
 
 /// A fresh plant database on the TRUETURN_PG_URL server, migrated by its owner, each terminal_mN writing mN.
 /// Returns its name; empty when there is no server.
-QString freshPlant() {
+QString freshPlant(QString name = {}) {
     const QString url = qEnvironmentVariable("TRUETURN_PG_URL");
     if (url.isEmpty()) return {};
-    const QString name = QStringLiteral("plant_bench_") + QUuid::createUuid().toString(QUuid::Id128).left(10);
+    if (name.isEmpty()) name = QStringLiteral("plant_bench_") + QUuid::createUuid().toString(QUuid::Id128).left(10);
     {
         storage::Database admin(storage::DatabaseConfig::postgresUrl(url));
         admin.exec(QStringLiteral("CREATE DATABASE ") + name);
@@ -124,13 +124,17 @@ void BM_PlantForward(benchmark::State& state) {
         state.SkipWithError("needs TRUETURN_PG_URL (scripts/start-test-postgres.sh)");
         return;
     }
-    // The journals, filled once with the server unreachable (a port nothing listens on), then copied per round.
+    // The journals, filled once while their plant database did not exist yet (every attempt refused, nothing
+    // sent), then copied per round; each round creates that database afresh and forwards into it. A journal
+    // belongs to one plant database (its server and name), so every round uses the same name.
+    const QString plantName = QStringLiteral("plant_bench_forward");
     static QTemporaryDir filled;
     static bool made = false;
     if (!made) {
+        dropPlant(plantName);
         std::vector<std::unique_ptr<QProcess>> terminals;
         for (int i = 1; i <= kTerminals; ++i)
-            terminals.push_back(start({"simulate", "--db", QStringLiteral("postgresql://terminal_m%1@127.0.0.1:9/plant").arg(i),
+            terminals.push_back(start({"simulate", "--db", terminalUrl(i, plantName),
                                        "--machine", QStringLiteral("m%1").arg(i), "--journal",
                                        filled.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--parts",
                                        QString::number(kPartsPerTerminal), "--warmup", "0", "--seed",
@@ -144,7 +148,7 @@ void BM_PlantForward(benchmark::State& state) {
     }
     for (auto _ : state) {
         state.PauseTiming();
-        const QString plant = freshPlant();
+        const QString plant = freshPlant(plantName);
         QTemporaryDir dir;
         for (int i = 1; i <= kTerminals; ++i)
             QFile::copy(filled.filePath(QStringLiteral("m%1.sqlite").arg(i)),
