@@ -468,6 +468,11 @@ runtime::RunRequest ShaftRunPanel::request() const {
     if (m_context.tuning && m_context.tuning->current())
         r.tuning = config::controllerTuningToJson(*m_context.tuning->current());
     const std::optional<runtime::MachineOffer> offer = chosenOffer();
+    if (offer && !offer->cnc.isEmpty()) {
+        r.cnc = offer->cnc;  // the machine's parts are cut by that CNC, at its own pace
+        r.cncMode = offer->cncMode;
+        r.speed = 0.0;
+    }
     if (offer && offer->can.usesDevices) {
         r.cncOutput = m_output->currentData().toString();
         r.gauge = m_gauge->currentData().toString();

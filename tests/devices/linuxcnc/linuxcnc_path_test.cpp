@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <cctype>
 #include <cmath>
 #include <numeric>
 
@@ -130,8 +131,15 @@ TEST_P(WearPath, TheWearCorrectionLandsOnTheExecutedPathWithinOneMicrometreOnDia
 
 const Conventions kConventions[] = {{"diameter", "mm"}, {"radius", "mm"}, {"diameter", "inch"}, {"radius", "inch"}};
 
+/// "DiameterMm", "RadiusInch": the X mode and the units, each word capitalised (gtest names allow no other bytes).
 std::string conventionName(const ::testing::TestParamInfo<Conventions>& info) {
-    return std::string(info.param.xMode) + "_" + info.param.units;
+    std::string name;
+    for (const char* word : {info.param.xMode, info.param.units}) {
+        std::string w(word);
+        if (!w.empty()) w[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(w[0])));
+        name += w;
+    }
+    return name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ProfilePath, ::testing::ValuesIn(kConventions), conventionName);
