@@ -63,5 +63,5 @@ inline void requireValidSettings(const DevicePlugin& plugin, DeviceKind kind, co
 }  // namespace tt::devices
 
 /// Interface id of device plugins; bump the version when DevicePlugin or Device change.
-#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.1"
+#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.2"
 Q_DECLARE_INTERFACE(tt::devices::DevicePlugin, TrueTurnDevicePlugin_iid)

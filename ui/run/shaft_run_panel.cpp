@@ -221,6 +221,7 @@ void ShaftRunPanel::connectDevices() {
     if (!hub) return;
     connect(hub, &runtime::DeviceHub::devicesChanged, this, [this] {
         fillDeviceChoices();
+        fillMachineChoices();  // a configured device may offer a machine (a LinuxCNC device: the LinuxCNC lathe)
         updateTexts();
     });
     connect(hub, &runtime::DeviceHub::deviceChanged, this, [this](const QString& id) {
