@@ -2,7 +2,8 @@
 // from the options, read with --request FILE.json, or stored with the run that --resume continues), the same
 // value the Run page starts; its scenario is runtime::scenarioOf, the closed loop and the open-loop reference
 // run in core::runLatheStudy on the built-in simulated lathe, stepped by core::ShaftRunStepper like the
-// Run page's loop; the history is storage::SqlHistoryStore.
+// Run page's loop (with --cnc the closed run goes on the LinuxCNC lathe instead: app/cli/simulate_cnc.h); the
+// history is storage::SqlHistoryStore.
 #include <QFileInfo>
 #include <QString>
 #include <algorithm>

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <numeric>
+#include <ostream>
 
 #include "config/loop_scenario.h"
 #include "core/control/correction_path_builder.h"
@@ -26,6 +27,11 @@ struct Conventions {
     const char* xMode;
     const char* units;
 };
+
+/// "diameter, mm": how gtest (and the test names ctest lists) show a parameter, instead of its raw bytes.
+void PrintTo(const Conventions& c, std::ostream* os) {
+    *os << c.xMode << ", " << c.units;
+}
 
 /// The corrections of the test, radial mm: different at every point, both signs, not round numbers.
 const std::vector<double> kCorrectionsMm{0.0123, -0.0211, 0.0157, 0.0309, -0.0087};
