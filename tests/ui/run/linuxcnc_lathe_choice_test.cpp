@@ -31,6 +31,8 @@ protected:
         ASSERT_NE(hub.plugin(QStringLiteral("linuxcnc")), nullptr) << "the LinuxCNC plugin is built";
         context.devices = &hub;
     }
+    // The page saves the machine chosen; leave no LinuxCNC lathe chosen for the tests after this one.
+    void TearDown() override { QSettings().clear(); }
 
     QString addLinuxCnc() {
         return hub.addDevice(QStringLiteral("linuxcnc"), devices::DeviceKind::CorrectionOutput,
