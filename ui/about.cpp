@@ -26,12 +26,13 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode and an on-screen keypad"),
     QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, CLI and resume"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Devices in a thread of their own"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe on the Run page and in simulate"),
 };
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Falling back to a safe controller on a model mismatch (it holds)"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe on the Run page and in simulate"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe's incidents as alarms of a Run page run"),
 };
 
 template <std::size_t N>

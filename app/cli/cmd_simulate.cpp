@@ -2,7 +2,8 @@
 // from the options, read with --request FILE.json, or stored with the run that --resume continues), the same
 // value the Run page starts; its scenario is runtime::scenarioOf, the closed loop and the open-loop reference
 // run in core::runLatheStudy on the built-in simulated lathe, stepped by core::ShaftRunStepper like the
-// Run page's loop; the history is storage::SqlHistoryStore.
+// Run page's loop (with --cnc the closed run goes on the LinuxCNC lathe instead: app/cli/simulate_cnc.h); the
+// history is storage::SqlHistoryStore.
 #include <QFileInfo>
 #include <QString>
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include "app/cli/run_history.h"
 #include "app/cli/run_interrupt.h"
 #include "app/cli/simulate_checks.h"
+#include "app/cli/simulate_cnc.h"
 #include "app/cli/simulate_output.h"
 #include "app/cli/simulate_request.h"
 #include "app/cli/simulate_verdicts.h"
@@ -92,6 +94,9 @@ Invocation resumedRun(const CommandParser& parser, core::HistoryStore& history) 
     } catch (const runtime::RunRequestError& e) {
         throw UsageError(std::string("--resume: ") + e.what());
     }
+    if (!run.request.cnc.isEmpty())
+        throw UsageError("--resume: run " + std::to_string(run.resume->run.runId) + " went through " +
+                         run.request.cnc.toStdString() + "; a run through a CNC is not resumed headless");
     if (!run.request.endPart)
         throw UsageError("--resume: run " + std::to_string(run.resume->run.runId) +
                          " was started on the Run page without a last part; continue it there");
@@ -144,6 +149,11 @@ int runStudy(const CommandParser& parser, const Invocation& run, RunHistory* his
             profilePositions(scenario.partLengthMm, parser.number(QStringLiteral("profile-step"), 1.0, 100.0));
     options.history = history ? &history->store() : nullptr;
     options.resume = run.resume;
+    CncRunReport cnc;
+    if (!run.request.cnc.isEmpty()) {
+        checkCncReachable(run.request);
+        options.machine = cncMachineFactory(run.request, cnc, options.history);
+    }
     // A run that stops early (a fault, a history that cannot be written) is a std::runtime_error: exit 1 with
     // the reason; what was stored stays stored and the run can be resumed. Ctrl-C or SIGTERM: the run stops
     // after its current part, everything stored is committed, exit 130.
@@ -156,9 +166,11 @@ int runStudy(const CommandParser& parser, const Invocation& run, RunHistory* his
     if (parser.json()) {
         QJsonObject out = simulateJson(*study, scenario, profile, database);
         if (history) history->addJson(out);
+        if (!run.request.cnc.isEmpty()) addCncJson(out, cnc);
         printJson(out);
     } else {
         printSimulateText(run.request.preset, *study, run.request.seed, profile);
+        if (!run.request.cnc.isEmpty()) printCncText(run.request.cnc, cnc);
     }
     return kExitOk;
 }

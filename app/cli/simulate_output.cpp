@@ -25,14 +25,29 @@ std::pair<double, double> profilePeak(const core::LatheStudyResult& r) {
     return {r.profileZMm.at(best), r.profileMeanMm.at(best)};
 }
 
+/// systematic_from_part and largest_systematic_mm: the closed run's mean true deviation per point after the loop's
+/// start-up (each point's in points[].systematic_mm), the largest in magnitude with its sign.
+void addSystematicJson(QJsonObject& out, const core::LatheStudyResult& r) {
+    if (r.systematicMm.empty()) return;
+    double largest = 0.0;
+    for (const double v : r.systematicMm)
+        if (std::abs(v) > std::abs(largest)) largest = v;
+    out.insert(QStringLiteral("systematic_from_part"), static_cast<qint64>(r.systematicFromPart));
+    out.insert(QStringLiteral("largest_systematic_mm"), largest);
+}
+
 QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::optional<QString>& database) {
     QJsonArray points;
-    for (const core::LatheStudyPoint& p : r.points)
-        points.append(QJsonObject{{QStringLiteral("x_mm"), p.xMm},
-                                  {QStringLiteral("var_open"), config::finiteOrNull(p.varOpenMm2)},
-                                  {QStringLiteral("var_closed"), config::finiteOrNull(p.varClosedMm2)},
-                                  {QStringLiteral("k_eff"), config::finiteOrNull(p.kEff)},
-                                  {QStringLiteral("k_eff_analytic"), config::finiteOrNull(p.kEffAnalytic)}});
+    for (std::size_t i = 0; i < r.points.size(); ++i) {
+        const core::LatheStudyPoint& p = r.points[i];
+        QJsonObject point{{QStringLiteral("x_mm"), p.xMm},
+                          {QStringLiteral("var_open"), config::finiteOrNull(p.varOpenMm2)},
+                          {QStringLiteral("var_closed"), config::finiteOrNull(p.varClosedMm2)},
+                          {QStringLiteral("k_eff"), config::finiteOrNull(p.kEff)},
+                          {QStringLiteral("k_eff_analytic"), config::finiteOrNull(p.kEffAnalytic)}};
+        if (i < r.systematicMm.size()) point.insert(QStringLiteral("systematic_mm"), r.systematicMm[i]);
+        points.append(point);
+    }
     QJsonObject out{{QStringLiteral("controller"), QString::fromStdString(core::controllerKindName(r.controller))},
                     {QStringLiteral("delay"), r.delay},
                     {QStringLiteral("parts"), static_cast<qint64>(r.parts)},
@@ -42,6 +57,7 @@ QJsonObject toJson(const core::LatheStudyResult& r, bool profile, const std::opt
     out.insert(QStringLiteral("warmup_parts"), static_cast<qint64>(r.warmupParts));
     out.insert(QStringLiteral("verdicts"), verdictsJson(r));
     out.insert(QStringLiteral("tolerance_alarms"), static_cast<qint64>(r.toleranceAlarms));
+    addSystematicJson(out, r);
     if (profile) {
         QJsonArray rows;
         for (std::size_t i = 0; i < r.profileZMm.size(); ++i)

@@ -4,6 +4,7 @@
 
 #include "app/cli/command_parser.h"
 #include "app/cli/simulate_checks.h"
+#include "app/cli/simulate_cnc.h"
 #include "core/control/integral_action.h"
 #include "core/control/run_to_run_plant.h"
 #include "core/run/run_limits.h"
@@ -12,6 +13,9 @@
 namespace tt::cli {
 
 namespace {
+
+/// Fewest parts counted in a run through a CNC (each takes wall time; the statistics need a few after the start-up).
+constexpr std::int64_t kMinCncParts = 10;
 
 /// The request field each option sets.
 const QHash<QString, QString>& optionOfField() {
@@ -31,7 +35,10 @@ const QHash<QString, QString>& optionOfField() {
         {QStringLiteral("seed"), QStringLiteral("--seed")},
         {QStringLiteral("speed"), QStringLiteral("--speed")},
         {QStringLiteral("end_part"), QStringLiteral("--parts")},
-        {QStringLiteral("warmup_parts"), QStringLiteral("--warmup")}};
+        {QStringLiteral("warmup_parts"), QStringLiteral("--warmup")},
+        {QStringLiteral("cnc.url"), QStringLiteral("--cnc")},
+        {QStringLiteral("cnc.mode"), QStringLiteral("--cnc-mode")},
+        {QStringLiteral("cnc.program_folder"), QStringLiteral("--cnc-program-folder")}};
     return map;
 }
 
@@ -81,14 +88,15 @@ void addSetupOptions(CommandParser& parser) {
     parser.addOption(QStringLiteral("delay"),
                      QStringLiteral("Transport delay z in parts, 1..8 (default: the preset's)."), QStringLiteral("z"));
     parser.addOption(QStringLiteral("parts"),
-                     QStringLiteral("Parts counted in the statistics (k_eff, variances), 100..10000000 (default "
-                                    "20000); the warm-up parts are machined before them."),
+                     QStringLiteral("Parts counted in the statistics (k_eff, variances), 100..10000000 (10.. with "
+                                    "--cnc; default 20000); the warm-up parts are machined before them."),
                      QStringLiteral("n"), QStringLiteral("20000"));
-    parser.addOption(QStringLiteral("warmup"),
-                     QStringLiteral("Parts machined first, 0..1000000 (default 100): measured, stored and judged like "
-                                    "every part (the verdicts count them, their share apart) but not counted in the "
-                                    "statistics. --parts 150 machines 250 parts."),
-                     QStringLiteral("n"), QStringLiteral("100"));
+    parser.addOption(
+        QStringLiteral("warmup"),
+        QStringLiteral("Parts machined first, 0..1000000 (default 100, 0 with --cnc): measured, stored and judged like "
+                       "every part (the verdicts count them, their share apart) but not counted in the "
+                       "statistics. --parts 150 machines 250 parts."),
+        QStringLiteral("n"), QStringLiteral("100"));
     parser.addOption(QStringLiteral("seed"), QStringLiteral("Random seed, 0..2^53 (default 1)."), QStringLiteral("s"),
                      QStringLiteral("1"));
     parser.addOption(QStringLiteral("controller"),
@@ -166,12 +174,13 @@ void addRunRequestOptions(CommandParser& parser) {
     addSetupOptions(parser);
     addPlantOptions(parser);
     addControlOptions(parser);
+    addCncOptions(parser);
 }
 
 std::optional<QString> runOptionGiven(const CommandParser& parser) {
     for (const char* option : {"preset", "delay", "parts", "warmup", "seed", "controller", "ewma-weight", "plant-gain",
                                "plant-delay", "step-at", "step-mm", "step-point", "integral", "integral-weight",
-                               "mismatch-action", "drift-weight"})
+                               "mismatch-action", "drift-weight", "cnc", "cnc-mode", "cnc-program-folder"})
         if (parser.isSet(QString::fromLatin1(option))) return QStringLiteral("--") + QString::fromLatin1(option);
     return std::nullopt;
 }
@@ -181,8 +190,12 @@ runtime::RunRequest requestFromOptions(const CommandParser& parser, const QStrin
     q.preset = parser.value(QStringLiteral("preset"));
     if (parser.isSet(QStringLiteral("delay")))
         q.delay = static_cast<int>(parser.integer(QStringLiteral("delay"), 1, core::kMaxDelay));
-    const std::int64_t parts = parser.integer(QStringLiteral("parts"), 100, core::kMaxRunParts);
-    q.warmupParts = parser.integer(QStringLiteral("warmup"), 0, core::kMaxWarmupParts);
+    // Through a CNC every part takes wall time: a shorter run, and no warm-up unless asked for.
+    const bool cnc = parser.isSet(QStringLiteral("cnc"));
+    const std::int64_t parts = parser.integer(QStringLiteral("parts"), cnc ? kMinCncParts : 100, core::kMaxRunParts);
+    q.warmupParts = cnc && !parser.isSet(QStringLiteral("warmup"))
+                        ? 0
+                        : parser.integer(QStringLiteral("warmup"), 0, core::kMaxWarmupParts);
     q.endPart = q.warmupParts + parts;
     q.seed = static_cast<std::uint64_t>(parser.integer(QStringLiteral("seed"), 0, 1LL << 53));
     q.controller = core::controllerKindFromName(
@@ -196,6 +209,7 @@ runtime::RunRequest requestFromOptions(const CommandParser& parser, const QStrin
     q.database = database;
     readPlant(parser, q);
     readControl(parser, q);
+    readCncOptions(parser, q);
     try {
         runtime::validate(q);
     } catch (const runtime::RunRequestError& e) {

@@ -1,9 +1,12 @@
 #include "core/run/shaft_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "core/loop/loop_engine.h"
 #include "core/loop/shaft_run_stepper.h"
@@ -17,13 +20,22 @@ namespace {
 /// Collects the true profile of each part as it comes off the machine, and passes events on.
 class PartCollector final : public LoopListener {
 public:
-    PartCollector(SimulatedLathe& lathe, LatheRunRecord& record, const std::vector<double>& profileZ,
-                  LoopListener* next, std::int64_t warmupParts)
-        : m_shop(lathe.shop()), m_record(record), m_profileZ(profileZ), m_next(next), m_warmupParts(warmupParts) {}
+    /// The built-in simulated lathe's parts are taken from its shop as they are; another machine's from its
+    /// trueProfile (diameters at the loop's control points).
+    PartCollector(ShaftMachine& machine, LatheRunRecord& record, const LatheRunSpec& spec)
+        : m_machine(machine),
+          m_simulated(dynamic_cast<SimulatedLathe*>(&machine)),
+          m_record(record),
+          m_profileZ(spec.profileZMm),
+          m_next(spec.listener),
+          m_warmupParts(spec.warmupParts),
+          m_nominalMm(m_simulated ? m_simulated->shop().process().nominalDiameterMm()
+                                  : spec.scenario.nominalDiameterMm),
+          m_pointZMm(m_simulated ? m_simulated->shop().pointZMm() : spec.plan.loop.pointZMm) {}
 
     void onLoopEvent(const LoopEvent& event) override {
-        if (event.kind == LoopEvent::Kind::PartFinished && !m_shop.station().machinedParts().empty())
-            take(m_shop.station().machinedParts().back());
+        if (event.kind == LoopEvent::Kind::PartFinished)
+            if (const std::optional<TurnedPart> part = finishedPart(event.partNumber)) take(*part);
         if (event.kind == LoopEvent::Kind::PartMeasured && event.measurement)
             for (const PointMeasurementRecord& p : event.measurement->points)
                 if (!p.accepted && p.measuredMm) ++m_record.rejectedValues;
@@ -57,8 +69,8 @@ public:
             m_record.profileDeviationMm.resize(index + 1);
             m_record.seen.resize(index + 1, false);
         }
-        const double nominal = m_shop.process().nominalDiameterMm();
-        const auto& points = m_shop.pointZMm();
+        const double nominal = m_nominalMm;
+        const auto& points = m_pointZMm;
         Eigen::VectorXd atPoints(static_cast<Eigen::Index>(points.size()));
         for (std::size_t i = 0; i < points.size(); ++i)
             atPoints(static_cast<Eigen::Index>(i)) = part.diameterAtMm(points[i]) - nominal;
@@ -71,26 +83,96 @@ public:
     }
 
 private:
-    LatheShop& m_shop;
+    /// The part just finished: the simulated shop's last, or the machine's true profile of it.
+    std::optional<TurnedPart> finishedPart(std::int64_t partNumber) const {
+        if (m_simulated) {
+            const auto& parts = m_simulated->shop().station().machinedParts();
+            return parts.empty() ? std::nullopt : std::optional<TurnedPart>(parts.back());
+        }
+        const std::optional<TrueProfile> profile = m_machine.trueProfile(partNumber);
+        if (!profile) return std::nullopt;
+        TurnedPart part{partNumber, profile->zMm, {}};
+        for (const double e : profile->errorMm)
+            part.diameterMm.push_back(m_nominalMm + e);
+        return part;
+    }
+
+    ShaftMachine& m_machine;
+    SimulatedLathe* m_simulated;  // null: another machine
     LatheRunRecord& m_record;
     const std::vector<double>& m_profileZ;
     LoopListener* m_next;
     std::int64_t m_warmupParts;
+    double m_nominalMm;
+    std::vector<double> m_pointZMm;
     std::vector<double> m_previous;  // the last corrections sent, per point
 };
 
-}  // namespace
+/// Steps the engine on a machine whose time is the wall clock, polled every 10 ms, until the run completes,
+/// faults or goes idle; `stop` ends it after the part on the machine (as runSimulation does).
+SimulationOutcome pollToEnd(LoopEngine& engine, ShaftMachine& machine, const LatheRunSpec& spec) {
+    SimulationOutcome outcome;
+    std::optional<std::int64_t> stopAfter;  // parts finished when the stop was asked for
+    for (;;) {
+        engine.step();
+        if (spec.machine.poll) spec.machine.poll(machine, engine);
+        if (engine.complete()) {
+            outcome.complete = true;
+            break;
+        }
+        if (!stopAfter && spec.stop && spec.stop->load()) stopAfter = engine.partsFinished();
+        if (stopAfter && engine.partsFinished() > *stopAfter) {
+            outcome.interrupted = true;
+            outcome.stopReason = "interrupted";
+            break;
+        }
+        if (engine.state() == LoopState::Fault || engine.state() == LoopState::Idle) {
+            outcome.stopReason = engine.detail();
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    outcome.simulatedS = machine.clock().nowS();
+    return outcome;
+}
 
-LatheRunRecord runLatheLoop(LatheRunSpec spec) {
+void checkSpec(const LatheRunSpec& spec) {
     if (!spec.plan.loop.lastPartNumber) throw std::invalid_argument("a headless run needs its number of parts");
     checkRunSpeed(spec.speed);
     if (*spec.plan.loop.lastPartNumber > kMaxRunParts + kMaxWarmupParts)
         throw std::invalid_argument("a run of " + std::to_string(*spec.plan.loop.lastPartNumber) +
                                     " parts is too long; the limit is " +
                                     std::to_string(kMaxRunParts + kMaxWarmupParts) + " parts");
+    if (spec.machine.make && spec.resume)
+        throw std::invalid_argument(
+            "a run on a machine other than the built-in simulated lathe is not resumed headless");
+}
+
+/// The run on the machine LatheRunSpec::machine makes: in simulated time as on the built-in lathe, or polled.
+LatheRunRecord runOnMadeMachine(const LatheRunSpec& spec) {
+    const std::unique_ptr<ShaftMachine> machine = spec.machine.make(spec.scenario, spec.seed);
+    if (!machine) throw std::invalid_argument("the machine of the run could not be made");
+    LatheRunRecord record;
+    PartCollector collector(*machine, record, spec);
+    const std::unique_ptr<LoopEngine> engine = buildShaftRun(spec.scenario, spec.plan, *machine, spec.history);
+    engine->setListener(&collector);
+    engine->start(spec.description);
+    ShaftRunStepper stepper(*engine, *machine);
+    record.outcome = stepper.simulatedTime() ? stepper.runToEnd(100'000'000, spec.speed, spec.stop)
+                                             : pollToEnd(*engine, *machine, spec);
+    if (spec.machine.poll) spec.machine.poll(*machine, *engine);
+    record.runId = engine->runId();
+    return record;
+}
+
+}  // namespace
+
+LatheRunRecord runLatheLoop(LatheRunSpec spec) {
+    checkSpec(spec);
+    if (spec.machine.make) return runOnMadeMachine(spec);
     SimulatedLathe lathe(spec.scenario.shopSpec(spec.seed));
     LatheRunRecord record;
-    PartCollector collector(lathe, record, spec.profileZMm, spec.listener, spec.warmupParts);
+    PartCollector collector(lathe, record, spec);
 
     const std::unique_ptr<LoopEngine> engine = buildShaftRun(spec.scenario, spec.plan, lathe, spec.history);
     engine->setListener(&collector);

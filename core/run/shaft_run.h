@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,6 +18,20 @@
 
 namespace tt::core {
 
+class LoopEngine;
+
+/// A machine a headless run goes on instead of the built-in simulated lathe. The engine knows no device: the
+/// runtime or the app makes it (the LinuxCNC lathe of `trueturn simulate --cnc`). A machine whose time is the wall
+/// clock (no ShaftMachine::jumpTo) is stepped as it is polled, every 10 ms, as the Run page's loop thread does.
+struct ShaftMachineFactory {
+    /// Makes the machine for one run of `scenario`, its random sources seeded by `seed`; called in the run's
+    /// thread. Empty: the built-in simulated lathe.
+    std::function<std::unique_ptr<ShaftMachine>(const ShaftScenario& scenario, std::uint64_t seed)> make;
+    /// Called after every engine step on a wall-clock machine and once when the run ends, while the machine lives
+    /// (may be empty): takes what the machine has to report (its incidents, the corrections it wrote).
+    std::function<void(ShaftMachine& machine, const LoopEngine& engine)> poll;
+};
+
 /// One closed-loop run on the built-in simulated shop, headless (what `trueturn simulate` runs): the
 /// loop engine on the shop's ports with a virtual clock, optionally paced and stored.
 struct LatheRunSpec {
@@ -31,6 +46,7 @@ struct LatheRunSpec {
     std::int64_t warmupParts = 0;             ///< the first parts, whose verdicts are also counted apart
     std::vector<double> profileZMm;           ///< where to sample each finished part's true profile
     const std::atomic<bool>* stop = nullptr;  ///< when set: finish the part on the machine and stop (resumable)
+    ShaftMachineFactory machine;              ///< empty: the built-in simulated lathe; else no resume, no pacing
 };
 
 /// An alarm of the run as the loop raised it (its stable kind, the part, the notice with its data).
@@ -57,8 +73,9 @@ struct LatheRunRecord {
     double maxCorrectionStepMm = 0.0;                 ///< largest change of a point's correction between parts
 };
 
-/// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event) until
-/// its last part is machined and measured, a fault, or nothing can happen. On resume the stored parts
+/// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event, or on the
+/// machine of LatheRunSpec::machine) until its last part is machined and measured, a fault, or nothing can happen
+/// (a wall-clock machine: until the run completes, faults or is stopped). On resume the stored parts
 /// are re-created from their stored corrections (the simulator is deterministic) for the record, and
 /// the run continues through resumeShaftRun.
 /// Throws std::invalid_argument on a bad spec.

@@ -1,5 +1,6 @@
 #include "core/run/shaft_study.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -64,6 +65,7 @@ LatheRunRecord runOnce(const ShaftScenario& scenario, std::uint64_t seed, ShaftR
         spec.warmupParts = options.warmupParts;
     }
     spec.stop = options.stop;
+    if (stored) spec.machine = options.machine;
     ProgressRelay relay(options.progress, stored ? "closed loop" : "open-loop reference",
                         spec.plan.loop.lastPartNumber.value_or(0));
     if (options.progress) spec.listener = &relay;
@@ -101,6 +103,26 @@ StepResidual stepResidual(const ShaftScenario& scenario, std::uint64_t seed, con
     return r;
 }
 
+/// What the study takes from the closed run's record as it is.
+void takeClosedRun(LatheStudyResult& result, const LatheRunRecord& closed) {
+    result.runId = closed.runId;
+    result.outcome = closed.outcome;
+    result.rejectedValues = closed.rejectedValues;
+    result.verdicts = closed.verdicts;
+    result.warmupVerdicts = closed.warmupVerdicts;
+    result.toleranceAlarms = closed.toleranceAlarms;
+    result.modelAlarms = closed.modelAlarms;
+    result.maxCorrectionMm = closed.maxCorrectionMm;
+    result.maxCorrectionStepMm = closed.maxCorrectionStepMm;
+}
+
+/// The closed run's systematic error per control point after the loop's start-up (the first 2z + 5 parts).
+void takeSystematicError(LatheStudyResult& result, const LatheRunRecord& closed, int delay, std::int64_t total) {
+    result.systematicFromPart = std::min<std::int64_t>(2 * delay + 6, total - 1);
+    const Eigen::VectorXd mean = profileStatistics(closed.pointDeviationMm, result.systematicFromPart, total).meanMm;
+    result.systematicMm.assign(mean.data(), mean.data() + mean.size());
+}
+
 }  // namespace
 
 LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
@@ -125,15 +147,8 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
                   controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
 
     const LatheRunRecord closed = runOnce(scenario, seed, closedPlan, options, true);
-    result.runId = closed.runId;
-    result.outcome = closed.outcome;
-    result.rejectedValues = closed.rejectedValues;
-    result.verdicts = closed.verdicts;
-    result.warmupVerdicts = closed.warmupVerdicts;
-    result.toleranceAlarms = closed.toleranceAlarms;
-    result.modelAlarms = closed.modelAlarms;
-    result.maxCorrectionMm = closed.maxCorrectionMm;
-    result.maxCorrectionStepMm = closed.maxCorrectionStepMm;
+    takeClosedRun(result, closed);
+    takeSystematicError(result, closed, closedPlan.plant.delay, total);
     if (scenario.plantMismatch.step) result.step = stepResidual(scenario, seed, closedPlan, options, closed);
 
     const std::int64_t from = options.warmupParts + 1;

@@ -31,6 +31,9 @@ struct LatheStudyOptions {
     /// Called after every finished part (may be empty): the stage ("closed loop", "open-loop reference"),
     /// the part number and the parts of the run (warm-up included).
     std::function<void(const std::string& stage, std::int64_t part, std::int64_t total)> progress;
+    /// The machine of the closed (stored) run; empty: the built-in simulated lathe. The open-loop reference and a
+    /// step's reference run on the built-in simulated lathe of the same scenario and seed.
+    ShaftMachineFactory machine;
 };
 
 /// The study was stopped on request (LatheStudyOptions::stop) after a finished part: what was stored
@@ -97,6 +100,10 @@ struct LatheStudyResult {
     std::vector<RecordedAlarm> modelAlarms;  ///< the mismatch monitor's alarms in the closed run
     double maxCorrectionMm = 0.0;            ///< the closed run's largest |correction| sent, radial mm
     double maxCorrectionStepMm = 0.0;        ///< and its largest change between parts, radial mm
+    /// Per control point, the closed run's systematic error: the mean true diameter deviation over parts
+    /// [systematicFromPart, last] (after the loop's start-up of 2z + 5 parts), mm.
+    std::vector<double> systematicMm;
+    std::int64_t systematicFromPart = 0;
 };
 
 /// Runs the closed loop of `scenario` (planned by planShaftRun: with the feed-forward unless open) with the

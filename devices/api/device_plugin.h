@@ -45,6 +45,13 @@ public:
     /// Complete machines the plugin offers for shaft runs (their own part cycle, CNC and gauge), such
     /// as the built-in simulator's lathe; most plugins offer none.
     virtual QList<ShaftMachineOffer> shaftMachines() const { return {}; }
+    /// Complete machines a configured device of the plugin makes possible (`settings` validated, defaults filled
+    /// in), such as the LinuxCNC lathe of a LinuxCNC device; most plugins offer none.
+    virtual QList<ShaftMachineOffer> deviceMachines(DeviceKind kind, const QVariantMap& settings) const {
+        (void)kind;
+        (void)settings;
+        return {};
+    }
 };
 
 /// Throws std::invalid_argument with every structural problem of `settings` (for create()).
@@ -56,5 +63,5 @@ inline void requireValidSettings(const DevicePlugin& plugin, DeviceKind kind, co
 }  // namespace tt::devices
 
 /// Interface id of device plugins; bump the version when DevicePlugin or Device change.
-#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.1"
+#define TrueTurnDevicePlugin_iid "io.trueturn.DevicePlugin/1.2"
 Q_DECLARE_INTERFACE(tt::devices::DevicePlugin, TrueTurnDevicePlugin_iid)

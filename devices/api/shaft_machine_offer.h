@@ -20,6 +20,10 @@ struct ShaftMachineOffer {
     QString description;  ///< one sentence for the page (what turns, measures and corrects the parts)
     /// Its time is simulated (ShaftMachine::jumpTo): the run paces it at a settable multiple of the wall clock.
     bool adjustableSpeed = false;
+    /// The CNC that cuts the machine's parts, as the run request names it (RunRequest::cnc:
+    /// "linuxcnc://HOST:PORT") and its correction mode; empty: none.
+    QString cnc;
+    QString cncMode;
     /// Makes the machine for one run of `scenario`, its random sources seeded by `seed`. Called in the loop's
     /// thread; the machine is used only there. Throws std::invalid_argument when the scenario does not suit
     /// the machine.

@@ -1,5 +1,9 @@
 #include "devices/linuxcnc/linuxcnc_factory.h"
 
+#include <QDir>
+#include <QFileInfo>
+
+#include "devices/linuxcnc/linuxcnc_lathe_offer.h"
 #include "devices/linuxcnc/linuxcnc_output_device.h"
 #include "devices/linuxcnc/linuxcnc_settings.h"
 
@@ -43,6 +47,20 @@ std::unique_ptr<Device> LinuxCncFactory::create(DeviceKind kind, const QVariantM
     const QVariantMap values = withDefaults(settingsSchema(kind), settings);
     requireValidSettings(*this, kind, values);
     return std::make_unique<LinuxCncOutputDevice>(values, context);
+}
+
+QList<ShaftMachineOffer> LinuxCncFactory::deviceMachines(DeviceKind kind, const QVariantMap& settings) const {
+    if (kind != DeviceKind::CorrectionOutput) return {};
+    const QVariantMap values = withDefaults(settingsSchema(kind), settings);
+    const QString program = values.value(QStringLiteral("programPath")).toString().trimmed();
+    const QString folder = program.isEmpty() ? deviceProgramFolder() : QFileInfo(program).absolutePath();
+    return {linuxCncLatheOffer(values, folder, values.value(QStringLiteral("pressCycleStart"), true).toBool())};
+}
+
+QString deviceProgramFolder() {
+    const QString folder = QDir::temp().filePath(QStringLiteral("trueturn-linuxcnc"));
+    QDir().mkpath(folder);
+    return folder;
 }
 
 }  // namespace tt::devices::linuxcnc

@@ -26,6 +26,10 @@ ShaftMachineOffer linuxCncLatheOffer(const QVariantMap& settings, const QString&
         "LinuxCNC machines every part; the simulated shaft's physics is applied to the path LinuxCNC executed and "
         "the simulated micrometer measures it; TrueTurn writes the corrections into LinuxCNC between parts.");
     offer.adjustableSpeed = false;
+    offer.cnc = QStringLiteral("linuxcnc://%1:%2")
+                    .arg(QString::fromStdString(options.session.controller.endpoint.host))
+                    .arg(options.session.controller.endpoint.port);
+    offer.cncMode = QString::fromStdString(correctionModeName(options.session.corrections.mode));
     offer.make = [options](const core::ShaftScenario& scenario, std::uint64_t seed) {
         return std::make_unique<LinuxCncLathe>(scenario, seed, options);
     };

@@ -126,6 +126,9 @@ QList<devices::ShaftMachineOffer> DeviceHub::shaftMachineOffers() const {
     QList<devices::ShaftMachineOffer> offers;
     for (const devices::DevicePlugin* p : m_plugins)
         offers << p->shaftMachines();
+    for (const DeviceView& view : m_views)
+        if (const devices::DevicePlugin* p = plugin(view.pluginId); p && view.id != kTrialDeviceId)
+            offers << p->deviceMachines(view.kind, view.settings);
     return offers;
 }
 

@@ -55,7 +55,8 @@ public:
     /// thread; their instances are made in the device thread only.
     QList<devices::DevicePlugin*> plugins() const { return m_plugins; }
     devices::DevicePlugin* plugin(const QString& pluginId) const;
-    /// The complete machines the plugins offer for shaft runs.
+    /// The complete machines the plugins offer for shaft runs, and those their configured devices make possible
+    /// (DevicePlugin::deviceMachines: a LinuxCNC device's LinuxCNC lathe).
     QList<devices::ShaftMachineOffer> shaftMachineOffers() const;
     /// The clock that stamps the samples (thread-safe).
     const core::Clock& clock() const { return *m_clock; }

@@ -59,6 +59,8 @@ MachineOffer fromPlugin(const devices::ShaftMachineOffer& offer) {
     m.name = offer.name;
     m.description = offer.description;
     m.can.adjustableSpeed = offer.adjustableSpeed;
+    m.cnc = offer.cnc;
+    m.cncMode = offer.cncMode;
     m.startProblem = [](const RunRequest&) { return QString(); };
     m.prepare = [make = offer.make](const RunRequest& request) -> MachineMaker {
         return [make, seed = request.seed](const core::ShaftScenario& scenario) {

@@ -38,6 +38,10 @@ struct MachineOffer {
     QString name;         ///< in the user's language
     QString description;  ///< one sentence for the page
     MachineCapabilities can;
+    /// The CNC that cuts its parts and its correction mode, for the run request (RunRequest::cnc, cncMode); empty:
+    /// none.
+    QString cnc;
+    QString cncMode;
     /// Why a run of `request` cannot start on it now, in plain words; empty when it can (GUI thread).
     std::function<QString(const RunRequest& request)> startProblem;
     /// Readies the machine for a run of `request` (GUI thread: a lathe from devices connects its relays) and
@@ -47,8 +51,9 @@ struct MachineOffer {
     std::function<void(const QString& reason)> release;
 };
 
-/// Every machine a shaft run can go on: the plugins' complete machines (the simulator's lathe first) and the
-/// lathe assembled from the devices of the Devices page.
+/// Every machine a shaft run can go on: the plugins' complete machines (the simulator's lathe first), those the
+/// configured devices make possible (the LinuxCNC lathe of each LinuxCNC device) and the lathe assembled from the
+/// devices of the Devices page.
 class MachineCatalog {
 public:
     /// `hub` may be null (no devices: only machines that need none... and none are known then).

@@ -1,8 +1,10 @@
 #include "runtime/run/run_request.h"
 
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QRegularExpression>
 #include <QSet>
 #include <cmath>
 
@@ -135,6 +137,16 @@ void readPlant(const Reader& r, RunRequest& q) {
     q.plant.step = st;
 }
 
+void readCnc(const Reader& r, RunRequest& q) {
+    const QJsonObject cnc = r.object("cnc");
+    if (cnc.isEmpty()) return;
+    onlyKeys(cnc, "cnc", {"url", "mode", "program_folder"});
+    const Reader c(cnc, "cnc");
+    q.cnc = c.text("url", {});
+    q.cncMode = c.text("mode", {});
+    q.cncProgramFolder = c.text("program_folder", {});
+}
+
 void readRun(const Reader& r, RunRequest& q) {
     if (const auto seed = r.whole("seed")) {
         if (*seed < 0) refuse("seed", "must not be negative");
@@ -210,11 +222,43 @@ void validateRun(const RunRequest& q) {
         refuse("warmup_parts", "must be fewer than the run's parts (end_part " + std::to_string(*q.endPart) + ")");
 }
 
+void validateCnc(const RunRequest& q) {
+    if (q.cnc.isEmpty()) {
+        if (!q.cncMode.isEmpty()) refuse("cnc.mode", "only with a CNC (cnc.url)");
+        if (!q.cncProgramFolder.isEmpty()) refuse("cnc.program_folder", "only with a CNC (cnc.url)");
+        return;
+    }
+    if (const auto problem = cncUrlProblem(q.cnc)) refuse("cnc.url", *problem);
+    if (!q.cncMode.isEmpty() && q.cncMode != QLatin1String("profile") && q.cncMode != QLatin1String("wear"))
+        refuse("cnc.mode", QStringLiteral("'%1' is not profile or wear").arg(q.cncMode).toStdString());
+    if (!q.cncProgramFolder.isEmpty() && !QFileInfo(q.cncProgramFolder).isDir())
+        refuse("cnc.program_folder", QStringLiteral("'%1' is not a folder").arg(q.cncProgramFolder).toStdString());
+    if (q.speed != 0.0) refuse("speed", "a run through a CNC goes at the machine's own pace; leave the speed at 0");
+}
+
 }  // namespace
+
+std::optional<std::string> cncUrlProblem(const QString& url) {
+    // linuxcnc://HOST or linuxcnc://HOST:PORT (HOST a name, an IPv4 address or an [IPv6] address).
+    static const QRegularExpression form(
+        QStringLiteral("^linuxcnc://([A-Za-z0-9._~%-]+|\\[[0-9A-Fa-f:.]+\\])(?::([^/?#]*))?$"));
+    const QRegularExpressionMatch m = form.match(url);
+    if (!m.hasMatch())
+        return QStringLiteral("'%1' is not linuxcnc://HOST[:PORT] (the only CNC known is LinuxCNC)")
+            .arg(url)
+            .toStdString();
+    if (m.capturedStart(2) < 0) return std::nullopt;
+    bool ok = false;
+    const int port = m.captured(2).toInt(&ok);
+    if (!ok || port < 1 || port > 65535)
+        return QStringLiteral("the port '%1' of '%2' is not 1 .. 65535").arg(m.captured(2), url).toStdString();
+    return std::nullopt;
+}
 
 void validate(const RunRequest& request) {
     validateRun(request);
     validateController(request);
+    validateCnc(request);
     scenarioOf(request);  // the preset, the tuning and the plant's difference, checked against each other
 }
 
@@ -228,6 +272,12 @@ QJsonObject toJson(const RunRequest& q) {
     if (!q.cncOutput.isEmpty() || !q.gauge.isEmpty())
         o.insert(QStringLiteral("devices"),
                  QJsonObject{{QStringLiteral("cnc_output"), q.cncOutput}, {QStringLiteral("gauge"), q.gauge}});
+    if (!q.cnc.isEmpty() || !q.cncMode.isEmpty() || !q.cncProgramFolder.isEmpty()) {
+        QJsonObject cnc{{QStringLiteral("url"), q.cnc}};
+        if (!q.cncMode.isEmpty()) cnc.insert(QStringLiteral("mode"), q.cncMode);
+        if (!q.cncProgramFolder.isEmpty()) cnc.insert(QStringLiteral("program_folder"), q.cncProgramFolder);
+        o.insert(QStringLiteral("cnc"), cnc);
+    }
     if (q.delay) o.insert(QStringLiteral("delay"), *q.delay);
     if (q.ewmaAuto) o.insert(QStringLiteral("ewma_weight"), QStringLiteral("auto"));
     if (q.ewmaWeight) o.insert(QStringLiteral("ewma_weight"), *q.ewmaWeight);
@@ -258,9 +308,10 @@ QJsonObject toJson(const RunRequest& q) {
 
 RunRequest runRequestFromJson(const QJsonObject& json) {
     onlyKeys(json, {},
-             {"machine", "lathe", "devices", "preset", "delay", "controller", "ewma_weight", "drift_weight", "integral",
-              "mismatch_action", "plant_mismatch", "tuning", "pause_on_scrap", "seed", "speed", "end_part",
-              "warmup_parts", "manual_entry", "database"});
+             {"machine",      "lathe",          "devices",      "cnc",      "preset",          "delay",
+              "controller",   "ewma_weight",    "drift_weight", "integral", "mismatch_action", "plant_mismatch",
+              "tuning",       "pause_on_scrap", "seed",         "speed",    "end_part",        "warmup_parts",
+              "manual_entry", "database"});
     const Reader r(json, {});
     RunRequest q;
     q.machine = r.text("machine", kBuiltInLatheKey);
@@ -271,6 +322,7 @@ RunRequest runRequestFromJson(const QJsonObject& json) {
         q.cncOutput = d.text("cnc_output", {});
         q.gauge = d.text("gauge", {});
     }
+    readCnc(r, q);
     q.preset = r.text("preset", q.preset);
     if (const auto delay = r.whole("delay")) q.delay = static_cast<int>(*delay);
     readController(r, q);
@@ -317,6 +369,8 @@ config::LoopScenario scenarioOf(const RunRequest& q) {
     if (q.mismatchAction) scenario.mismatchMonitor.action = core::mismatchActionFromName(*q.mismatchAction);
     scenario.pauseOnScrap = scenario.pauseOnScrap || q.pauseOnScrap;
     validatePlant(q, scenario);
+    if (!q.cnc.isEmpty() && !scenario.lathe)
+        refuse("preset", "a run through a CNC needs a preset with a lathe section (such as paper-2012-group1)");
     core::PlantMismatch& m = scenario.plantMismatch;
     if (q.plant.gainFactor) m.gainFactor = *q.plant.gainFactor;
     if (q.plant.delayParts) m.delayParts = q.plant.delayParts;

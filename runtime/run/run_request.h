@@ -53,6 +53,11 @@ struct RunRequest {
     QString lathe;                       ///< the lathe's name in the history (a plant holds several); may be empty
     QString cncOutput;                   ///< machines assembled from devices: the CNC output's device id
     QString gauge;                       ///< and the gauge's; empty: diameters typed in by hand
+    /// The CNC that cuts the parts: "linuxcnc://HOST[:PORT]" (the LinuxCNC lathe, docs/protocols/cnc.md); empty:
+    /// none. Needs a preset with a lathe section; the run goes at the machine's own pace (speed 0).
+    QString cnc;
+    QString cncMode;           ///< how the corrections reach LinuxCNC's cut: "profile" or "wear"; empty: profile
+    QString cncProgramFolder;  ///< where the part program is written (LinuxCNC reads it there); empty: a temporary one
     // ---- the set-up and its control ----
     QString preset = QStringLiteral("paper-2012");  ///< preset name or JSON file
     std::optional<int> delay;                       ///< transport delay z, parts (1..8)
@@ -75,6 +80,9 @@ struct RunRequest {
     bool manualEntry = false;             ///< diameters typed in by hand instead of the gauge
     QString database;                     ///< the history: SQLite file or postgresql://...; empty: none
 };
+
+/// Whether `url` is linuxcnc://HOST[:PORT] with a port 1..65535; else the reason in the user's terms.
+std::optional<std::string> cncUrlProblem(const QString& url);
 
 /// Largest seed a request takes (JSON numbers are exact to 2^53).
 inline constexpr std::uint64_t kMaxRequestSeed = 1ULL << 53;

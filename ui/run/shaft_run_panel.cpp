@@ -228,6 +228,7 @@ void ShaftRunPanel::connectDevices() {
     if (!hub) return;
     connect(hub, &runtime::DeviceHub::devicesChanged, this, [this] {
         fillDeviceChoices();
+        fillMachineChoices();  // a configured device may offer a machine (a LinuxCNC device: the LinuxCNC lathe)
         updateTexts();
     });
     connect(hub, &runtime::DeviceHub::deviceChanged, this, [this](const QString& id) {
@@ -475,6 +476,11 @@ runtime::RunRequest ShaftRunPanel::request() const {
     if (m_context.tuning && m_context.tuning->current())
         r.tuning = config::controllerTuningToJson(*m_context.tuning->current());
     const std::optional<runtime::MachineOffer> offer = chosenOffer();
+    if (offer && !offer->cnc.isEmpty()) {
+        r.cnc = offer->cnc;  // the machine's parts are cut by that CNC, at its own pace
+        r.cncMode = offer->cncMode;
+        r.speed = 0.0;
+    }
     if (offer && offer->can.usesDevices) {
         r.cncOutput = m_output->currentData().toString();
         r.gauge = m_gauge->currentData().toString();

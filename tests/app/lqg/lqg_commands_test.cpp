@@ -128,7 +128,8 @@ TEST_F(RunToRunCommands, SimulateReproducesTable2AndLqgBeatsTheBestEwma) {
         ASSERT_EQ(lqg.exitCode, 0) << qPrintable(lqg.err);
         const QJsonObject j = lqg.json();
         EXPECT_EQ(keysOf(j), set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "verdicts",
-                                  "tolerance_alarms", "alarms", "corrections", "integral", "plant"}));
+                                  "tolerance_alarms", "alarms", "corrections", "integral", "plant",
+                                  "systematic_from_part", "largest_systematic_mm"}));
         EXPECT_EQ(j["controller"].toString(), "lqg");
         EXPECT_EQ(j["delay"].toInt(), z);
         EXPECT_EQ(j["parts"].toInt(), 20000);
@@ -137,7 +138,7 @@ TEST_F(RunToRunCommands, SimulateReproducesTable2AndLqgBeatsTheBestEwma) {
         double analyticOpen = 0.0, analyticClosed = 0.0;
         for (const QJsonValue& pv : points) {
             const QJsonObject p = pv.toObject();
-            EXPECT_EQ(keysOf(p), set({"x_mm", "var_open", "var_closed", "k_eff", "k_eff_analytic"}));
+            EXPECT_EQ(keysOf(p), set({"x_mm", "var_open", "var_closed", "k_eff", "k_eff_analytic", "systematic_mm"}));
             EXPECT_NEAR(p["k_eff"].toDouble() / kTable2[z - 1], 1.0, 0.15) << "z " << z;
             EXPECT_NEAR(p["var_open"].toDouble() / p["var_closed"].toDouble(), p["k_eff"].toDouble(), 1e-9);
             EXPECT_NEAR(p["var_open"].toDouble(), 0.0013, 0.0013 * 0.15);  // paper: 0.0013 mm^2
@@ -153,7 +154,8 @@ TEST_F(RunToRunCommands, SimulateReproducesTable2AndLqgBeatsTheBestEwma) {
         ASSERT_EQ(ewma.exitCode, 0) << qPrintable(ewma.err);
         const QJsonObject e = ewma.json();
         EXPECT_EQ(keysOf(e), set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "ewma_weight",
-                                  "verdicts", "alarms", "corrections", "integral", "plant", "tolerance_alarms"}));
+                                  "verdicts", "alarms", "corrections", "integral", "plant", "tolerance_alarms",
+                                  "systematic_from_part", "largest_systematic_mm"}));
         EXPECT_GT(e["ewma_weight"].toDouble(), 0.0);
         EXPECT_LE(e["ewma_weight"].toDouble(), 1.0);
         EXPECT_LT(e["k_eff"].toDouble(), j["k_eff"].toDouble()) << "z " << z;

@@ -17,6 +17,7 @@
 #include "devices/linuxcnc/linuxcnc_lathe.h"
 #include "devices/linuxcnc/linuxcnc_lathe_offer.h"
 #include "devices/linuxcnc/linuxcnc_settings.h"
+#include "tests/devices/support/linuxcnc_comparison.h"
 #include "tests/devices/support/linuxcnc_test_machine.h"
 
 namespace {
@@ -147,18 +148,7 @@ TEST(LinuxCncLoop, SixtyPartsThroughLinuxCncMatchTheBuiltInLatheAndEveryWriteIsR
     ASSERT_EQ(collector.deviations.size(), static_cast<std::size_t>(kParts));
     const Eigen::VectorXd builtInMean = core::profileStatistics(reference.pointDeviationMm, from, kParts).meanMm;
     const Eigen::VectorXd linuxCncMean = core::profileStatistics(collector.deviations, from, kParts).meanMm;
-    for (Eigen::Index i = 0; i < builtInMean.size(); ++i) {
-        std::string key = "point";
-        key += std::to_string(i + 1);
-        RecordProperty(key + "_builtin_um", std::to_string(1000.0 * builtInMean(i)));
-        RecordProperty(key + "_linuxcnc_um", std::to_string(1000.0 * linuxCncMean(i)));
-        const double allowed = std::max(0.1 * std::fabs(builtInMean(i)), 0.002);
-        EXPECT_NEAR(linuxCncMean(i), builtInMean(i), allowed)
-            << "point " << i + 1 << ": systematic error through LinuxCNC " << linuxCncMean(i) * 1000.0
-            << " um, built-in " << builtInMean(i) * 1000.0 << " um";
-    }
-    EXPECT_NEAR(linuxCncMean.cwiseAbs().maxCoeff(), builtInMean.cwiseAbs().maxCoeff(),
-                std::max(0.1 * builtInMean.cwiseAbs().maxCoeff(), 0.002));
+    test::expectSystematicErrorsMatch(builtInMean, linuxCncMean);
 
     // Every correction written was read back equal. A part whose cut was interrupted (a busy computer can starve
     // the sampling) is written and cut again, each time reported.

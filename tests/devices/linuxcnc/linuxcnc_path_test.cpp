@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <cctype>
 #include <cmath>
 #include <numeric>
+#include <ostream>
 
 #include "config/loop_scenario.h"
 #include "core/control/correction_path_builder.h"
@@ -25,6 +27,11 @@ struct Conventions {
     const char* xMode;
     const char* units;
 };
+
+/// "diameter, mm": how gtest (and the test names ctest lists) show a parameter, instead of its raw bytes.
+void PrintTo(const Conventions& c, std::ostream* os) {
+    *os << c.xMode << ", " << c.units;
+}
 
 /// The corrections of the test, radial mm: different at every point, both signs, not round numbers.
 const std::vector<double> kCorrectionsMm{0.0123, -0.0211, 0.0157, 0.0309, -0.0087};
@@ -130,8 +137,15 @@ TEST_P(WearPath, TheWearCorrectionLandsOnTheExecutedPathWithinOneMicrometreOnDia
 
 const Conventions kConventions[] = {{"diameter", "mm"}, {"radius", "mm"}, {"diameter", "inch"}, {"radius", "inch"}};
 
+/// "DiameterMm", "RadiusInch": the X mode and the units, each word capitalised (gtest names allow no other bytes).
 std::string conventionName(const ::testing::TestParamInfo<Conventions>& info) {
-    return std::string(info.param.xMode) + "_" + info.param.units;
+    std::string name;
+    for (const char* word : {info.param.xMode, info.param.units}) {
+        std::string w(word);
+        if (!w.empty()) w[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(w[0])));
+        name += w;
+    }
+    return name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ProfilePath, ::testing::ValuesIn(kConventions), conventionName);

@@ -27,6 +27,16 @@ std::string refusedField(const RunRequest& request) {
     return {};
 }
 
+/// The field runRequestFromJson refuses in `json` ("" when nothing is refused).
+std::string refusedFieldOfJson(const QJsonObject& json) {
+    try {
+        runRequestFromJson(json);
+    } catch (const RunRequestError& e) {
+        return e.field;
+    }
+    return {};
+}
+
 RunRequest everything() {
     RunRequest q;
     q.machine = QStringLiteral("simulated-lathe");
@@ -100,6 +110,64 @@ TEST(RunRequest, RefusalsNameTheField) {
     q = {};
     q.preset = QStringLiteral("no-such-preset");
     EXPECT_EQ(refusedField(q), "preset");
+}
+
+RunRequest throughLinuxCnc() {
+    RunRequest q;
+    q.machine = QStringLiteral("linuxcnc-lathe:127.0.0.1:5007");
+    q.preset = QStringLiteral("paper-2012-group1");
+    q.cnc = QStringLiteral("linuxcnc://127.0.0.1:5007");
+    q.cncMode = QStringLiteral("wear");
+    q.endPart = 60;
+    return q;
+}
+
+TEST(RunRequest, TheCncSurvivesJsonAndIsLeftOutWithoutOne) {
+    QTemporaryDir folder;
+    RunRequest q = throughLinuxCnc();
+    q.cncProgramFolder = folder.path();
+    const QJsonObject json = toJson(q);
+    EXPECT_EQ(json.value(QStringLiteral("cnc")).toObject(),
+              (QJsonObject{{QStringLiteral("url"), q.cnc},
+                           {QStringLiteral("mode"), QStringLiteral("wear")},
+                           {QStringLiteral("program_folder"), folder.path()}}));
+    const RunRequest back = runRequestFromJson(json);
+    EXPECT_EQ(back.cnc, q.cnc);
+    EXPECT_EQ(back.cncMode, q.cncMode);
+    EXPECT_EQ(back.cncProgramFolder, q.cncProgramFolder);
+    EXPECT_NO_THROW(validate(back));
+    EXPECT_FALSE(toJson(RunRequest{}).contains(QStringLiteral("cnc")));
+    EXPECT_EQ(refusedFieldOfJson(QJsonObject{{QStringLiteral("cnc"), QJsonObject{{QStringLiteral("port"), 5007}}}}),
+              "cnc.port");
+}
+
+TEST(RunRequest, CncRefusalsNameTheField) {
+    RunRequest q = throughLinuxCnc();
+    q.cnc.clear();
+    EXPECT_EQ(refusedField(q), "cnc.mode") << "a mode without a CNC";
+    for (const char* url : {"fanuc://127.0.0.1:8193", "linuxcnc://", "linuxcnc://127.0.0.1:0", "linuxcnc://h:70000",
+                            "linuxcnc://h:port", "linuxcnc://h/path", "127.0.0.1:5007"}) {
+        q = throughLinuxCnc();
+        q.cnc = QString::fromLatin1(url);
+        EXPECT_EQ(refusedField(q), "cnc.url") << url;
+    }
+    for (const char* url : {"linuxcnc://127.0.0.1", "linuxcnc://lathe-7.plant:5007", "linuxcnc://[::1]:5007"}) {
+        q = throughLinuxCnc();
+        q.cnc = QString::fromLatin1(url);
+        EXPECT_EQ(refusedField(q), "") << url;
+    }
+    q = throughLinuxCnc();
+    q.cncMode = QStringLiteral("offset");
+    EXPECT_EQ(refusedField(q), "cnc.mode");
+    q = throughLinuxCnc();
+    q.cncProgramFolder = QStringLiteral("/no/such/folder");
+    EXPECT_EQ(refusedField(q), "cnc.program_folder");
+    q = throughLinuxCnc();
+    q.speed = 10.0;
+    EXPECT_EQ(refusedField(q), "speed") << "a CNC goes at its own pace";
+    q = throughLinuxCnc();
+    q.preset = QStringLiteral("paper-2012");
+    EXPECT_EQ(refusedField(q), "preset") << "the statistical plant has no lathe to cut on";
 }
 
 TEST(RunRequest, UnknownAndMistypedFieldsAreRefusedByName) {
