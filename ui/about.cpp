@@ -32,7 +32,6 @@ constexpr const char* kImplemented[] = {
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Falling back to a safe controller on a model mismatch (it holds)"),
-    QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe's incidents as alarms of a Run page run"),
 };
 
 template <std::size_t N>

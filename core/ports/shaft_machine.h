@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/ports/clock.h"
@@ -60,6 +61,9 @@ public:
         (void)partNumber;
         return std::nullopt;
     }
+    /// Problems worth an alarm since the last call (a real CNC unreachable, a write it refused), each in words
+    /// naming the device and what failed; the runtime stores them as alarms of the run (kind "machine").
+    virtual std::vector<std::string> takeIncidents() { return {}; }
     /// All diameters of the part are in: a simulated station forgets it.
     virtual void partMeasured(std::int64_t partNumber) { (void)partNumber; }
     /// Fault switch: the gauge answers nothing for `seconds` of the machine's time; false when the

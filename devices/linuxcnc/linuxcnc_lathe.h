@@ -60,7 +60,7 @@ public:
 
     /// Problems worth an alarm since the last call, each naming LinuxCNC's host and what failed: the runtime
     /// records them as alarms of the run (kind "machine").
-    std::vector<std::string> takeIncidents();
+    std::vector<std::string> takeIncidents() override;
     /// Every write tried since the last call (applied or not): the runtime stores them with the run.
     std::vector<WriteRecord> takeWrites() { return m_session.takeWrites(); }
     /// What the session knows (health, machine state, counters).

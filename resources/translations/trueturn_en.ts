@@ -2832,10 +2832,6 @@
         <source>The LinuxCNC lathe on the Run page and in simulate</source>
         <translation type="unfinished"></translation>
     </message>
-    <message>
-        <source>The LinuxCNC lathe&apos;s incidents as alarms of a Run page run</source>
-        <translation type="unfinished"></translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>

@@ -2842,10 +2842,6 @@
         <source>The LinuxCNC lathe on the Run page and in simulate</source>
         <translation>Станок LinuxCNC на странице «Работа» и в simulate</translation>
     </message>
-    <message>
-        <source>The LinuxCNC lathe&apos;s incidents as alarms of a Run page run</source>
-        <translation>Сбои станка LinuxCNC как тревоги серии на странице «Работа»</translation>
-    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>

@@ -251,8 +251,20 @@ void LoopWorker::tick() {
     const double until =
         m_pace && m_pace->speed() > 0.0 ? m_pace->machineAt(wallS()) : std::numeric_limits<double>::infinity();
     m_run->stepper->advanceTo(until, kMaxStepsPerTick);
+    recordIncidents();
     publish();
     if (m_run->engine->state() == core::LoopState::Idle) m_timer->stop();
+}
+
+void LoopWorker::recordIncidents() {
+    for (const std::string& incident : m_run->machine->takeIncidents()) {
+        const core::LoopEngine& engine = *m_run->engine;
+        if (core::HistoryStore* store = history(); store && engine.runId())
+            store->recordAlarm(*engine.runId(),
+                               {engine.partAwaitingMeasurement(), m_run->machine->clock().nowS(), "machine", incident});
+        qCWarning(lcLoop).noquote() << "machine:" << QString::fromStdString(incident);
+        emit machineIncident(QString::fromStdString(incident));
+    }
 }
 
 LoopSnapshot LoopWorker::snapshotNow() const {

@@ -97,6 +97,8 @@ signals:
     /// The plant database's forwarder changed state (only with a plant database): online, offline since,
     /// the parts kept on this terminal.
     void plantStatus(const tt::storage::ForwarderStatus& status);
+    /// The machine reported a problem (a real CNC unreachable, a write refused), stored as an alarm of the run.
+    void machineIncident(const QString& text);
 
 private:
     class Relay;
@@ -104,6 +106,8 @@ private:
     void begin(const RunStart& start, std::optional<qint64> resumeRunId);
     void launch(const RunStart& start, std::optional<qint64> resumeRunId);
     void tick();
+    /// Stores the machine's incidents as alarms of the run and reports them (machineIncident).
+    void recordIncidents();
     double wallS() const;
     void publish();
     LoopSnapshot snapshotNow() const;

@@ -24,6 +24,7 @@ RunSession::RunSession(QObject* parent) : QObject(parent) {
     connect(m_worker, &LoopWorker::notice, this, &RunSession::notice);
     connect(m_worker, &LoopWorker::tuningTaken, this, &RunSession::tuningTaken);
     connect(m_worker, &LoopWorker::plantStatus, this, &RunSession::plantStatus);
+    connect(m_worker, &LoopWorker::machineIncident, this, &RunSession::machineIncident);
     m_thread.start();
 }
 

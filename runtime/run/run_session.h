@@ -54,6 +54,8 @@ signals:
     /// The plant database's forwarder changed state (runs stored in a plant database through this terminal's
     /// journal): online or offline since when, and the parts kept on this terminal.
     void plantStatus(const tt::storage::ForwarderStatus& status);
+    /// The machine reported a problem, stored as an alarm of the run (LoopWorker::machineIncident).
+    void machineIncident(const QString& text);
 
 private:
     QThread m_thread;

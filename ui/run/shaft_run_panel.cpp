@@ -219,6 +219,8 @@ void ShaftRunPanel::connectSession() {
     connect(m_session, &runtime::RunSession::tuningTaken, this,
             [this](qint64 part) { addAlarm(tr("The new controller tuning took over at part %1.").arg(part), false); });
     connect(m_session, &runtime::RunSession::plantStatus, this, &ShaftRunPanel::onPlantStatus);
+    connect(m_session, &runtime::RunSession::machineIncident, this,
+            [this](const QString& text) { addAlarm(text, true); });
     if (ControllerTuning* tuning = m_context.tuning)
         connect(tuning, &ControllerTuning::applied, m_session, &runtime::RunSession::applyTuning);
 }
