@@ -26,6 +26,29 @@ void pace(double wallS, const std::atomic<bool>* stop) {
     }
 }
 
+}  // namespace
+
+bool runEnds(const LoopEngine& engine, const std::atomic<bool>* stop, std::optional<std::int64_t>& stopAfter,
+             SimulationOutcome& outcome) {
+    if (engine.complete()) {
+        outcome.complete = true;
+        return true;
+    }
+    if (!stopAfter && stop && stop->load()) stopAfter = engine.partsFinished();
+    if (stopAfter && engine.partsFinished() > *stopAfter) {
+        outcome.interrupted = true;
+        outcome.stopReason = "interrupted";
+        return true;
+    }
+    if (engine.state() == LoopState::Fault || engine.state() == LoopState::Idle) {
+        outcome.stopReason = engine.detail();
+        return true;
+    }
+    return false;
+}
+
+namespace {
+
 /// Steps `engine` and moves time on with `jump` to the next event of the devices or the engine.
 template <typename Jump>
 SimulationOutcome simulate(LoopEngine& engine, const Clock& clock, const SimulationTimeline& devices, Jump jump,
@@ -35,20 +58,7 @@ SimulationOutcome simulate(LoopEngine& engine, const Clock& clock, const Simulat
     std::optional<std::int64_t> stopAfter;  // parts finished when the stop was asked for
     for (std::int64_t i = 0; i < maxSteps; ++i) {
         engine.step();
-        if (engine.complete()) {
-            outcome.complete = true;
-            break;
-        }
-        if (!stopAfter && stop && stop->load()) stopAfter = engine.partsFinished();
-        if (stopAfter && engine.partsFinished() > *stopAfter) {
-            outcome.interrupted = true;
-            outcome.stopReason = "interrupted";
-            break;
-        }
-        if (engine.state() == LoopState::Fault || engine.state() == LoopState::Idle) {
-            outcome.stopReason = engine.detail();
-            break;
-        }
+        if (runEnds(engine, stop, stopAfter, outcome)) break;
         const double next = std::min(devices.nextEventTimeS(), engine.nextWakeS());
         if (!std::isfinite(next)) {
             outcome.stopReason = "nothing more can happen: " + engine.detail();

@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "core/ports/shaft_machine.h"
@@ -19,6 +20,12 @@ struct SimulationOutcome {
     double simulatedS = 0.0;   ///< simulated time at the end, s
     bool interrupted = false;  ///< stopped on request (`stop`) after the part on the machine was finished
 };
+
+/// After a step of `engine`: whether the run ends now, with `outcome` filled: complete, interrupted (once `stop` is
+/// set, after the part on the machine then: `stopAfter` keeps the parts finished when it was asked for), faulted or
+/// stopped.
+bool runEnds(const LoopEngine& engine, const std::atomic<bool>* stop, std::optional<std::int64_t>& stopAfter,
+             SimulationOutcome& outcome);
 
 /// Runs the engine on simulated devices: step, then move the clock to the next event of the devices or
 /// the engine. `speed` 0 jumps at once (as fast as possible); a positive speed waits (simulated time

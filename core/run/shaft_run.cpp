@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/loop/loop_engine.h"
+#include "core/loop/loop_runner.h"
 #include "core/loop/shaft_run_stepper.h"
 #include "core/run/run_limits.h"
 #include "core/run/simulated_lathe.h"
@@ -116,20 +117,7 @@ SimulationOutcome pollToEnd(LoopEngine& engine, ShaftMachine& machine, const Lat
     for (;;) {
         engine.step();
         if (spec.machine.poll) spec.machine.poll(machine, engine);
-        if (engine.complete()) {
-            outcome.complete = true;
-            break;
-        }
-        if (!stopAfter && spec.stop && spec.stop->load()) stopAfter = engine.partsFinished();
-        if (stopAfter && engine.partsFinished() > *stopAfter) {
-            outcome.interrupted = true;
-            outcome.stopReason = "interrupted";
-            break;
-        }
-        if (engine.state() == LoopState::Fault || engine.state() == LoopState::Idle) {
-            outcome.stopReason = engine.detail();
-            break;
-        }
+        if (runEnds(engine, spec.stop, stopAfter, outcome)) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     outcome.simulatedS = machine.clock().nowS();

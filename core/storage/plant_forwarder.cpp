@@ -55,7 +55,8 @@ Database& PlantForwarder::plant() {
         auto plant = std::make_unique<Database>(m_plantConfig);
         // A batch that waits on the server (a lock, a recovering server) fails after a bound and is sent again
         // instead of holding the forwarder (and the terminal's shutdown) for ever.
-        plant->exec(QStringLiteral("SET statement_timeout = %1").arg(kForwardStatementTimeoutMs));
+        if (plant->isPostgres())
+            plant->exec(QStringLiteral("SET statement_timeout = %1").arg(kForwardStatementTimeoutMs));
         // The owner of the plant database brings its schema up to date; a terminal's role finds it current.
         plant->migrate(historySchema());
         m_plant = std::move(plant);

@@ -171,7 +171,8 @@ TEST_F(SetUpMerge, TheWarmUpPartsAreNamedAndTheirVerdictsCountedApart) {
     for (const char* k : {"good", "rework", "scrap"})
         EXPECT_LE(w.value(k).toInt(), v.value(k).toInt()) << k;
     const CliResult help = runTrueturn({"simulate", "--help"});
-    EXPECT_TRUE(help.out.contains(QStringLiteral("--parts 150 machines 250 parts"))) << qPrintable(help.out);
+    EXPECT_TRUE(help.out.simplified().contains(QStringLiteral("--parts 150 machines 250 parts")))
+        << qPrintable(help.out);
     const CliResult text = runTrueturn({"simulate", "--parts", "100", "--warmup", "20"});
     ASSERT_EQ(text.exitCode, 0) << qPrintable(text.err);
     EXPECT_TRUE(text.out.contains(QStringLiteral("verdicts of all 120 machined parts (warm-up included)")))
