@@ -52,7 +52,8 @@ QString freshPlant(QString name = {}) {
     storage::Database owner(c);
     owner.migrate(storage::historySchema());
     for (int i = 1; i <= kTerminals; ++i)
-        owner.exec(QStringLiteral("INSERT INTO plant_terminals (login, machine) VALUES ('terminal_m%1', 'm%1')").arg(i));
+        owner.exec(
+            QStringLiteral("INSERT INTO plant_terminals (login, machine) VALUES ('terminal_m%1', 'm%1')").arg(i));
     return name;
 }
 
@@ -99,11 +100,10 @@ void BM_PlantTerminals(benchmark::State& state) {
         state.ResumeTiming();
         std::vector<std::unique_ptr<QProcess>> terminals;
         for (int i = 1; i <= kTerminals; ++i)
-            terminals.push_back(start({"simulate", "--db", terminalUrl(i, plant), "--machine",
-                                       QStringLiteral("m%1").arg(i), "--journal",
-                                       dir.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--parts",
-                                       QString::number(kPartsPerTerminal), "--warmup", "0", "--seed",
-                                       QString::number(i), "--forward-batch", QString::number(state.range(0))}));
+            terminals.push_back(start(
+                {"simulate", "--db", terminalUrl(i, plant), "--machine", QStringLiteral("m%1").arg(i), "--journal",
+                 dir.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--parts", QString::number(kPartsPerTerminal),
+                 "--warmup", "0", "--seed", QString::number(i), "--forward-batch", QString::number(state.range(0))}));
         std::string why;
         const bool ok = runAll(terminals, why);
         state.PauseTiming();
@@ -134,11 +134,10 @@ void BM_PlantForward(benchmark::State& state) {
         dropPlant(plantName);
         std::vector<std::unique_ptr<QProcess>> terminals;
         for (int i = 1; i <= kTerminals; ++i)
-            terminals.push_back(start({"simulate", "--db", terminalUrl(i, plantName),
-                                       "--machine", QStringLiteral("m%1").arg(i), "--journal",
-                                       filled.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--parts",
-                                       QString::number(kPartsPerTerminal), "--warmup", "0", "--seed",
-                                       QString::number(i), "--drain-wait", "0"}));
+            terminals.push_back(start(
+                {"simulate", "--db", terminalUrl(i, plantName), "--machine", QStringLiteral("m%1").arg(i), "--journal",
+                 filled.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--parts", QString::number(kPartsPerTerminal),
+                 "--warmup", "0", "--seed", QString::number(i), "--drain-wait", "0"}));
         std::string why;
         if (!runAll(terminals, why)) {
             state.SkipWithError(("filling the journals failed: " + why).c_str());
@@ -156,10 +155,10 @@ void BM_PlantForward(benchmark::State& state) {
         state.ResumeTiming();
         std::vector<std::unique_ptr<QProcess>> forwarders;
         for (int i = 1; i <= kTerminals; ++i)
-            forwarders.push_back(start({"forward", "--db", terminalUrl(i, plant), "--machine",
-                                        QStringLiteral("m%1").arg(i), "--journal",
-                                        dir.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--forward-batch",
-                                        QString::number(state.range(0))}));
+            forwarders.push_back(
+                start({"forward", "--db", terminalUrl(i, plant), "--machine", QStringLiteral("m%1").arg(i), "--journal",
+                       dir.filePath(QStringLiteral("m%1.sqlite").arg(i)), "--forward-batch",
+                       QString::number(state.range(0))}));
         std::string why;
         const bool ok = runAll(forwarders, why);
         state.PauseTiming();
@@ -196,7 +195,14 @@ void BM_PlantOverview(benchmark::State& state) {
 }
 
 BENCHMARK(BM_PlantTerminals)->Arg(20)->Arg(200)->Arg(1000)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
-BENCHMARK(BM_PlantForward)->Arg(10)->Arg(50)->Arg(200)->Arg(1000)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_PlantForward)
+    ->Arg(10)
+    ->Arg(50)
+    ->Arg(200)
+    ->Arg(1000)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
 BENCHMARK(BM_PlantOverview)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

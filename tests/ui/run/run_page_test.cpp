@@ -18,31 +18,23 @@
 #include <functional>
 
 #include "core/storage/database.h"
-#include "runtime/devices/device_hub.h"
+#include "plot/chart.h"
 #include "run_window.h"
+#include "runtime/devices/device_hub.h"
+#include "runtime/run/run_session.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
-#include "plot/chart.h"
 #include "ui/run/manual_entry_panel.h"
 #include "ui/run/profile_panel.h"
-#include "runtime/run/run_session.h"
 
 namespace tt::ui {
 namespace {
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using test::waitFor;
 
 using test::typeAndEnter;
 

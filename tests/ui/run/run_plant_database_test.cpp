@@ -27,15 +27,7 @@
 namespace tt::ui {
 namespace {
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs = tt::test::kPatientWaitMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using test::waitFor;
 
 qint64 scalar(storage::Database& db, const QString& sql, const QVariantList& bindings = {}) {
     QSqlQuery q = db.exec(sql, bindings);

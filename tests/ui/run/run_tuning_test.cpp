@@ -18,6 +18,7 @@
 
 #include "config/loop_scenario.h"
 #include "run_window.h"
+#include "runtime/run/run_session.h"
 #include "screenshots.h"
 #include "tests/support/patient_wait.h"
 #include "ui/auth/user_session.h"
@@ -25,21 +26,12 @@
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
 #include "ui/pages/controller_page.h"
-#include "runtime/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
 namespace tt::ui {
 namespace {
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using test::waitFor;
 
 bool waitForNewest(ControllerPage& page) {
     return waitFor(

@@ -13,7 +13,9 @@
 #include <QTest>
 #include <functional>
 
+#include "run_window.h"
 #include "runtime/devices/device_hub.h"
+#include "runtime/run/run_session.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
@@ -21,20 +23,11 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
-#include "runtime/run/run_session.h"
 
 namespace tt::ui {
 namespace {
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using test::waitFor;
 
 class RunVerdictsTest : public ::testing::Test {
 protected:

@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <QElapsedTimer>
 #include <QLineEdit>
 #include <QTemporaryDir>
 #include <QTest>
+#include <functional>
 
 #include "runtime/devices/device_hub.h"
 #include "scripted_prompt.h"
+#include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
@@ -34,6 +37,17 @@ protected:
     runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("history.sqlite")), &devices};
 };
+
+/// Serves the event loop until `done` holds (true) or `timeoutMs` has passed (false).
+inline bool waitFor(const std::function<bool()>& done, int timeoutMs = tt::test::kPatientWaitMs) {
+    QElapsedTimer timer;
+    timer.start();
+    while (!done()) {
+        if (timer.elapsed() > timeoutMs) return false;
+        QTest::qWait(20);
+    }
+    return true;
+}
 
 /// Types `text` into `field` as the operator does and presses Enter.
 inline void typeAndEnter(QLineEdit* field, const QString& text) {
