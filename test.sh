@@ -17,8 +17,12 @@ pg_dir=$(mktemp -d /tmp/trueturn-pg.XXXXXX)
 lcnc_dir=$(mktemp -d /tmp/trueturn-lcnc.XXXXXX)
 trap 'scripts/start-test-postgres.sh --stop "$pg_dir"; rm -rf "$pg_dir";
       scripts/start-test-linuxcnc.sh --stop "$lcnc_dir"; rm -rf "$lcnc_dir"' EXIT
-eval "$(scripts/start-test-postgres.sh "$pg_dir" 55432)"
-eval "$(scripts/start-test-linuxcnc.sh "$lcnc_dir" 5007)"
+# Each start's exports are taken in two steps: a start that fails ends this script (eval of a failed command
+# substitution would not).
+servers=$(scripts/start-test-postgres.sh "$pg_dir" 55432)
+eval "$servers"
+servers=$(scripts/start-test-linuxcnc.sh "$lcnc_dir" 5007)
+eval "$servers"
 
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir build --output-on-failure -j "$(nproc)" --timeout 600

@@ -16,7 +16,8 @@
 # It runs as the nobody user for its real-time part (RTAPI_UID=65534; LinuxCNC refuses to run as root
 # otherwise), with its FIFO in DIR/fifo (mode 1777) and a private HOME in DIR/home (LinuxCNC keeps
 # $HOME/.tool.mmap there, which the standalone rs274 would otherwise share). Only one LinuxCNC may run on a
-# machine: a running one (the lock file /tmp/linuxcnc.lock) is left alone and the start fails.
+# machine: a running one is left alone and the start fails; the lock file (/tmp/linuxcnc.lock) and shared
+# memory of one that was killed (its processes gone) are removed before the start.
 set -euo pipefail
 
 sample=/usr/share/doc/linuxcnc/examples/sample-configs/sim/axis
@@ -41,6 +42,15 @@ shm_left() {
 components_left() {
     local name
     for name in $components; do pgrep -x "$name" || true; done
+}
+
+# The shared memory and the lock file of a LinuxCNC that no longer runs.
+remove_leftovers() {
+    local key
+    for key in $(shm_left); do ipcrm -M "$key" 2>/dev/null || true; done
+    [[ -z "$(shm_left)" ]] || fail "LinuxCNC shared memory is still present: $(shm_left | tr '\n' ' ')"
+    rm -f "$lock"
+    [[ ! -e "$lock" ]] || fail "the lock file $lock could not be removed"
 }
 
 stop() {
@@ -74,13 +84,8 @@ stop() {
     [[ -z "$left" ]] || fail "LinuxCNC processes still running after the stop:$left"
     left=$(components_left | tr '\n' ' ')
     [[ -z "${left// /}" ]] || fail "LinuxCNC processes still running after the stop: $left"
-    if [[ -n "$(shm_left)" ]]; then
-        # The linuxcnc script removes its segments on a clean stop; after a forced one, remove ours.
-        for key in $(shm_left); do ipcrm -M "$key" 2>/dev/null || true; done
-        [[ -z "$(shm_left)" ]] || fail "LinuxCNC shared memory still present after the stop: $(shm_left | tr '\n' ' ')"
-    fi
-    if [[ -f "$lock" ]]; then rm -f "$lock"; fi
-    [[ ! -e "$lock" ]] || fail "the lock file $lock is still there after the stop"
+    # The linuxcnc script removes its segments and lock on a clean stop; after a forced one, remove ours.
+    remove_leftovers
     rm -f "$dir/linuxcnc.pid" "$dir/components.pid"
 }
 
@@ -94,8 +99,13 @@ port="${2:-5007}"
 command -v linuxcnc >/dev/null || fail "linuxcnc not found: install linuxcnc-uspace (scripts/install-deps.sh --with-test-tools)"
 [[ -f "$sample/lathe.ini" ]] || fail "the package's lathe configuration $sample/lathe.ini is missing"
 [[ "$port" =~ ^[0-9]+$ ]] && ((port > 0 && port < 65536)) || fail "the port must be 1 to 65535 (got $port)"
-[[ ! -e "$lock" ]] || fail "LinuxCNC already runs on this machine ($lock exists); stop it first"
 [[ -z "$(components_left)" ]] || fail "LinuxCNC processes already run on this machine: $(components_left | tr '\n' ' ')"
+# No LinuxCNC runs: a lock file or shared memory left behind is from one that was killed (a machine stopped
+# mid-run); LinuxCNC itself would refuse to start beside them.
+if [[ -e "$lock" || -n "$(shm_left)" ]]; then
+    echo "start-test-linuxcnc: removing what a LinuxCNC that no longer runs left behind (lock file, shared memory)" >&2
+    remove_leftovers
+fi
 if (exec 3<>"/dev/tcp/127.0.0.1/$port") 2>/dev/null; then fail "port $port is already in use"; fi
 
 # A fresh configuration each start; the programs in nc/ stay (a restarted controller finds its programs again).
