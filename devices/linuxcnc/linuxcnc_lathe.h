@@ -12,6 +12,7 @@
 #include "core/ports/shaft_machine.h"
 #include "core/run/shaft_scenario.h"
 #include "core/sim/shaft/lathe_shop.h"
+#include "devices/linuxcnc/executed_path.h"
 #include "devices/linuxcnc/linuxcnc_session.h"
 
 namespace tt::devices::linuxcnc {
@@ -98,7 +99,8 @@ private:
     void writeProgram(const core::PartCorrection& correction);
     void pump();
     void finish(const PartResult& result);
-    core::CorrectionPath executed(const PartResult& result, const core::CorrectionPath& grid) const;
+    /// Where the part sits in the program and the band that is the cut, for drawing the executed path.
+    CutGeometry cutGeometry() const;
     PartJob partJob(const core::PartCorrection& correction) const;
 
     LinuxCncLatheOptions m_options;

@@ -1,9 +1,7 @@
 // The LinuxCNC lathe's ports (CNC output, part cycle) and what happens when LinuxCNC has cut a part: the path it
 // executed, turned into a part by the scenario's physics and put on the simulated measuring station.
 #include <algorithm>
-#include <cmath>
 
-#include "core/control/profile_interpolation.h"
 #include "devices/linuxcnc/linuxcnc_lathe.h"
 
 namespace tt::devices::linuxcnc {
@@ -11,8 +9,6 @@ namespace tt::devices::linuxcnc {
 namespace {
 
 constexpr std::size_t kKeptPaths = 8;
-/// The executed path must reach this close to both ends of the part, and never skip more, mm.
-constexpr double kCoverageMm = 5.0;
 
 core::DeviceHealth machineHealth(const SessionSnapshot& s) {
     if (s.health.state != core::DeviceState::Ready) return s.health;
@@ -91,13 +87,15 @@ void LinuxCncLathe::finish(const PartResult& result) {
     const auto cutting = m_cutting.find(result.partNumber);
     if (cutting == m_cutting.end()) return;
     const core::PartCorrection& commanded = cutting->second;
+    DrawnPath drawn = drawExecutedPath(result.samplesMm, commanded.path, cutGeometry());
     core::PartCorrection executedCorrection{result.partNumber, commanded.pointZMm, commanded.pointCorrectionMm,
-                                            executed(result, commanded.path)};
+                                            std::move(drawn.path)};
     if (executedCorrection.path.zMm.empty()) {
-        // The samples do not cover the part (the sampling stopped for long, or a program that was not ours ran).
+        // The samples do not cover the part (the sampling stopped for long where the path bends, or a program that
+        // was not ours ran).
         m_incidents.push_back("LinuxCNC at " + m_options.session.controller.endpoint.text() + ": part " +
-                              std::to_string(result.partNumber) +
-                              ": its path was not seen over the whole part; it is not counted and is cut again");
+                              std::to_string(result.partNumber) + ": its path was not seen over the whole part: " +
+                              drawn.unseen + "; it is not counted and is cut again");
         m_session.submit(partJob(commanded));
         return;
     }
@@ -110,42 +108,9 @@ void LinuxCncLathe::finish(const PartResult& result) {
     m_cutting.erase(cutting);
 }
 
-core::CorrectionPath LinuxCncLathe::executed(const PartResult& result, const core::CorrectionPath& grid) const {
-    const double length = m_scenario.partLengthMm;
-    const double nominalR = 0.5 * m_scenario.nominalDiameterMm;
-    double band = m_options.session.corrections.largestTotalMm + 0.5 * m_options.clearanceMm;
-    for (const double x : grid.xCorrectionMm)
-        band = std::max(band, std::fabs(x) + 0.5 * m_options.clearanceMm);
-    // In time order: the feed onto the part (at the path's first X, from the clearance before z = 0) and the cut to
-    // the part's end; what comes after it (the retract) is not the cut.
-    const double feedStart = -m_options.clearanceMm + 1e-3;
-    std::vector<std::pair<double, double>> cut;
-    for (const auto& [x, zProgram] : result.samplesMm) {
-        const double z = (zProgram - m_options.zOriginMm) / m_options.zDirection;
-        if (z < feedStart || std::fabs(x - nominalR) > band) continue;
-        // The program dwells at the end of the cut: the first sample there is the cut's end, the rest the retract.
-        cut.emplace_back(std::min(z, length), x - nominalR);
-        if (z >= length - 1e-6) break;
-    }
-    std::sort(cut.begin(), cut.end());
-    cut.erase(std::unique(cut.begin(), cut.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
-              cut.end());
-    if (cut.size() < 2 || cut.front().first > 0.0 || cut.back().first < length - 1e-6) return {};
-    for (std::size_t i = 1; i < cut.size(); ++i)
-        if (cut[i].first - cut[i - 1].first > 2.0 * kCoverageMm) return {};
-    // Between the samples the path is drawn by PCHIP: where the sampling paused (a busy computer) the cubic follows
-    // the smooth path better than a chord; where the samples are dense (0.25 mm at 15 m/min) both are the same.
-    std::vector<double> zs, xs;
-    for (const auto& [z, x] : cut) {
-        zs.push_back(z);
-        xs.push_back(x);
-    }
-    const core::PiecewiseCubic executed = core::PiecewiseCubic::pchip(zs, xs);
-    core::CorrectionPath path;
-    path.zMm = grid.zMm;
-    for (const double z : grid.zMm)
-        path.xCorrectionMm.push_back(executed.value(z));
-    return path;
+CutGeometry LinuxCncLathe::cutGeometry() const {
+    return {m_scenario.partLengthMm, m_scenario.nominalDiameterMm, m_options.zOriginMm,
+            m_options.zDirection,    m_options.clearanceMm,        m_options.session.corrections.largestTotalMm};
 }
 
 }  // namespace tt::devices::linuxcnc
