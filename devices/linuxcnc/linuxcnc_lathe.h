@@ -71,6 +71,8 @@ public:
     /// The correction path LinuxCNC executed for a part it cut (radial mm along the part, on the loop's path grid);
     /// the most recent parts only.
     std::optional<core::CorrectionPath> executedPath(std::int64_t partNumber) const;
+    /// Parts cut again because their path was not seen over the whole part (each also an incident).
+    std::uint64_t partsCutAgain() const { return m_partsCutAgain; }
     /// The program file the machine runs.
     const std::string& programPath() const { return m_programPath; }
 
@@ -118,6 +120,7 @@ private:
     std::deque<core::FinishedPart> m_finished;
     std::deque<std::pair<std::int64_t, core::CorrectionPath>> m_executed;
     std::vector<std::string> m_incidents;  ///< the machine's own (a cut not sampled over the whole part)
+    std::uint64_t m_partsCutAgain = 0;
 };
 
 }  // namespace tt::devices::linuxcnc

@@ -96,6 +96,7 @@ void LinuxCncLathe::finish(const PartResult& result) {
         m_incidents.push_back("LinuxCNC at " + m_options.session.controller.endpoint.text() + ": part " +
                               std::to_string(result.partNumber) + ": its path was not seen over the whole part: " +
                               drawn.unseen + "; it is not counted and is cut again");
+        ++m_partsCutAgain;
         m_session.submit(partJob(commanded));
         return;
     }

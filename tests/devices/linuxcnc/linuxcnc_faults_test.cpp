@@ -93,7 +93,8 @@ TEST(LinuxCncFaults, AnEStopOrAMachineThatIsOffGetsNoWriteAndIsReported) {
     EXPECT_EQ(before, (std::vector<double>{0.4321, 0.0})) << "nothing was written during the E-stop";
     ASSERT_TRUE(test::waitUntil([&] { return lathe->cycle().takeFinishedPart().has_value(); }, 120.0))
         << "part 1 is cut once the machine is ready";
-    EXPECT_EQ(lathe->snapshot().counters.writesVerified, 1u);
+    // A part whose path the sampling did not see whole (a busy computer) is cut again, with a write of its own.
+    EXPECT_EQ(lathe->snapshot().counters.writesVerified, 1u + lathe->partsCutAgain());
 
     // The machine off (no E-stop): the same.
     ASSERT_TRUE(test::operate(lathe->session(), [](LinuxCncController& c) { c.request("set machine off"); }));
@@ -123,7 +124,8 @@ TEST(LinuxCncFaults, AWriteLinuxCncRefusesIsNotAppliedIsReportedAndIsWrittenAgai
     auto lathe = makeLathe(*lc, QStringLiteral("linuxcnc://127.0.0.1:%1").arg(proxy.port()));
     ASSERT_TRUE(cut(*lathe, 1, kCorrectionsMm));
     const std::vector<WriteRecord> writes = lathe->takeWrites();
-    ASSERT_EQ(writes.size(), 2u);
+    const std::uint64_t again = lathe->partsCutAgain();  // each with a write of its own
+    ASSERT_EQ(writes.size(), 2u + again);
     EXPECT_EQ(writes[0].outcome, WriteOutcome::Refused);
     EXPECT_FALSE(writes[0].applied());
     EXPECT_NE(writes[0].message.find("LinuxCNC refused the corrections"), std::string::npos) << writes[0].message;
@@ -131,8 +133,8 @@ TEST(LinuxCncFaults, AWriteLinuxCncRefusesIsNotAppliedIsReportedAndIsWrittenAgai
     EXPECT_EQ(writes[1].partNumber, 1);
     const auto counters = lathe->snapshot().counters;
     EXPECT_EQ(counters.writesRefused, 1u);
-    EXPECT_EQ(counters.writesVerified, 1u);
-    EXPECT_EQ(counters.partsCut, 1u) << "the part is cut once, with the verified corrections";
+    EXPECT_EQ(counters.writesVerified, 1u + again);
+    EXPECT_EQ(counters.partsCut, 1u + again) << "the part is cut once, with the verified corrections";
     EXPECT_TRUE(anyContains(lathe->takeIncidents(), "refused the corrections"));
 }
 
@@ -155,7 +157,8 @@ TEST(LinuxCncFaults, AValueLinuxCncHoldsThatDiffersFromTheOneWrittenIsNotApplied
     auto lathe = makeLathe(*lc, QStringLiteral("linuxcnc://127.0.0.1:%1").arg(proxy.port()));
     ASSERT_TRUE(cut(*lathe, 1, kCorrectionsMm));
     const std::vector<WriteRecord> writes = lathe->takeWrites();
-    ASSERT_EQ(writes.size(), 2u);
+    const std::uint64_t again = lathe->partsCutAgain();  // each with a write of its own
+    ASSERT_EQ(writes.size(), 2u + again);
     EXPECT_EQ(writes[0].outcome, WriteOutcome::Differs);
     EXPECT_FALSE(writes[0].applied());
     ASSERT_EQ(writes[0].readBackMm.size(), 5u) << "what LinuxCNC holds, read back for the report";
@@ -165,7 +168,7 @@ TEST(LinuxCncFaults, AValueLinuxCncHoldsThatDiffersFromTheOneWrittenIsNotApplied
     EXPECT_EQ(writes[1].outcome, WriteOutcome::Verified);
     EXPECT_EQ(writes[1].readBackMm, writes[1].writtenMm);
     EXPECT_EQ(lathe->snapshot().counters.readBacksDiffered, 1u);
-    EXPECT_EQ(lathe->snapshot().counters.partsCut, 1u);
+    EXPECT_EQ(lathe->snapshot().counters.partsCut, 1u + again);
 }
 
 TEST(LinuxCncFaults, AGarbledReplyIsRefusedAndTheConnectionResetAndThePartIsCutAgain) {
@@ -183,7 +186,7 @@ TEST(LinuxCncFaults, AGarbledReplyIsRefusedAndTheConnectionResetAndThePartIsCutA
     const auto s = lathe->snapshot();
     EXPECT_GE(s.counters.connectionResets, 1u);
     EXPECT_EQ(s.counters.partsAborted, 1u) << "the interrupted cut is not counted";
-    EXPECT_EQ(s.counters.partsCut, 1u);
+    EXPECT_EQ(s.counters.partsCut, 1u + lathe->partsCutAgain());
     EXPECT_GE(proxy.connections(), 2);
     EXPECT_TRUE(anyContains(lathe->takeIncidents(), "not printable")) << s.lastProblem;
 }
@@ -203,7 +206,7 @@ TEST(LinuxCncFaults, AReplyCutOffIsRefusedAndTheConnectionResetAndThePartIsCutAg
     const auto s = lathe->snapshot();
     EXPECT_GE(s.counters.connectionResets, 1u);
     EXPECT_EQ(s.counters.partsAborted, 1u);
-    EXPECT_EQ(s.counters.partsCut, 1u);
+    EXPECT_EQ(s.counters.partsCut, 1u + lathe->partsCutAgain());
     EXPECT_TRUE(anyContains(lathe->takeIncidents(), "in the middle of a reply")) << s.lastProblem;
 }
 
