@@ -84,16 +84,26 @@ DrawnPath drawExecutedPath(const std::vector<std::array<double, 2>>& samplesMm, 
     // Between the samples the path is drawn by PCHIP: where the samples are dense (0.25 mm at 15 m/min) it is the
     // executed path; where the sampling paused (a busy computer) it holds only if the commanded path, sampled alike,
     // is drawn back within kDrawnPathToleranceMm.
-    if (const double error = drawnPathErrorMm(zs, grid); error > kDrawnPathToleranceMm)
+    const double error = drawnPathErrorMm(zs, grid);
+    if (error > kDrawnPathToleranceMm)
         return {{},
                 "its position was not read often enough where the path bends (drawn through the samples it could be " +
-                    fixed(error * 1000.0, 2) + " um off)"};
+                    fixed(error * 1000.0, 2) + " um off)",
+                error};
     const core::PiecewiseCubic executed = core::PiecewiseCubic::pchip(zs, xs);
     DrawnPath drawn;
+    drawn.errorMm = error;
     drawn.path.zMm = grid.zMm;
     for (const double z : grid.zMm)
         drawn.path.xCorrectionMm.push_back(executed.value(z));
     return drawn;
+}
+
+int nextFeedOverridePct(int currentPct, const DrawnPath& last) {
+    if (!last.unseen.empty() || last.errorMm > 0.5 * kDrawnPathToleranceMm)
+        return std::max(kSlowestFeedPct, currentPct / 2);
+    if (last.errorMm < 0.1 * kDrawnPathToleranceMm) return std::min(100, currentPct + std::max(1, currentPct / 4));
+    return currentPct;
 }
 
 }  // namespace tt::devices::linuxcnc

@@ -28,7 +28,17 @@ inline constexpr double kDrawnPathToleranceMm = 1.0e-4;
 struct DrawnPath {
     core::CorrectionPath path;
     std::string unseen;
+    double errorMm = 0.0;  ///< drawnPathErrorMm of the samples (0 when the start or the end was not seen)
 };
+
+/// The slowest pace of the cut, % of the programmed feed (LinuxCNC's feed override).
+inline constexpr int kSlowestFeedPct = 10;
+
+/// The feed override for the next part, %, from the current one and what the last part's samples showed: a path
+/// not seen, or drawn with more than half the tolerance, halves it (down to kSlowestFeedPct): the sampler of a busy
+/// computer then sees the path before a part is lost; a path drawn within a tenth of it raises it by a quarter, up
+/// to 100 %.
+int nextFeedOverridePct(int currentPct, const DrawnPath& last);
 
 /// The samples of the cut (the feed onto the part and the cut to its end, not the retract) as (z along the part,
 /// radial correction), mm, sorted by z. `samplesMm` are program X (radius) and Z in time order.

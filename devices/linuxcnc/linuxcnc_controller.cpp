@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "devices/parsers/linuxcnc_mdi.h"
@@ -146,6 +148,12 @@ std::array<double, 2> LinuxCncController::positionMm() {
 
 void LinuxCncController::openProgram(const std::string& path) {
     requireAck("set open " + path, m_options.replyTimeoutMs);
+}
+
+void LinuxCncController::setFeedOverride(int percent) {
+    if (percent < 1 || percent > 100)
+        throw std::invalid_argument("a feed override of " + std::to_string(percent) + " % is outside 1 .. 100 %");
+    requireAck("set feed_override " + std::to_string(percent), m_options.replyTimeoutMs);
 }
 
 void LinuxCncController::startProgram() {

@@ -72,6 +72,8 @@ public:
     std::array<double, 2> positionMm();
     /// Opens a program file on the LinuxCNC computer (absolute path).
     void openProgram(const std::string& path);
+    /// The feed override, % of the programmed feed (1 .. 100). Throws Refused when LinuxCNC refuses.
+    void setFeedOverride(int percent);
     /// Cycle start: runs the open program from its start and returns once LinuxCNC has the command.
     void startProgram();
     /// Stops a running program or MDI command.

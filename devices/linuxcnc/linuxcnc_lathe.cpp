@@ -133,6 +133,7 @@ PartJob LinuxCncLathe::partJob(const core::PartCorrection& correction) const {
     job.correction = correction;
     job.programPath = m_programPath;
     job.pressCycleStart = m_options.pressCycleStart;
+    job.feedOverridePct = m_feedOverridePct;
     job.referenceLines = {"G18 G21 G8 G90 G94 G40", tool, move};
     job.referenceProgramMm = {safeR, approachZ};
     job.endProgramMm = std::array<double, 2>{safeR, approachZ};

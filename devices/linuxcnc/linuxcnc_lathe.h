@@ -73,6 +73,9 @@ public:
     std::optional<core::CorrectionPath> executedPath(std::int64_t partNumber) const;
     /// Parts cut again because their path was not seen over the whole part (each also an incident).
     std::uint64_t partsCutAgain() const { return m_partsCutAgain; }
+    /// The pace of the next cut, % of the programmed feed: lowered while the sampling cannot keep up
+    /// (nextFeedOverridePct).
+    int feedOverridePct() const { return m_feedOverridePct; }
     /// The program file the machine runs.
     const std::string& programPath() const { return m_programPath; }
 
@@ -121,6 +124,7 @@ private:
     std::deque<std::pair<std::int64_t, core::CorrectionPath>> m_executed;
     std::vector<std::string> m_incidents;  ///< the machine's own (a cut not sampled over the whole part)
     std::uint64_t m_partsCutAgain = 0;
+    int m_feedOverridePct = 100;
 };
 
 }  // namespace tt::devices::linuxcnc

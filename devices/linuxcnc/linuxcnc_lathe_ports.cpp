@@ -88,6 +88,7 @@ void LinuxCncLathe::finish(const PartResult& result) {
     if (cutting == m_cutting.end()) return;
     const core::PartCorrection& commanded = cutting->second;
     DrawnPath drawn = drawExecutedPath(result.samplesMm, commanded.path, cutGeometry());
+    m_feedOverridePct = nextFeedOverridePct(m_feedOverridePct, drawn);
     core::PartCorrection executedCorrection{result.partNumber, commanded.pointZMm, commanded.pointCorrectionMm,
                                             std::move(drawn.path)};
     if (executedCorrection.path.zMm.empty()) {

@@ -134,7 +134,12 @@ core::OutputResult LinuxCncOutputDevice::sendPartCorrection(const core::PartCorr
                           .arg(QString::fromStdString(problem)));
     m_lastAccepted = values;
     m_pending = correction;
-    if (m_programPath.isEmpty()) m_session.submit({correction, {}, false, {}, {0.0, 0.0}, std::nullopt, 0.001});
+    if (m_programPath.isEmpty()) {
+        PartJob write;  // only the write: no program
+        write.correction = correction;
+        write.pressCycleStart = false;
+        m_session.submit(write);
+    }
     return {true, {}};
 }
 

@@ -35,6 +35,9 @@ struct PartJob {
     core::PartCorrection correction;  ///< written before the part (valuesToWrite of the mode)
     std::string programPath;          ///< the program on the LinuxCNC computer; empty: only write
     bool pressCycleStart = true;      ///< false: the operator presses cycle start
+    /// The cut's feed, % of the programmed one (LinuxCNC's feed override, set before the cycle start); unset: as
+    /// LinuxCNC has it.
+    std::optional<int> feedOverridePct;
     /// MDI lines run once per connection before the first part (tool, modes, a move to a known place) and
     /// where that place is in program coordinates (X radius, Z), mm: machine minus program is the offset
     /// between the two, measured so the samples can be given in program coordinates.

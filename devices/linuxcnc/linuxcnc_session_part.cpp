@@ -67,6 +67,7 @@ bool LinuxCncSession::cutPart(PartJob& job, const WriteRecord& write) {
         m_snapshot.health = {core::DeviceState::Ready, "LinuxCNC at " + m_settings.controller.endpoint.text() +
                                                            ": cutting part " + std::to_string(part)};
     }
+    if (job.feedOverridePct) m_controller.setFeedOverride(*job.feedOverridePct);
     if (job.pressCycleStart) m_controller.startProgram();
     std::vector<std::array<double, 2>> samples;
     bool sawRunning = false;

@@ -148,3 +148,24 @@ TEST(LinuxCncDevice, WritesACorrectionBetweenPartsAndKeepsItsRecordForTheHistory
 }
 
 }  // namespace
+
+// The LinuxCNC lathe slows its cut while its sampler cannot keep up: the pace is LinuxCNC's feed override, which
+// LinuxCNC holds as set (read back with its own get), and one outside 1 .. 100 % is never sent.
+TEST(LinuxCncDevice, TheFeedOverrideIsSetAsLinuxCncReadsItBack) {
+    TT_REQUIRE_LINUXCNC(lc);
+    linuxcnc::ControllerOptions o;
+    o.endpoint = lc->endpoint();
+    o.clientName = "TrueTurnFeedOverride";
+    linuxcnc::LinuxCncController c(o);
+    c.connect();
+    test::bringUp(c);
+    c.setFeedOverride(40);
+    const linuxcnc::Reply slowed = c.request("get feed_override");
+    EXPECT_EQ(slowed.key, "FEED_OVERRIDE");
+    EXPECT_EQ(slowed.words, std::vector<std::string>{"40"});
+    EXPECT_THROW(c.setFeedOverride(0), std::invalid_argument);
+    EXPECT_THROW(c.setFeedOverride(101), std::invalid_argument);
+    c.setFeedOverride(100);
+    EXPECT_EQ(c.request("get feed_override").words, std::vector<std::string>{"100"});
+    c.disconnect();
+}

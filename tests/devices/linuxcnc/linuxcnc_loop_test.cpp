@@ -223,7 +223,8 @@ TEST(LinuxCncLoop, KilledMidRunTheLoopHoldsAlarmsLosesNothingAndResumesWhenLinux
     // An alarm names the host and what failed.
     expectAlarmNaming(history.alarms(*engine->runId()), "LinuxCNC at " + lc->endpoint().text(), "part 3 was being cut");
     EXPECT_EQ(lathe.snapshot().counters.partsAborted, 1u);
-    EXPECT_EQ(lathe.snapshot().counters.partsCut, static_cast<std::uint64_t>(kParts));
+    // A part whose path the sampling did not see whole (a busy computer) is cut again (and reported).
+    EXPECT_EQ(lathe.snapshot().counters.partsCut, static_cast<std::uint64_t>(kParts) + lathe.partsCutAgain());
 }
 
 }  // namespace

@@ -33,8 +33,11 @@
 #include "config/loop_scenario.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
-#include "runtime/devices/device_hub.h"
 #include "devices/simulator/micrometer_emulator.h"
+#include "runtime/devices/device_hub.h"
+#include "runtime/run/machine_catalog.h"
+#include "runtime/run/run_session.h"
+#include "runtime/run/stored_runs.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/devices/support/pty_pair.h"
@@ -43,10 +46,7 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/run_page.h"
-#include "runtime/run/machine_catalog.h"
-#include "runtime/run/stored_runs.h"
 #include "ui/run/lathe_panel.h"
-#include "runtime/run/run_session.h"
 #include "ui/run/shaft_run_panel.h"
 
 // Readable QString values in failure messages.
@@ -120,6 +120,8 @@ protected:
         context.devices = &manager;
         scenario = config::loadLoopScenario(QStringLiteral("paper-2012-group1"), 1);
     }
+    // The machine chosen here is saved; the next test (in this process) starts from no saved choice.
+    void TearDown() override { QSettings().clear(); }
 
     QString dncFolder() const { return dir.filePath(QStringLiteral("dnc")); }
     QString gcodeFile(qint64 part) const { return QDir(dncFolder()).filePath(QStringLiteral("part-%1.nc").arg(part)); }

@@ -15,6 +15,8 @@ using devices::linuxcnc::CutGeometry;
 using devices::linuxcnc::drawExecutedPath;
 using devices::linuxcnc::drawnPathErrorMm;
 using devices::linuxcnc::kDrawnPathToleranceMm;
+using devices::linuxcnc::kSlowestFeedPct;
+using devices::linuxcnc::nextFeedOverridePct;
 using Samples = std::vector<std::array<double, 2>>;
 
 constexpr double kLength = 325.0, kDiameter = 40.0, kStep = 5.0;
@@ -134,6 +136,31 @@ TEST(ExecutedPath, TheCommandedPathSampledOnItsOwnGridIsDrawnBackExactly) {
         sparse.push_back(path.zMm[i]);
     if (sparse.back() != kLength) sparse.push_back(kLength);
     EXPECT_GT(drawnPathErrorMm(sparse, path), 0.0);
+}
+
+TEST(ExecutedPath, TheCutSlowsWhileTheSamplingCannotKeepUpAndSpeedsUpAgainWhenItCan) {
+    const core::CorrectionPath path = grid();
+    // A pause where the path bends that the tolerance still accepts (more than half of it): the next cut is slower.
+    const auto marginal = drawExecutedPath(watch(path, 0.25, 40.0, 48.0), path, geometry());
+    ASSERT_TRUE(marginal.unseen.empty()) << marginal.unseen;
+    ASSERT_GT(marginal.errorMm, 0.5 * kDrawnPathToleranceMm) << "an 8 mm pause at the bend";
+    EXPECT_EQ(nextFeedOverridePct(100, marginal), 50);
+    // A path not seen halves it too, never below the slowest pace.
+    const auto unseen = drawExecutedPath(watch(path, 0.25, 10.0, 90.0), path, geometry());
+    ASSERT_FALSE(unseen.unseen.empty());
+    EXPECT_EQ(nextFeedOverridePct(50, unseen), 25);
+    EXPECT_EQ(nextFeedOverridePct(kSlowestFeedPct + 1, unseen), kSlowestFeedPct);
+    EXPECT_EQ(nextFeedOverridePct(kSlowestFeedPct, unseen), kSlowestFeedPct);
+    // Dense samples: back up by a quarter a part, to the programmed feed and no further.
+    const auto dense = drawExecutedPath(watch(path, 0.25), path, geometry());
+    ASSERT_LT(dense.errorMm, 0.1 * kDrawnPathToleranceMm);
+    int pct = kSlowestFeedPct;
+    int parts = 0;
+    for (; pct < 100 && parts < 100; ++parts)
+        pct = nextFeedOverridePct(pct, dense);
+    EXPECT_EQ(pct, 100);
+    EXPECT_LE(parts, 12) << "from the slowest pace back to the programmed feed";
+    EXPECT_EQ(nextFeedOverridePct(100, dense), 100);
 }
 
 }  // namespace
