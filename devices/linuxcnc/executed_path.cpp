@@ -99,10 +99,14 @@ DrawnPath drawExecutedPath(const std::vector<std::array<double, 2>>& samplesMm, 
     return drawn;
 }
 
+namespace {
+constexpr int kFeedRisePct = 5;
+}  // namespace
+
 int nextFeedOverridePct(int currentPct, const DrawnPath& last) {
     if (!last.unseen.empty() || last.errorMm > 0.5 * kDrawnPathToleranceMm)
         return std::max(kSlowestFeedPct, currentPct / 2);
-    if (last.errorMm < 0.1 * kDrawnPathToleranceMm) return std::min(100, currentPct + std::max(1, currentPct / 4));
+    if (last.errorMm < 0.1 * kDrawnPathToleranceMm) return std::min(100, currentPct + kFeedRisePct);
     return currentPct;
 }
 

@@ -20,9 +20,9 @@ struct CutGeometry {
     double largestTotalMm = 0.0;
 };
 
-/// How far the drawn path may stray from the executed one, radial mm: 0.2 um on diameter, a fifth of the 1 um the
-/// corrections must land within.
-inline constexpr double kDrawnPathToleranceMm = 1.0e-4;
+/// How far the drawn path may stray from the executed one, radial mm: 0.5 um on diameter, half the 1 um the
+/// corrections must land within (and well under the scatter of a turned diameter).
+inline constexpr double kDrawnPathToleranceMm = 2.5e-4;
 
 /// The drawn path on the grid, or an empty path and, in the operator's words, why the samples do not show the cut.
 struct DrawnPath {
@@ -35,9 +35,9 @@ struct DrawnPath {
 inline constexpr int kSlowestFeedPct = 10;
 
 /// The feed override for the next part, %, from the current one and what the last part's samples showed: a path
-/// not seen, or drawn with more than half the tolerance, halves it (down to kSlowestFeedPct): the sampler of a busy
-/// computer then sees the path before a part is lost; a path drawn within a tenth of it raises it by a quarter, up
-/// to 100 %.
+/// not seen, or drawn with more than half the tolerance, halves it (down to kSlowestFeedPct), so that the sampler of
+/// a busy computer sees the next path whole; a path drawn within a tenth of it raises it by 5 points, up to 100 %
+/// (slowly: a busy computer's pauses come and go).
 int nextFeedOverridePct(int currentPct, const DrawnPath& last);
 
 /// The samples of the cut (the feed onto the part and the cut to its end, not the retract) as (z along the part,

@@ -47,20 +47,43 @@ VerdictCounter::VerdictCounter(QWidget* parent)
 }
 
 void VerdictCounter::onLoopEvent(const core::LoopEvent& event) {
+    if (event.kind == core::LoopEvent::Kind::StateChanged) followScrapPause(event);
     if (event.kind != core::LoopEvent::Kind::PartMeasured || !event.measurement) return;
     const std::optional<core::ToleranceVerdict> verdict = event.measurement->verdict();
     if (!verdict) return;
     m_counts.add(*verdict);
     m_lastVerdict = verdict;
     m_lastPart = event.partNumber;
+    if (!m_holdingScrap) {
+        m_shownVerdict = verdict;
+        m_shownPart = event.partNumber;
+    }
     updateTexts();
     if (*verdict != core::ToleranceVerdict::Good) emit outOfTolerance(*verdict);
+}
+
+void VerdictCounter::followScrapPause(const core::LoopEvent& stateChange) {
+    if (stateChange.state == core::LoopState::Paused && stateChange.notice.kind == core::NoticeKind::PausedOnScrap) {
+        m_holdingScrap = true;
+        m_shownVerdict = core::ToleranceVerdict::Scrap;
+        m_shownPart = stateChange.notice.part;
+    } else if (stateChange.state != core::LoopState::Paused && m_holdingScrap) {
+        m_holdingScrap = false;
+        m_shownVerdict = m_lastVerdict;
+        m_shownPart = m_lastPart;
+    } else {
+        return;
+    }
+    updateTexts();
 }
 
 void VerdictCounter::reset() {
     m_counts = {};
     m_lastVerdict.reset();
     m_lastPart = 0;
+    m_shownVerdict.reset();
+    m_shownPart = 0;
+    m_holdingScrap = false;
     updateTexts();
 }
 
@@ -76,19 +99,19 @@ void VerdictCounter::retranslate() {
 void VerdictCounter::updateTexts() {
     QString key = QStringLiteral("none");
     QString text = tr("No part measured yet");
-    if (m_lastVerdict) {
-        switch (*m_lastVerdict) {
+    if (m_shownVerdict) {
+        switch (*m_shownVerdict) {
             case core::ToleranceVerdict::Good:
                 key = QStringLiteral("good");
-                text = tr("Part %1: GOOD").arg(m_lastPart);
+                text = tr("Part %1: GOOD").arg(m_shownPart);
                 break;
             case core::ToleranceVerdict::Rework:
                 key = QStringLiteral("rework");
-                text = tr("Part %1: REWORK").arg(m_lastPart);
+                text = tr("Part %1: REWORK").arg(m_shownPart);
                 break;
             case core::ToleranceVerdict::Scrap:
                 key = QStringLiteral("scrap");
-                text = tr("Part %1: SCRAP").arg(m_lastPart);
+                text = tr("Part %1: SCRAP").arg(m_shownPart);
                 break;
         }
     }

@@ -17,7 +17,6 @@ namespace tt::ui {
 /// scrap (View menu of the main window).
 inline const QString kSoundOnOutOfTolerance = QStringLiteral("run/soundOnOutOfTolerance");
 
-
 /// The Run page's tally of the measured parts by tolerance verdict: the last part's verdict in a big coloured
 /// banner (scrap red, rework amber, good green: an out-of-tolerance part never looks accepted), the good,
 /// rework and scrap counters and the first-pass yield, in large type (read from a metre away). Counts each
@@ -28,7 +27,9 @@ class VerdictCounter : public QWidget {
 public:
     explicit VerdictCounter(QWidget* parent = nullptr);
 
-    /// Counts the part of a PartMeasured event that has a verdict; other events are ignored.
+    /// Counts the part of a PartMeasured event that has a verdict. While the run is paused on scrap, the banner
+    /// keeps showing the scrap part that paused it (parts measured meanwhile are counted, not shown), until the run
+    /// goes on; other events are ignored.
     void onLoopEvent(const core::LoopEvent& event);
     /// Starts from zero (a new run).
     void reset();
@@ -47,10 +48,14 @@ protected:
 private:
     void retranslate();
     void updateTexts();
+    void followScrapPause(const core::LoopEvent& stateChange);
 
     core::VerdictCounts m_counts;
     std::optional<core::ToleranceVerdict> m_lastVerdict;
     std::int64_t m_lastPart = 0;
+    std::optional<core::ToleranceVerdict> m_shownVerdict;  ///< the banner's part: the last one, or the scrap part
+    std::int64_t m_shownPart = 0;                          ///< that paused the run while it stays paused
+    bool m_holdingScrap = false;
     QLabel* m_good;
     QLabel* m_rework;
     QLabel* m_scrap;

@@ -141,7 +141,7 @@ TEST(ExecutedPath, TheCommandedPathSampledOnItsOwnGridIsDrawnBackExactly) {
 TEST(ExecutedPath, TheCutSlowsWhileTheSamplingCannotKeepUpAndSpeedsUpAgainWhenItCan) {
     const core::CorrectionPath path = grid();
     // A pause where the path bends that the tolerance still accepts (more than half of it): the next cut is slower.
-    const auto marginal = drawExecutedPath(watch(path, 0.25, 40.0, 48.0), path, geometry());
+    const auto marginal = drawExecutedPath(watch(path, 0.25, 45.0, 53.0), path, geometry());
     ASSERT_TRUE(marginal.unseen.empty()) << marginal.unseen;
     ASSERT_GT(marginal.errorMm, 0.5 * kDrawnPathToleranceMm) << "an 8 mm pause at the bend";
     EXPECT_EQ(nextFeedOverridePct(100, marginal), 50);
@@ -151,7 +151,7 @@ TEST(ExecutedPath, TheCutSlowsWhileTheSamplingCannotKeepUpAndSpeedsUpAgainWhenIt
     EXPECT_EQ(nextFeedOverridePct(50, unseen), 25);
     EXPECT_EQ(nextFeedOverridePct(kSlowestFeedPct + 1, unseen), kSlowestFeedPct);
     EXPECT_EQ(nextFeedOverridePct(kSlowestFeedPct, unseen), kSlowestFeedPct);
-    // Dense samples: back up by a quarter a part, to the programmed feed and no further.
+    // Dense samples: back up by 5 points a part, to the programmed feed and no further.
     const auto dense = drawExecutedPath(watch(path, 0.25), path, geometry());
     ASSERT_LT(dense.errorMm, 0.1 * kDrawnPathToleranceMm);
     int pct = kSlowestFeedPct;
@@ -159,7 +159,7 @@ TEST(ExecutedPath, TheCutSlowsWhileTheSamplingCannotKeepUpAndSpeedsUpAgainWhenIt
     for (; pct < 100 && parts < 100; ++parts)
         pct = nextFeedOverridePct(pct, dense);
     EXPECT_EQ(pct, 100);
-    EXPECT_LE(parts, 12) << "from the slowest pace back to the programmed feed";
+    EXPECT_EQ(parts, (100 - kSlowestFeedPct) / 5) << "5 points a part from the slowest pace to the programmed feed";
     EXPECT_EQ(nextFeedOverridePct(100, dense), 100);
 }
 

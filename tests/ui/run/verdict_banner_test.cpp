@@ -9,12 +9,12 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "runtime/run/run_request.h"
+#include "runtime/run/run_session.h"
 #include "screenshots.h"
 #include "support/terminal_window.h"
 #include "tests/support/patient_wait.h"
 #include "ui/pages/run_page.h"
-#include "runtime/run/run_session.h"
-#include "runtime/run/run_request.h"
 #include "ui/run/shaft_run_panel.h"
 #include "ui/run/verdict_counter.h"
 
@@ -123,6 +123,52 @@ TEST_F(VerdictBanner, ReworkIsAmberAndGoodIsGreen) {
     EXPECT_EQ(dominantColour(banner), QColor(0x2e, 0x7d, 0x32)) << "green";
     counter.reset();
     EXPECT_EQ(banner->property("verdict").toString(), QStringLiteral("none"));
+}
+
+// Pause on scrap stops the loop after the scrap part's verdict, but parts already measured may arrive in the same
+// step (a busy computer, a fast simulation): they are counted, and the banner keeps the part that paused the run
+// until the run goes on.
+TEST_F(VerdictBanner, WhilePausedOnScrapTheBannerKeepsTheScrapPartThatPausedTheRun) {
+    VerdictCounter counter;
+    auto* banner = counter.findChild<QLabel*>(QStringLiteral("lastPartVerdict"));
+    ASSERT_NE(banner, nullptr);
+    const auto measured = [&](std::int64_t part, core::ToleranceVerdict verdict) {
+        core::LoopEvent event;
+        event.kind = core::LoopEvent::Kind::PartMeasured;
+        event.partNumber = part;
+        core::PartMeasurementRecord record;
+        record.partNumber = part;
+        record.points.resize(1);
+        record.points[0].verdict = verdict;
+        event.measurement = record;
+        counter.onLoopEvent(event);
+    };
+    const auto state = [&](core::LoopState s, core::Notice notice) {
+        core::LoopEvent event;
+        event.kind = core::LoopEvent::Kind::StateChanged;
+        event.state = s;
+        event.notice = notice;
+        counter.onLoopEvent(event);
+    };
+    measured(4, core::ToleranceVerdict::Scrap);
+    state(core::LoopState::Paused, core::Notice(core::NoticeKind::PausedOnScrap, 4));
+    measured(5, core::ToleranceVerdict::Good);
+    measured(6, core::ToleranceVerdict::Rework);
+    EXPECT_EQ(banner->property("verdict").toString(), QStringLiteral("scrap"));
+    EXPECT_EQ(banner->text(), QStringLiteral("Part 4: SCRAP"));
+    EXPECT_EQ(counter.counts().good, 1);
+    EXPECT_EQ(counter.counts().rework, 1);
+    EXPECT_EQ(counter.counts().scrap, 1);
+    EXPECT_EQ(counter.lastVerdict(), core::ToleranceVerdict::Rework) << "the last judged part is still part 6";
+    // The operator continues: the banner shows the last measured part again.
+    state(core::LoopState::Running, core::Notice(core::NoticeKind::Continuing));
+    EXPECT_EQ(banner->text(), QStringLiteral("Part 6: REWORK"));
+    measured(7, core::ToleranceVerdict::Good);
+    EXPECT_EQ(banner->text(), QStringLiteral("Part 7: GOOD"));
+    // An operator's pause holds nothing.
+    state(core::LoopState::Paused, core::Notice(core::NoticeKind::PausedByOperator));
+    measured(8, core::ToleranceVerdict::Scrap);
+    EXPECT_EQ(banner->text(), QStringLiteral("Part 8: SCRAP"));
 }
 
 }  // namespace
