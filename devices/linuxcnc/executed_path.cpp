@@ -47,12 +47,20 @@ std::vector<std::pair<double, double>> cutSamples(const std::vector<std::array<d
     // the part's end; what comes after it (the retract) is not the cut.
     const double feedStart = -geometry.clearanceMm + 1e-3;
     std::vector<std::pair<double, double>> cut;
-    for (const auto& [x, zProgram] : samplesMm) {
+    for (std::size_t i = 0; i < samplesMm.size(); ++i) {
+        const auto& [x, zProgram] = samplesMm[i];
         const double z = (zProgram - geometry.zOriginMm) / geometry.zDirection;
         if (z < feedStart || std::fabs(x - nominalR) > band) continue;
-        // The program dwells at the end of the cut: the first sample there is the cut's end, the rest the retract.
-        cut.emplace_back(std::min(z, length), x - nominalR);
-        if (z >= length - 1e-6) break;
+        if (z < length - 1e-6) {
+            cut.emplace_back(z, x - nominalR);
+            continue;
+        }
+        // The program dwells at the end of the cut, then retracts in X: the end is where the tool stood still (read
+        // twice in a row); a position at the end read once is the tool still arriving, or already retracting.
+        if (i + 1 < samplesMm.size() && samplesMm[i + 1] == samplesMm[i]) {
+            cut.emplace_back(length, x - nominalR);
+            break;
+        }
     }
     std::sort(cut.begin(), cut.end());
     cut.erase(std::unique(cut.begin(), cut.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),

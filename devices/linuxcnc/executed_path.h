@@ -41,7 +41,8 @@ inline constexpr int kSlowestFeedPct = 10;
 int nextFeedOverridePct(int currentPct, const DrawnPath& last);
 
 /// The samples of the cut (the feed onto the part and the cut to its end, not the retract) as (z along the part,
-/// radial correction), mm, sorted by z. `samplesMm` are program X (radius) and Z in time order.
+/// radial correction), mm, sorted by z. `samplesMm` are program X (radius) and Z in time order, a position where the
+/// tool stood still twice in a row (the dwell at the end of the cut: the end is seen only there).
 std::vector<std::pair<double, double>> cutSamples(const std::vector<std::array<double, 2>>& samplesMm,
                                                   const core::CorrectionPath& grid, const CutGeometry& geometry);
 

@@ -52,9 +52,11 @@ struct PartJob {
 /// A part LinuxCNC cut: the tool's path as sampled while the program ran.
 struct PartResult {
     std::int64_t partNumber = 0;
-    double finishedAtS = 0.0;                      ///< steady-clock time of the end, s
-    std::vector<std::array<double, 2>> samplesMm;  ///< program coordinates: X (radius), Z, mm; changes only
-    WriteRecord write;                             ///< the verified write the part was cut with
+    double finishedAtS = 0.0;  ///< steady-clock time of the end, s
+    /// Program coordinates: X (radius), Z, mm, in time order; changes only, but a position read twice in a row
+    /// (the tool stood still) is there twice.
+    std::vector<std::array<double, 2>> samplesMm;
+    WriteRecord write;  ///< the verified write the part was cut with
 };
 
 /// A program event of the part cycle.

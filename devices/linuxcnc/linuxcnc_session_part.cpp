@@ -135,7 +135,10 @@ void LinuxCncSession::sampleUntilIdle(std::vector<std::array<double, 2>>& sample
         }
         const std::array<double, 2> p = m_controller.positionMm();
         const std::array<double, 2> program{p[0] - ref[0], p[1] - ref[1]};
-        if (samples.empty() || samples.back() != program) samples.push_back(program);
+        // Changes only, and a position read twice in a row once more: the tool stood still there (the dwell that
+        // ends the cut, where the retract starts).
+        const std::size_t n = samples.size();
+        if (n == 0 || samples[n - 1] != program || (n >= 2 && samples[n - 2] != program)) samples.push_back(program);
         std::this_thread::sleep_for(std::chrono::microseconds(m_settings.samplePeriodUs));
     }
 }

@@ -68,7 +68,9 @@ Samples watch(const core::CorrectionPath& path, double everyMm, double skipFrom 
     for (double z = firstZ; z < kLength; z += everyMm)
         if (z < skipFrom || z >= skipTo) samples.push_back(program(z, onGrid(path, std::max(z, 0.0))));
     samples.push_back(program(kLength, path.xCorrectionMm.back()));
-    samples.push_back(program(kLength, g.largestTotalMm + g.clearanceMm));  // the retract
+    samples.push_back(samples.back());                                       // the dwell: read twice in a row
+    samples.push_back(program(kLength, path.xCorrectionMm.back() + 0.003));  // the retract, in X
+    samples.push_back(program(kLength, g.largestTotalMm + g.clearanceMm));
     samples.push_back(program(-2.0, g.largestTotalMm + g.clearanceMm));
     return samples;
 }
@@ -115,7 +117,7 @@ TEST(ExecutedPath, WithoutTheStartOrTheEndOfTheCutThePathIsNotDrawn) {
     EXPECT_EQ(lateStart.unseen, "its start was not seen (positions read from z = 12.0 to 325.0 mm)");
 
     Samples noEnd = watch(path, 0.25);
-    noEnd.erase(noEnd.end() - 3, noEnd.end());  // the end and the retract
+    noEnd.erase(noEnd.end() - 5, noEnd.end());  // the end, its dwell and the retract
     noEnd.erase(std::remove_if(noEnd.begin(), noEnd.end(), [](const auto& s) { return s[1] < -2.0 - 300.0; }),
                 noEnd.end());  // nothing read after z = 300
     const auto drawn = drawExecutedPath(noEnd, path, geometry());
@@ -125,6 +127,14 @@ TEST(ExecutedPath, WithoutTheStartOrTheEndOfTheCutThePathIsNotDrawn) {
 
     EXPECT_EQ(drawExecutedPath({}, path, geometry()).unseen,
               "its start was not seen (no position on the part was read)");
+
+    // The dwell at the end not read (a busy computer): the first position at the end is the retract's, 3 um off the
+    // part; it is not taken for the end of the cut.
+    Samples dwellMissed = watch(path, 0.25);
+    dwellMissed.erase(dwellMissed.end() - 5, dwellMissed.end() - 3);
+    const auto missed = drawExecutedPath(dwellMissed, path, geometry());
+    EXPECT_TRUE(missed.path.zMm.empty());
+    EXPECT_EQ(missed.unseen.rfind("its end was not seen", 0), 0u) << missed.unseen;
 }
 
 TEST(ExecutedPath, TheCommandedPathSampledOnItsOwnGridIsDrawnBackExactly) {
