@@ -4,6 +4,7 @@
 #include <QDeadlineTimer>
 #include <QElapsedTimer>
 #include <algorithm>
+#include <cmath>
 
 #include "core/storage/storage_log.h"
 
@@ -63,7 +64,7 @@ bool PlantForwarderThread::drainAndStop(double timeoutS) {
         m_finishing = true;
         m_wakeUp.wakeAll();
     }
-    if (!wait(QDeadlineTimer(static_cast<qint64>(std::max(0.0, timeoutS) * 1000.0)))) {
+    if (!wait(deadlineAfter(timeoutS))) {
         requestStop();
         wait();
     }
@@ -71,9 +72,15 @@ bool PlantForwarderThread::drainAndStop(double timeoutS) {
     return s.drained && s.backlogParts == 0;
 }
 
+QDeadlineTimer PlantForwarderThread::deadlineAfter(double seconds) {
+    // QDeadlineTimer takes a negative time as "never expires".
+    if (!(seconds > 0.0)) return QDeadlineTimer(0);
+    return QDeadlineTimer(static_cast<qint64>(std::ceil(std::min(seconds, 86400.0) * 1000.0)));
+}
+
 bool PlantForwarderThread::pause(double seconds, bool wakeable) {
     QMutexLocker lock(&m_mutex);
-    QDeadlineTimer deadline(static_cast<qint64>(seconds * 1000.0));
+    const QDeadlineTimer deadline = deadlineAfter(seconds);
     while (!m_stop && !(wakeable && (m_woken || m_finishing)) && !deadline.hasExpired())
         m_wakeUp.wait(&m_mutex, deadline);
     m_woken = false;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QDeadlineTimer>
 #include <QElapsedTimer>
 #include <QMutex>
 #include <QThread>
@@ -12,9 +13,9 @@ namespace tt::storage {
 
 /// What a forwarder thread sends where.
 struct ForwarderOptions {
-    QString journalPath;     ///< the terminal's journal (HistoryJournal made it)
-    DatabaseConfig plant;    ///< the plant database
-    QString machine;         ///< the journal's machine (reported with its backlog)
+    QString journalPath;   ///< the terminal's journal (HistoryJournal made it)
+    DatabaseConfig plant;  ///< the plant database
+    QString machine;       ///< the journal's machine (reported with its backlog)
     std::int64_t journalLimitBytes = kDefaultJournalLimitBytes;
     ForwarderSettings settings;
 };
@@ -42,6 +43,10 @@ public:
     /// Sends what is left, waiting at most `timeoutS` (retrying as usual), then stops the thread. Returns
     /// whether everything was sent. Call from the thread that started it.
     bool drainAndStop(double timeoutS);
+
+    /// The deadline `seconds` from now: expired at once for 0, a negative time or NaN (a wait computed as "what is
+    /// left" can come out below zero on a busy computer), never one that does not expire.
+    static QDeadlineTimer deadlineAfter(double seconds);
 
 signals:
     /// The status changed (emitted from the forwarder's thread).

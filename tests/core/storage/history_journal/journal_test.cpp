@@ -3,7 +3,9 @@
 // batch sent again inserts nothing; readings wait until the controller's verdicts are in; a full journal refuses
 // the next part and takes parts again once they are sent; the forwarder thread retries while the plant is away.
 #include <gtest/gtest.h>
+#include <cmath>
 
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QElapsedTimer>
 #include <QSqlQuery>
@@ -196,6 +198,23 @@ TEST(PlantJournal, AJournalOfAnotherMachineOrPlantIsRefusedUntouched) {
     EXPECT_THROW(again.beginRun(test::plantRun("m2")), StorageError);
 }
 
+// A wait computed as "what is left of the retry" comes out below zero when the computer was busy; QDeadlineTimer
+// takes a negative time as "never": the forwarder then slept for ever after an outage (a terminal under a loaded
+// ctest -j4 sent nothing more once the plant database was back).
+TEST(PlantJournal, TheForwardersWaitsAllEndAndAWaitLeftBelowZeroEndsAtOnce) {
+    for (const double seconds : {-0.004, -1.0, 0.0, std::nan("")}) {
+        const QDeadlineTimer d = PlantForwarderThread::deadlineAfter(seconds);
+        EXPECT_FALSE(d.isForever()) << seconds;
+        EXPECT_TRUE(d.hasExpired()) << seconds;
+    }
+    const QDeadlineTimer retry = PlantForwarderThread::deadlineAfter(2.0);
+    EXPECT_FALSE(retry.isForever());
+    EXPECT_FALSE(retry.hasExpired());
+    EXPECT_GT(retry.remainingTime(), 1000);
+    EXPECT_LE(retry.remainingTime(), 2000);
+    EXPECT_FALSE(PlantForwarderThread::deadlineAfter(1e300).isForever());
+}
+
 // The forwarder thread while the plant database cannot be opened: offline since the first failure, the parts
 // kept counted, retries with a growing wait; once it can be opened, everything is sent and it says drained.
 TEST(PlantJournal, TheForwarderThreadRetriesWhileThePlantIsAwayAndDrainsWhenItIsBack) {
@@ -205,8 +224,11 @@ TEST(PlantJournal, TheForwarderThreadRetriesWhileThePlantIsAwayAndDrainsWhenItIs
     const std::int64_t run = journal.beginRun(test::plantRun("m1"));
     test::writeParts(journal, run, 1, 30);
     const QString plantFolder = dir.filePath(QStringLiteral("not-yet"));  // the plant's folder does not exist yet
-    ForwarderOptions forward{options.path, DatabaseConfig::sqlite(plantFolder + QStringLiteral("/plant.sqlite")),
-                             options.machine, options.limitBytes, {}};
+    ForwarderOptions forward{options.path,
+                             DatabaseConfig::sqlite(plantFolder + QStringLiteral("/plant.sqlite")),
+                             options.machine,
+                             options.limitBytes,
+                             {}};
     forward.settings.firstRetryS = 0.05;
     forward.settings.maxRetryS = 0.2;
     PlantForwarderThread forwarder(forward);
