@@ -13,17 +13,17 @@
 #include <functional>
 #include <set>
 
-#include "tests/support/patient_wait.h"
 #include "config/loop_scenario.h"
 #include "core/storage/data_stores.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "run_window.h"
-#include "tests/support/stored_runs.h"
-#include "screenshots.h"
 #include "runtime/run/machine_catalog.h"
 #include "runtime/run/run_session.h"
 #include "runtime/run/shaft_run_assembly.h"
+#include "screenshots.h"
+#include "tests/support/patient_wait.h"
+#include "tests/support/stored_runs.h"
 #include "ui/run/shaft_run_panel.h"
 
 namespace tt::ui {
@@ -32,15 +32,7 @@ namespace {
 constexpr qint64 kPlannedParts = 16;
 constexpr qint64 kPartsBeforeCut = 6;
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(5);
-    }
-    return true;
-}
+using test::waitFor;
 
 class InterruptedRunTest : public test::RunWindowTest {
 protected:
@@ -60,7 +52,8 @@ protected:
         storage::SqlHistoryStore history(database);
         std::unique_ptr<runtime::AssembledRun> run = runtime::assembleRun(request, offer->prepare(request), &history);
         runtime::startRun(*run);
-        while (run->engine->partsFinished() < kPartsBeforeCut) run->stepper->advanceTo(1e18, 1);
+        while (run->engine->partsFinished() < kPartsBeforeCut)
+            run->stepper->advanceTo(1e18, 1);
     }
 };
 
@@ -126,11 +119,13 @@ TEST_F(InterruptedRunTest, ARunCutOffOnTheCommandLineContinuesOnTheRunPageWithIt
     // continues the cut one from its stored request. The simulated lathe depends only on the part number and
     // the corrections the parts received, so both store the same diameters when the resumed run keeps the
     // plant gain 0.7 and the integral action (1e-12 mm: the stored controller state's rounding).
-    const QStringList run{QStringLiteral("--preset"), QStringLiteral("paper-2012"), QStringLiteral("--delay"),
-                          QStringLiteral("2"), QStringLiteral("--parts"), QStringLiteral("150"),
-                          QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--seed"), QStringLiteral("5"),
-                          QStringLiteral("--plant-gain"), QStringLiteral("0.7"), QStringLiteral("--integral"),
-                          QStringLiteral("on")};
+    const QStringList run{QStringLiteral("--preset"),     QStringLiteral("paper-2012"),
+                          QStringLiteral("--delay"),      QStringLiteral("2"),
+                          QStringLiteral("--parts"),      QStringLiteral("150"),
+                          QStringLiteral("--warmup"),     QStringLiteral("0"),
+                          QStringLiteral("--seed"),       QStringLiteral("5"),
+                          QStringLiteral("--plant-gain"), QStringLiteral("0.7"),
+                          QStringLiteral("--integral"),   QStringLiteral("on")};
     const QString whole = dir.filePath(QStringLiteral("whole.sqlite"));
     QProcess left;
     left.start(QStringLiteral(TRUETURN_EXE),
@@ -138,9 +133,9 @@ TEST_F(InterruptedRunTest, ARunCutOffOnTheCommandLineContinuesOnTheRunPageWithIt
     ASSERT_TRUE(left.waitForFinished(-1));
     ASSERT_EQ(left.exitCode(), 0) << left.readAllStandardError().toStdString();
     ASSERT_EQ(tt::test::interruptedSimulate(QStringLiteral(TRUETURN_EXE),
-                                        run + QStringList{QStringLiteral("--db"), context.databasePath,
-                                                          QStringLiteral("--speed"), QStringLiteral("18000")},
-                                        40),
+                                            run + QStringList{QStringLiteral("--db"), context.databasePath,
+                                                              QStringLiteral("--speed"), QStringLiteral("18000")},
+                                            40),
               130);
 
     MainWindow window(context);

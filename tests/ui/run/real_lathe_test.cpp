@@ -34,6 +34,7 @@
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "devices/simulator/micrometer_emulator.h"
+#include "run_window.h"
 #include "runtime/devices/device_hub.h"
 #include "runtime/run/machine_catalog.h"
 #include "runtime/run/run_session.h"
@@ -62,15 +63,7 @@ constexpr double kNominalMm = 27.0;   // paper-2012-group1 (and the G-code outpu
 constexpr double kToolSetMm = 0.030;  // the test lathe's tool is set 0.030 mm large on diameter
 const std::vector<double> kPointsMm{0.0, 27.5, 162.5, 262.5, 325.0};  // the preset's control points
 
-bool waitFor(const std::function<bool()>& done, int timeoutMs = tt::test::kPatientWaitMs) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done()) {
-        if (timer.elapsed() > timeoutMs) return false;
-        QTest::qWait(10);
-    }
-    return true;
-}
+using test::waitFor;
 
 /// The radial corrections of the path in a G-code file at the control points: "(SEG n X162.500 DX-0.012)".
 std::map<double, double> pathCorrections(const QString& file) {
