@@ -104,8 +104,15 @@ void readRetrainingAndMachine(const QJsonObject& preset, core::CornerScenario& s
         r.number(QStringLiteral("threshold_pct"), rt.monitor.thresholdFraction * 100.0, 0.1, 1000.0) / 100.0;
     rt.monitor.outlierMads = r.number(QStringLiteral("outlier_mads"), rt.monitor.outlierMads, 1.0, 20.0);
     rt.oldSetWeight = r.number(QStringLiteral("old_set_weight"), rt.oldSetWeight, 0.0, 1.0);
-    rt.frictionFactorMin = r.number(QStringLiteral("friction_factor_min"), rt.frictionFactorMin, 0.1, 1.0);
-    rt.frictionFactorMax = r.number(QStringLiteral("friction_factor_max"), rt.frictionFactorMax, 1.0, 10.0);
+    core::DriveIdentificationSettings& id = rt.identification;
+    id.frictionMin = r.number(QStringLiteral("friction_factor_min"), id.frictionMin, 0.05, 1.0);
+    id.frictionMax = r.number(QStringLiteral("friction_factor_max"), id.frictionMax, 1.0, 20.0);
+    id.inertiaMin = r.number(QStringLiteral("inertia_factor_min"), id.inertiaMin, 0.05, 1.0);
+    id.inertiaMax = r.number(QStringLiteral("inertia_factor_max"), id.inertiaMax, 1.0, 20.0);
+    id.gainMin = r.number(QStringLiteral("gain_factor_min"), id.gainMin, 0.05, 1.0);
+    id.gainMax = r.number(QStringLiteral("gain_factor_max"), id.gainMax, 1.0, 20.0);
+    id.sweeps = r.integer(QStringLiteral("identification_sweeps"), id.sweeps, 1, 5);
+    rt.validationMoves = r.integer(QStringLiteral("validation_moves"), rt.validationMoves, 5, 1000);
     const JsonSection m(preset, QStringLiteral("machine"));
     core::MachineVariation& mv = sc.machine;
     mv.frictionScatter = m.number(QStringLiteral("friction_scatter"), mv.frictionScatter, 0.0, 0.3);

@@ -20,7 +20,8 @@ namespace tt::config {
 ///   "training": {"moves", "seed", "grid_points", "tolerance_v", "max_simulations", "hidden", "max_epochs",
 ///                "patience", "validation_fraction", "learning_rate", "network_seed"},
 ///   "retraining": {"window_corners", "threshold_pct", "outlier_mads", "old_set_weight",
-///                  "friction_factor_min", "friction_factor_max"},
+///                  "friction_factor_min", "friction_factor_max", "inertia_factor_min", "inertia_factor_max",
+///                  "gain_factor_min", "gain_factor_max", "identification_sweeps", "validation_moves"},
 ///   "machine": {"friction_scatter", "outlier_probability", "outlier_torque_nm", "outlier_duration_s", "seed"},
 ///   "work": {"moves"}
 ///

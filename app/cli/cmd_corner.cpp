@@ -166,7 +166,41 @@ int runTrain(const QStringList& arguments) {
 
 // ---- corner (work run) ------------------------------------------------------------------------------
 
-QJsonObject workJson(const core::CornerWorkResult& r) {
+QJsonObject factorsJson(const core::DriveFactors& f, double rmsUm) {
+    return QJsonObject{{QStringLiteral("friction"), f.friction},
+                       {QStringLiteral("inertia"), f.inertia},
+                       {QStringLiteral("gain"), f.velocityGain},
+                       {QStringLiteral("encoder_rms_um"), rmsUm}};
+}
+
+QJsonObject eventJson(const core::CornerRetrainEvent& e) {
+    const core::CandidateVerdict& v = e.verdict;
+    const core::DriveEstimate& id = e.identified;
+    return QJsonObject{
+        {QStringLiteral("move"), e.move},
+        {QStringLiteral("reason"), QString::fromStdString(e.reason)},
+        {QStringLiteral("accepted"), v.accepted},
+        {QStringLiteral("failure"),
+         v.accepted ? QJsonValue(QJsonValue::Null) : QJsonValue(QString::fromStdString(v.failure))},
+        {QStringLiteral("model_updated"), e.modelUpdated},
+        {QStringLiteral("identified"), QJsonObject{{QStringLiteral("x"), factorsJson(id.factors.x, id.xRmsUm)},
+                                                   {QStringLiteral("z"), factorsJson(id.factors.z, id.zRmsUm)}}},
+        {QStringLiteral("validation_cost_mm"),
+         QJsonObject{{QStringLiteral("kept"), v.keptCostMm}, {QStringLiteral("candidate"), v.candidateCostMm}}},
+    };
+}
+
+/// The monitor's difference over its last full window since the last retraining, %, or null.
+QJsonValue lastDifferencePct(const core::CornerWorkResult& r, int window) {
+    const int since = r.retrains.empty() ? 0 : r.retrains.back().move + 1;
+    for (int i = static_cast<int>(r.checks.size()) - 1; i >= since; --i)
+        if (r.checks[static_cast<std::size_t>(i)].corners >= window)
+            return 100.0 * r.checks[static_cast<std::size_t>(i)].differenceFraction;
+    return QJsonValue(QJsonValue::Null);
+}
+
+QJsonObject workJson(const core::CornerWorkResult& r, const core::CornerDrift& drift,
+                     const core::DriftMonitorSettings& monitor) {
     QJsonArray moves;
     for (const core::CornerWorkMove& m : r.moves)
         moves.append(QJsonObject{{QStringLiteral("vx1"), m.move.x1RadPerS},
@@ -178,8 +212,14 @@ QJsonObject workJson(const core::CornerWorkResult& r) {
                                  {QStringLiteral("amplitude_v"), m.amplitudeV}});
     QJsonArray events;
     for (const core::CornerRetrainEvent& e : r.retrains)
-        events.append(QJsonObject{{QStringLiteral("move"), e.move},
-                                  {QStringLiteral("reason"), QString::fromStdString(e.reason)}});
+        events.append(eventJson(e));
+    const QJsonValue driftJson =
+        r.driftAtMove < 0
+            ? QJsonValue(QJsonValue::Null)
+            : QJsonValue(QJsonObject{{QStringLiteral("kind"), QString::fromLatin1(core::toString(drift.kind))},
+                                     {QStringLiteral("axis"), QString::fromLatin1(core::toString(drift.axis))},
+                                     {QStringLiteral("factor"), drift.factor},
+                                     {QStringLiteral("at_move"), r.driftAtMove}});
     return QJsonObject{
         {QStringLiteral("moves"), moves},
         {QStringLiteral("mean_error_mm"),
@@ -188,20 +228,53 @@ QJsonObject workJson(const core::CornerWorkResult& r) {
         {QStringLiteral("retrain_events"), events},
         {QStringLiteral("reduction_after_retrain_pct"),
          r.reductionAfterRetrainPct ? QJsonValue(*r.reductionAfterRetrainPct) : QJsonValue(QJsonValue::Null)},
+        {QStringLiteral("drift"), driftJson},
+        {QStringLiteral("monitor"),
+         QJsonObject{{QStringLiteral("threshold_pct"), 100.0 * monitor.thresholdFraction},
+                     {QStringLiteral("window_corners"), monitor.windowCorners},
+                     {QStringLiteral("last_difference_pct"), lastDifferencePct(r, monitor.windowCorners)}}},
     };
 }
 
-void printWork(const QString& source, const core::CornerWorkResult& r) {
+void printWork(const QString& source, const core::CornerWorkResult& r, const core::CornerDrift& drift) {
     printLine(QStringLiteral("Corrective pulse, network %1: %2 moves").arg(source).arg(r.moves.size()));
     printLine(QStringLiteral("Mean trajectory error %1 mm without the pulse, %2 mm with it (-%3 %)")
                   .arg(r.meanWithoutMm, 0, 'f', 5)
                   .arg(r.meanWithMm, 0, 'f', 5)
                   .arg(r.reductionPct, 0, 'f', 1));
-    if (r.driftAtMove >= 0) printLine(QStringLiteral("The machine drifted from move %1 on").arg(r.driftAtMove));
+    if (r.driftAtMove >= 0)
+        printLine(QStringLiteral("The machine drifted from move %1 on: %2 %3 x%4")
+                      .arg(r.driftAtMove)
+                      .arg(QString::fromLatin1(core::toString(drift.axis)).toUpper(),
+                           QString::fromLatin1(core::toString(drift.kind)))
+                      .arg(drift.factor, 0, 'f', 2));
     for (const core::CornerRetrainEvent& e : r.retrains)
-        printLine(QStringLiteral("Retrained after move %1: %2").arg(e.move).arg(QString::fromStdString(e.reason)));
+        printLine((e.verdict.accepted ? QStringLiteral("Retrained after move %1: %2")
+                                      : QStringLiteral("Retraining after move %1 refused: %2"))
+                      .arg(e.move)
+                      .arg(QString::fromStdString(e.reason)));
     if (r.reductionAfterRetrainPct)
         printLine(QStringLiteral("After the first retraining: -%1 %").arg(*r.reductionAfterRetrainPct, 0, 'f', 1));
+}
+
+/// The drift the options ask for; a drift that leaves a drive unable to move is refused.
+core::CornerDrift driftOption(const CommandParser& parser, const core::CornerScenario& scenario) {
+    core::CornerDrift drift;
+    drift.kind = core::driveDriftKindFromString(
+        parser
+            .choice(QStringLiteral("drift-kind"),
+                    {QStringLiteral("friction"), QStringLiteral("gain"), QStringLiteral("inertia")})
+            .toStdString());
+    drift.axis = core::feedAxisFromString(
+        parser.choice(QStringLiteral("drift-axis"), {QStringLiteral("x"), QStringLiteral("z")}).toStdString().c_str());
+    if (!parser.isSet(QStringLiteral("drift"))) return drift;
+    drift.factor = parser.number(QStringLiteral("drift"), core::kMinDriveDriftFactor, core::kMaxDriveDriftFactor);
+    try {
+        (void)core::scaledDrives(scenario.drives, core::driftFactors(drift.kind, drift.axis, drift.factor));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(QStringLiteral("--drift: %1").arg(QString::fromStdString(e.what())).toStdString());
+    }
+    return drift;
 }
 
 int runWork(const QStringList& arguments) {
@@ -215,8 +288,15 @@ int runWork(const QStringList& arguments) {
                      QStringLiteral("Network saved by `corner train` (default: train one on the preset's moves)."),
                      QStringLiteral("NET.json"));
     parser.addOption(QStringLiteral("drift"),
-                     QStringLiteral("Multiply the Z drive's friction by F from the middle move on, 0.5 .. 3."),
+                     QStringLiteral("From the middle move on, multiply what --drift-kind names on the drive of "
+                                    "--drift-axis by F, 0.5 .. 3."),
                      QStringLiteral("F"));
+    parser.addOption(QStringLiteral("drift-kind"),
+                     QStringLiteral("What drifts: friction (ways and screw), gain (the drive's motor speed per volt "
+                                    "of velocity command) or inertia (the load at the motor). Default: friction."),
+                     QStringLiteral("friction|gain|inertia"), QStringLiteral("friction"));
+    parser.addOption(QStringLiteral("drift-axis"), QStringLiteral("The drive that drifts. Default: z."),
+                     QStringLiteral("x|z"), QStringLiteral("z"));
     addProgressOption(parser);
     parser.addOption(QStringLiteral("no-retrain"),
                      QStringLiteral("The drift monitor only watches: no retraining (for comparison)."));
@@ -224,8 +304,7 @@ int runWork(const QStringList& arguments) {
     core::CornerScenario scenario = loadScenario(parser);
     const int moves = movesOption(parser, scenario.evaluationMoves);
     const unsigned long long seed = seedOption(parser, scenario.training.seed + 1);
-    core::CornerDrift drift;
-    if (parser.isSet(QStringLiteral("drift"))) drift.factor = parser.number(QStringLiteral("drift"), 0.5, 3.0);
+    const core::CornerDrift drift = driftOption(parser, scenario);
     const InterruptGuard interrupts;
     ProgressPrinter progress(parser.isSet(QStringLiteral("progress")), "");
     QString source;
@@ -263,9 +342,9 @@ int runWork(const QStringList& arguments) {
     }
     progress.finish();
     if (parser.json())
-        printJson(workJson(result));
+        printJson(workJson(result, drift, scenario.retraining.monitor));
     else
-        printWork(source, result);
+        printWork(source, result, drift);
     return kExitOk;
 }
 

@@ -107,6 +107,52 @@ DriftCheck CornerDriftMonitor::check() const {
     return c;
 }
 
+std::vector<double> CornerDriftMonitor::relativeResiduals() const {
+    std::vector<double> r;
+    for (std::size_t i = 0; i < m_predicted.size(); ++i) {
+        const double predicted = std::max(m_predicted[i], 1e-12);
+        r.push_back((m_real[i] - predicted) / predicted);
+    }
+    return r;
+}
+
+int CornerDriftMonitor::changeStart(int minAfter) const {
+    const std::vector<double> r = relativeResiduals();
+    const int n = static_cast<int>(r.size());
+    if (minAfter < 1 || n < minAfter + 1) return 0;
+    // Squared deviations from the mean of r[a, b).
+    const auto sse = [&r](int a, int b) {
+        double mean = 0.0;
+        for (int i = a; i < b; ++i)
+            mean += r[static_cast<std::size_t>(i)];
+        mean /= std::max(b - a, 1);
+        double sum = 0.0;
+        for (int i = a; i < b; ++i)
+            sum += (r[static_cast<std::size_t>(i)] - mean) * (r[static_cast<std::size_t>(i)] - mean);
+        return sum;
+    };
+    int best = 1;
+    double bestSse = sse(0, 1) + sse(1, n);
+    for (int split = 2; split <= n - minAfter; ++split) {
+        const double v = sse(0, split) + sse(split, n);
+        if (v < bestSse) {
+            bestSse = v;
+            best = split;
+        }
+    }
+    return best;
+}
+
+std::vector<bool> CornerDriftMonitor::outlierFlagsFrom(int from) const {
+    const std::vector<double> r = relativeResiduals();
+    std::vector<bool> flags(r.size(), false);
+    if (from < 0 || from >= static_cast<int>(r.size())) return flags;
+    const std::vector<double> later(r.begin() + from, r.end());
+    for (int i : hampelOutliers(later, m_settings.outlierMads))
+        flags[static_cast<std::size_t>(from + i)] = true;
+    return flags;
+}
+
 void CornerDriftMonitor::clear() {
     m_predicted.clear();
     m_real.clear();

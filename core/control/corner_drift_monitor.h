@@ -49,6 +49,16 @@ public:
     DriftCheck check() const;
     /// Whether corner `i` of the window (0 = oldest) is a miss.
     std::vector<bool> outlierFlags() const;
+    /// Index (0 = oldest) of the first corner after the change in the window: the relative residuals
+    /// (real − predicted) / predicted are split into an earlier and a later level where the squared
+    /// deviations from the two means are least, with at least `minAfter` corners after the split
+    /// (two-segment least squares; before Hampel's rule, which would take the first corners after a
+    /// sudden change for misses). What the machine is now is what the later corners show. 0 when the
+    /// window has fewer than minAfter + 1 corners.
+    int changeStart(int minAfter) const;
+    /// Whether corner `i` of the window is a miss among the corners from `from` on, by Hampel's rule on
+    /// their relative residuals (false for the corners before `from`).
+    std::vector<bool> outlierFlagsFrom(int from) const;
     /// Forgets the window (after a retraining).
     void clear();
     /// Corners in the window.
@@ -56,6 +66,8 @@ public:
     const DriftMonitorSettings& settings() const { return m_settings; }
 
 private:
+    std::vector<double> relativeResiduals() const;
+
     DriftMonitorSettings m_settings;
     std::deque<double> m_predicted;
     std::deque<double> m_real;

@@ -238,6 +238,10 @@
         <source>Retrained</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Retraining refused</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>DeviceKinds</name>
@@ -3728,10 +3732,6 @@ L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Z friction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Corners</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3770,13 +3770,6 @@ L/d %4</source>
     <message>
         <source>Run finished.</source>
         <translation type="unfinished"></translation>
-    </message>
-    <message numerus="yes">
-        <source>Retrained on demand on %n corner(s): friction X × %1, Z × %2.</source>
-        <translation>
-            <numerusform>Retrained on demand on %n corner: friction X × %1, Z × %2.</numerusform>
-            <numerusform>Retrained on demand on %n corners: friction X × %1, Z × %2.</numerusform>
-        </translation>
     </message>
     <message>
         <source>Finding the best pulse of training move %1 of %2</source>
@@ -3817,10 +3810,6 @@ L/d %4</source>
             <numerusform>Retrained %n times since.</numerusform>
         </translation>
     </message>
-    <message>
-        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on the Z friction is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %.</source>
-        <translation type="unfinished"></translation>
-    </message>
     <message numerus="yes">
         <source>%n corner(s): mean error %1 → %2 µm (−%3 %).</source>
         <translation>
@@ -3833,11 +3822,81 @@ L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Retrained after corner %1: the measured cost was %2 % above the prediction; friction identified X × %3, Z × %4.</source>
+        <source>After it: −%1 %.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>After it: −%1 %.</source>
+        <source>Drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity gain</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inertia</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained on demand on %n corner(s); identified %1.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Retraining on demand refused: %1. The network in use is kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identifying the drives from the recorded corners</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Finding the best pulse of move %1 of %2 on the identified drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X: friction × %1, inertia × %2, gain × %3; Z: friction × %4, inertia × %5, gain × %6</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measured cost %1 % off the prediction after corner %2; identified %3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retrained: validation cost %1 → %2 µm.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The retrained network was refused (%1); the network in use is kept.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on, the chosen property of the chosen drive is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %; a retrained network is taken only when it does better on held-out moves.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more retraining(s) later.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Last difference of the monitor: %1 % (threshold %2 %).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>On the drives as identified after the drift.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drive</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

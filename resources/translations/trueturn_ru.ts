@@ -238,6 +238,10 @@
         <source>Retrained</source>
         <translation>Переобучена</translation>
     </message>
+    <message>
+        <source>Retraining refused</source>
+        <translation>Переобучение отклонено</translation>
+    </message>
 </context>
 <context>
     <name>DeviceKinds</name>
@@ -3745,10 +3749,6 @@ L/d %4</translation>
         <translation>Обучить сеть</translation>
     </message>
     <message>
-        <source>Z friction</source>
-        <translation>Трение Z</translation>
-    </message>
-    <message>
         <source>Corners</source>
         <translation>Углов</translation>
     </message>
@@ -3787,14 +3787,6 @@ L/d %4</translation>
     <message>
         <source>Run finished.</source>
         <translation>Прогон закончен.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Retrained on demand on %n corner(s): friction X × %1, Z × %2.</source>
-        <translation>
-            <numerusform>Переобучена по запросу на %n угле: трение X × %1, Z × %2.</numerusform>
-            <numerusform>Переобучена по запросу на %n углах: трение X × %1, Z × %2.</numerusform>
-            <numerusform>Переобучена по запросу на %n углах: трение X × %1, Z × %2.</numerusform>
-        </translation>
     </message>
     <message>
         <source>Finding the best pulse of training move %1 of %2</source>
@@ -3836,10 +3828,6 @@ L/d %4</translation>
             <numerusform>С тех пор переобучена %n раз.</numerusform>
         </translation>
     </message>
-    <message>
-        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on the Z friction is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %.</source>
-        <translation>Проходит углы с импульсом сети на моделируемом станке; с середины прогона трение привода Z умножается на заданный множитель. После каждого угла контроль сравнивает измеренное значение цели с расчётным по последним %1 углам (промахи исключены) и переобучает сеть, если разница больше %2 %.</translation>
-    </message>
     <message numerus="yes">
         <source>%n corner(s): mean error %1 → %2 µm (−%3 %).</source>
         <translation>
@@ -3853,12 +3841,84 @@ L/d %4</translation>
         <translation>Переобучение не понадобилось.</translation>
     </message>
     <message>
-        <source>Retrained after corner %1: the measured cost was %2 % above the prediction; friction identified X × %3, Z × %4.</source>
-        <translation>Переобучена после угла %1: измеренная цель на %2 % выше расчётной; определено трение X × %3, Z × %4.</translation>
-    </message>
-    <message>
         <source>After it: −%1 %.</source>
         <translation>После этого: −%1 %.</translation>
+    </message>
+    <message>
+        <source>Drift</source>
+        <translation>Дрейф</translation>
+    </message>
+    <message>
+        <source>Friction</source>
+        <translation>Трение</translation>
+    </message>
+    <message>
+        <source>Velocity gain</source>
+        <translation>Усиление по скорости</translation>
+    </message>
+    <message>
+        <source>Inertia</source>
+        <translation>Инерция</translation>
+    </message>
+    <message numerus="yes">
+        <source>Retrained on demand on %n corner(s); identified %1.</source>
+        <translation>
+            <numerusform>Переобучена по запросу на %n угле; определено: %1.</numerusform>
+            <numerusform>Переобучена по запросу на %n углах; определено: %1.</numerusform>
+            <numerusform>Переобучена по запросу на %n углах; определено: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Retraining on demand refused: %1. The network in use is kept.</source>
+        <translation>Переобучение по запросу отклонено: %1. Сохранена прежняя сеть.</translation>
+    </message>
+    <message>
+        <source>Identifying the drives from the recorded corners</source>
+        <translation>Идентификация приводов по записанным углам</translation>
+    </message>
+    <message>
+        <source>Finding the best pulse of move %1 of %2 on the identified drives</source>
+        <translation>Поиск лучшего импульса на идентифицированных приводах: перемещение %1 из %2</translation>
+    </message>
+    <message>
+        <source>X: friction × %1, inertia × %2, gain × %3; Z: friction × %4, inertia × %5, gain × %6</source>
+        <translation>X: трение × %1, инерция × %2, усиление × %3; Z: трение × %4, инерция × %5, усиление × %6</translation>
+    </message>
+    <message>
+        <source>Measured cost %1 % off the prediction after corner %2; identified %3.</source>
+        <translation>После угла %2 измеренная цель отличается от расчётной на %1 %; определено: %3.</translation>
+    </message>
+    <message>
+        <source>Retrained: validation cost %1 → %2 µm.</source>
+        <translation>Переобучена: цель на проверочных перемещениях %1 → %2 мкм.</translation>
+    </message>
+    <message>
+        <source>The retrained network was refused (%1); the network in use is kept.</source>
+        <translation>Переобученная сеть отклонена (%1); сохранена прежняя сеть.</translation>
+    </message>
+    <message>
+        <source>Runs corners with the network&apos;s pulse on the simulated machine; from the middle corner on, the chosen property of the chosen drive is multiplied by the factor. After each corner the monitor compares the measured cost with the predicted one over the last %1 corners (misses removed) and retrains above %2 %; a retrained network is taken only when it does better on held-out moves.</source>
+        <translation>Проходит углы с импульсом сети на моделируемом станке; с середины прогона выбранный параметр выбранного привода умножается на заданный множитель. После каждого угла контроль сравнивает измеренное значение цели с расчётным по последним %1 углам (промахи исключены) и переобучает сеть, если разница больше %2 %; переобученная сеть принимается, только если она лучше на проверочных перемещениях.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more retraining(s) later.</source>
+        <translation>
+            <numerusform>Позже ещё %n переобучение.</numerusform>
+            <numerusform>Позже ещё %n переобучения.</numerusform>
+            <numerusform>Позже ещё %n переобучений.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Last difference of the monitor: %1 % (threshold %2 %).</source>
+        <translation>Последняя разница контроля: %1 % (порог %2 %).</translation>
+    </message>
+    <message>
+        <source>On the drives as identified after the drift.</source>
+        <translation>На приводах, идентифицированных после дрейфа.</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Привод</translation>
     </message>
 </context>
 <context>

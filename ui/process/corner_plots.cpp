@@ -88,8 +88,8 @@ void showPulse(plot::Chart& chart, const core::CornerRun& with, core::FeedAxis p
     chart.refresh();
 }
 
-void showTraining(plot::Chart& chart, const std::vector<double>& trainingLoss, const std::vector<double>& validationLoss,
-                  double outputScaleV) {
+void showTraining(plot::Chart& chart, const std::vector<double>& trainingLoss,
+                  const std::vector<double>& validationLoss, double outputScaleV) {
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Network training"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Epoch"),
                         QCoreApplication::translate("CornerPlots", "RMS amplitude error, mV"));
@@ -123,7 +123,7 @@ void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thr
     chart.setTitle(QCoreApplication::translate("CornerPlots", "Drift monitor"));
     chart.setAxisTitles(QCoreApplication::translate("CornerPlots", "Corner"),
                         QCoreApplication::translate("CornerPlots", "Measured − predicted cost, %"));
-    std::vector<double> corners, difference, retrainX, retrainY;
+    std::vector<double> corners, difference, retrainX, retrainY, refusedX, refusedY;
     const int window = run.checks.empty() ? 0 : windowCorners;
     for (std::size_t i = 0; i < run.checks.size(); ++i) {
         corners.push_back(static_cast<double>(i + 1));
@@ -131,11 +131,14 @@ void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thr
         difference.push_back(run.checks[i].corners < window ? std::numeric_limits<double>::quiet_NaN()
                                                             : 100.0 * run.checks[i].differenceFraction);
     }
-    for (const core::CornerRetrainEvent& e : run.retrains) {
-        retrainX.push_back(e.move + 1.0);
-        retrainY.push_back(100.0 * run.checks[static_cast<std::size_t>(e.move)].differenceFraction);
-    }
     const double t = 100.0 * thresholdFraction;
+    // A difference beyond the plotted ±3 thresholds (a drift of the velocity gain: +100 % and more) is
+    // marked at the edge; the text beside the chart gives its value.
+    for (const core::CornerRetrainEvent& e : run.retrains) {
+        const double d = 100.0 * run.checks[static_cast<std::size_t>(e.move)].differenceFraction;
+        (e.verdict.accepted ? retrainX : refusedX).push_back(e.move + 1.0);
+        (e.verdict.accepted ? retrainY : refusedY).push_back(std::clamp(d, -2.9 * t, 2.9 * t));
+    }
     const double last = std::max(1.0, static_cast<double>(run.checks.size()));
     chart.setBand(QStringLiteral("threshold"), QCoreApplication::translate("CornerPlots", "Within the threshold"),
                   {1.0, last}, {-t, -t}, {t, t}, kThreshold);
@@ -144,7 +147,9 @@ void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thr
                     difference, kPulse, plot::Chart::Style::LineAndPoints);
     chart.setSeries(QStringLiteral("retrained"), QCoreApplication::translate("CornerPlots", "Retrained"), retrainX,
                     retrainY, kWithout, plot::Chart::Style::Points);
-    chart.setLegendBelow(3);
+    chart.setSeries(QStringLiteral("refused"), QCoreApplication::translate("CornerPlots", "Retraining refused"),
+                    refusedX, refusedY, kBand, plot::Chart::Style::Points);
+    chart.setLegendBelow(4);
     chart.rescale(true);
     chart.setYRange(-3.0 * t, 3.0 * t);
     chart.refresh();

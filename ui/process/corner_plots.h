@@ -23,11 +23,12 @@ void showErrors(plot::Chart& chart, const core::CornerRun& without, const core::
 void showPulse(plot::Chart& chart, const core::CornerRun& with, core::FeedAxis pulseAxis);
 /// RMS amplitude error per epoch on the training and the validation moves, mV (loss in normalised
 /// units → √(2 L) × output scale); `outputScaleV` of the network being trained.
-void showTraining(plot::Chart& chart, const std::vector<double>& trainingLoss, const std::vector<double>& validationLoss,
-                  double outputScaleV);
+void showTraining(plot::Chart& chart, const std::vector<double>& trainingLoss,
+                  const std::vector<double>& validationLoss, double outputScaleV);
 /// The drift monitor over a run of corners: measured minus predicted cost in % of the prediction,
-/// the threshold, and where the network was retrained; no point while fewer than `windowCorners` corners
-/// are in the window (at the start and after a retraining).
+/// the threshold, and where the network was retrained or a retrained network refused (marked at the
+/// chart's edge when beyond it); no point while fewer than `windowCorners` corners are in the window
+/// (at the start and after a retraining).
 void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thresholdFraction, int windowCorners);
 
 }  // namespace corner_plots

@@ -1,6 +1,7 @@
 #include "ui/process/corner_tool.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -29,6 +30,14 @@ constexpr unsigned long long kRunSeed = 3;  ///< the run's moves: neither traini
 
 QString number(double v, int decimals) {
     return QLocale().toString(v, 'f', decimals);
+}
+
+/// Whether the controller's model is the nominal drives (no factor off 1 by more than 0.1 %).
+bool nominalFactors(const core::FeedDrivesFactors& f) {
+    for (const core::DriveFactors& a : {f.x, f.z})
+        for (double v : {a.friction, a.inertia, a.velocityGain})
+            if (std::abs(v - 1.0) > 1e-3) return false;
+    return true;
 }
 
 QLabel* wrapped(QWidget* parent) {
@@ -60,8 +69,11 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_train(new QPushButton(this)),
       m_networkText(wrapped(this)),
       m_trainingChart(new plot::Chart(this)),
-      m_frictionLabel(new QLabel(this)),
-      m_friction(new QDoubleSpinBox(this)),
+      m_driftLabel(new QLabel(this)),
+      m_driftKind(new QComboBox(this)),
+      m_driftAxisLabel(new QLabel(this)),
+      m_driftAxis(new QComboBox(this)),
+      m_driftFactor(new QDoubleSpinBox(this)),
       m_cornersLabel(new QLabel(this)),
       m_corners(new QSpinBox(this)),
       m_run(new QPushButton(this)),
@@ -146,12 +158,20 @@ QWidget* CornerTool::buildNetworkView() {
 
 QWidget* CornerTool::buildDriftView() {
     auto* view = new QWidget(this);
-    m_friction->setObjectName(QStringLiteral("cornerFriction"));
-    m_friction->setRange(0.5, 3.0);
-    m_friction->setDecimals(2);
-    m_friction->setSingleStep(0.05);
-    m_friction->setValue(1.3);
-    m_friction->setPrefix(QStringLiteral("× "));
+    m_driftKind->setObjectName(QStringLiteral("cornerDriftKind"));
+    for (core::DriveDriftKind kind :
+         {core::DriveDriftKind::Friction, core::DriveDriftKind::Gain, core::DriveDriftKind::Inertia})
+        m_driftKind->addItem(QString(), QString::fromLatin1(core::toString(kind)));
+    m_driftAxis->setObjectName(QStringLiteral("cornerDriftAxis"));
+    m_driftAxis->addItem(QStringLiteral("X"), QStringLiteral("x"));
+    m_driftAxis->addItem(QStringLiteral("Z"), QStringLiteral("z"));
+    m_driftAxis->setCurrentIndex(1);
+    m_driftFactor->setObjectName(QStringLiteral("cornerDriftFactor"));
+    m_driftFactor->setRange(core::kMinDriveDriftFactor, core::kMaxDriveDriftFactor);
+    m_driftFactor->setDecimals(2);
+    m_driftFactor->setSingleStep(0.05);
+    m_driftFactor->setValue(1.3);
+    m_driftFactor->setPrefix(QStringLiteral("× "));
     m_corners->setObjectName(QStringLiteral("cornerRunCorners"));
     m_corners->setRange(20, 400);
     m_corners->setSingleStep(10);
@@ -162,12 +182,15 @@ QWidget* CornerTool::buildDriftView() {
     m_driftText->setObjectName(QStringLiteral("cornerDriftText"));
     m_driftChart->setObjectName(QStringLiteral("cornerDriftChart"));
     auto* row = new QGridLayout;
-    row->addWidget(m_frictionLabel, 0, 0);
-    row->addWidget(m_friction, 0, 1);
-    row->addWidget(m_run, 0, 2);
-    row->addWidget(m_cornersLabel, 1, 0);
-    row->addWidget(m_corners, 1, 1);
-    row->addWidget(m_retrain, 1, 2);
+    row->addWidget(m_driftLabel, 0, 0);
+    row->addWidget(m_driftKind, 0, 1);
+    row->addWidget(m_driftFactor, 0, 2);
+    row->addWidget(m_run, 0, 4);
+    row->addWidget(m_driftAxisLabel, 1, 0);
+    row->addWidget(m_driftAxis, 1, 1);
+    row->addWidget(m_retrain, 1, 4);
+    row->addWidget(m_cornersLabel, 2, 0);
+    row->addWidget(m_corners, 2, 1);
     row->setColumnStretch(3, 1);
     auto* layout = new QVBoxLayout(view);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -223,7 +246,11 @@ void CornerTool::retranslate() {
     m_zoom->setText(tr("Zoom on the corner"));
     m_trainingMovesLabel->setText(tr("Training moves"));
     m_train->setText(tr("Train network"));
-    m_frictionLabel->setText(tr("Z friction"));
+    m_driftLabel->setText(tr("Drift"));
+    m_driftKind->setItemText(0, tr("Friction"));
+    m_driftKind->setItemText(1, tr("Velocity gain"));
+    m_driftKind->setItemText(2, tr("Inertia"));
+    m_driftAxisLabel->setText(tr("Drive"));
     m_cornersLabel->setText(tr("Corners"));
     m_run->setText(tr("Run corners"));
     m_retrain->setText(tr("Retrain now"));
@@ -247,16 +274,19 @@ void CornerTool::simulate() {
     const core::CornerMove move = m_editor->move();
     const core::PulseSettings pulse = m_editor->pulse(m_scenario.pulse);
     const bool network = netFitsPulse(pulse);
+    // The corner on the drives as the controller knows them: identified after a drift, else nominal.
+    const bool identified = m_net && !nominalFactors(m_net->model);
+    const core::FeedDrivesConfig drives =
+        identified ? core::scaledDrives(m_scenario.drives, m_net->model) : m_scenario.drives;
     // The best pulse takes about 30 simulated corners (some 10 ms); the network's one.
     const double amplitude =
         network ? core::pulseAmplitudeV(m_net->net, pulse, move)
-                : core::findBestPulse(m_scenario.drives, m_scenario.cost, move, pulse, m_scenario.training.search)
-                      .amplitudeV;
+                : core::findBestPulse(drives, m_scenario.cost, move, pulse, m_scenario.training.search).amplitudeV;
     core::CornerSimulationOptions options;
     options.keepTrace = true;
     options.traceEvery = 5;
-    m_shownWithout = core::simulateCorner(m_scenario.drives, m_scenario.cost, move, pulse, 0.0, options);
-    m_shownWith = core::simulateCorner(m_scenario.drives, m_scenario.cost, move, pulse, amplitude, options);
+    m_shownWithout = core::simulateCorner(drives, m_scenario.cost, move, pulse, 0.0, options);
+    m_shownWith = core::simulateCorner(drives, m_scenario.cost, move, pulse, amplitude, options);
     corner_plots::showPaths(*m_pathChart, *m_shownWithout, *m_shownWith, m_zoom->isChecked());
     corner_plots::showErrors(*m_errorChart, *m_shownWithout, *m_shownWith);
     corner_plots::showPulse(*m_pulseChart, *m_shownWith, pulse.axis);
@@ -267,7 +297,9 @@ void CornerTool::simulate() {
             .arg(number(without, 1), number(with, 1), number(without > 0.0 ? 100.0 * (1.0 - with / without) : 0.0, 0));
     const QString source = network ? tr("Network's pulse %1 V").arg(number(amplitude, 3))
                                    : tr("Best pulse %1 V; no network for this pulse yet").arg(number(amplitude, 3));
-    m_summary->setText(errors + QLatin1Char('\n') + source);
+    m_summary->setText(
+        errors + QLatin1Char('\n') + source +
+        (identified ? QLatin1Char('\n') + tr("On the drives as identified after the drift.") : QString()));
 }
 
 bool CornerTool::train() {
@@ -284,8 +316,8 @@ bool CornerTool::train() {
     const std::shared_ptr<LiveCurve> curve = m_curve;
     m_apply = [this, result, scenario] {
         const core::AxisPulseSummary best = core::summarisePulses(scenario.pulse.axis, (*result)->examples);
-        m_net = CornerNetState{(*result)->net, scenario.pulse, core::toNetSamples((*result)->examples), scenario.drives,
-                               best.reductionPct};
+        m_net = CornerNetState{
+            (*result)->net, scenario.pulse, core::toNetSamples((*result)->examples), {}, best.reductionPct};
         m_lastStatus = tr("Network trained.");
         const core::NetTrainingRecord& r = m_net->net.record();
         corner_plots::showTraining(*m_trainingChart, r.trainingLoss, r.validationLoss,
@@ -323,7 +355,9 @@ bool CornerTool::runCorners() {
     const CornerNetState state = *m_net;
     const int corners = m_corners->value();
     core::CornerDrift drift;
-    drift.factor = m_friction->value();
+    drift.kind = core::driveDriftKindFromString(m_driftKind->currentData().toString().toStdString());
+    drift.axis = core::feedAxisFromString(m_driftAxis->currentData().toString().toStdString().c_str());
+    drift.factor = m_driftFactor->value();
     auto result = std::make_shared<std::optional<core::CornerWorkResult>>();
     auto net = std::make_shared<core::CorrectiveNet>(state.net);
     m_apply = [this, result, net] {
@@ -358,8 +392,11 @@ bool CornerTool::retrainNow() {
     const int move = static_cast<int>(m_lastRun->moves.size()) - 1;
     m_apply = [this, state, event] {
         m_net = *state;
-        m_lastStatus = tr("Retrained on demand on %n corner(s): friction X × %1, Z × %2.", nullptr, event->corners)
-                           .arg(number(event->friction.xFactor, 3), number(event->friction.zFactor, 3));
+        m_lastStatus = event->verdict.accepted
+                           ? tr("Retrained on demand on %n corner(s); identified %1.", nullptr, event->corners)
+                                 .arg(factorsText(event->identified.factors))
+                           : tr("Retraining on demand refused: %1. The network in use is kept.")
+                                 .arg(QString::fromStdString(event->verdict.failure));
         showNetworkText();
         simulate();
     };
@@ -389,6 +426,10 @@ void CornerTool::showProgress(const QString& stage, int done, int total) {
         m_status->setText(tr("Training the network: epoch %1 of at most %2").arg(done).arg(total));
     else if (stage == QLatin1String("work"))
         m_status->setText(tr("Running corner %1 of %2").arg(done).arg(total));
+    else if (stage == QLatin1String("identification"))
+        m_status->setText(tr("Identifying the drives from the recorded corners"));
+    else if (stage == QLatin1String("retargeting"))
+        m_status->setText(tr("Finding the best pulse of move %1 of %2 on the identified drives").arg(done).arg(total));
     else
         m_status->setText(tr("Retraining the network: epoch %1 of at most %2").arg(done).arg(total));
     if (stage == QLatin1String("network")) {
@@ -420,7 +461,9 @@ void CornerTool::updateEnabled() {
     m_trainingMoves->setEnabled(idle);
     m_run->setEnabled(idle && m_net.has_value());
     m_retrain->setEnabled(idle && m_net && m_lastRun && !m_lastRun->recent.empty());
-    m_friction->setEnabled(idle);
+    m_driftKind->setEnabled(idle);
+    m_driftAxis->setEnabled(idle);
+    m_driftFactor->setEnabled(idle);
     m_corners->setEnabled(idle);
     m_cancel->setEnabled(!idle);
 }
@@ -448,13 +491,35 @@ void CornerTool::showNetworkText() {
     m_networkText->setText(text);
 }
 
+QString CornerTool::factorsText(const core::FeedDrivesFactors& f) const {
+    return tr("X: friction × %1, inertia × %2, gain × %3; Z: friction × %4, inertia × %5, gain × %6")
+        .arg(number(f.x.friction, 2), number(f.x.inertia, 2), number(f.x.velocityGain, 2), number(f.z.friction, 2),
+             number(f.z.inertia, 2), number(f.z.velocityGain, 2));
+}
+
+QString CornerTool::retrainText(const core::CornerRetrainEvent& e) const {
+    const double difference = 100.0 * m_lastRun->checks[static_cast<std::size_t>(e.move)].differenceFraction;
+    const QString found = tr("Measured cost %1 % off the prediction after corner %2; identified %3.")
+                              .arg(number(difference, 1))
+                              .arg(e.move + 1)
+                              .arg(factorsText(e.identified.factors));
+    if (e.verdict.accepted)
+        return found + QLatin1Char(' ') +
+               tr("Retrained: validation cost %1 → %2 µm.")
+                   .arg(number(e.verdict.keptCostMm * 1e3, 1), number(e.verdict.candidateCostMm * 1e3, 1));
+    return found + QLatin1Char(' ') +
+           tr("The retrained network was refused (%1); the network in use is kept.")
+               .arg(QString::fromStdString(e.verdict.failure));
+}
+
 void CornerTool::showDriftText() {
     const core::DriftMonitorSettings& monitor = m_scenario.retraining.monitor;
     if (!m_lastRun) {
         m_driftText->setText(tr("Runs corners with the network's pulse on the simulated machine; from the middle "
-                                "corner on the Z friction is multiplied by the factor. After each corner the monitor "
-                                "compares the measured cost with the predicted one over the last %1 corners (misses "
-                                "removed) and retrains above %2 %.")
+                                "corner on, the chosen property of the chosen drive is multiplied by the factor. "
+                                "After each corner the monitor compares the measured cost with the predicted one "
+                                "over the last %1 corners (misses removed) and retrains above %2 %; a retrained "
+                                "network is taken only when it does better on held-out moves.")
                                  .arg(monitor.windowCorners)
                                  .arg(number(100.0 * monitor.thresholdFraction, 1)));
         return;
@@ -465,15 +530,17 @@ void CornerTool::showDriftText() {
     if (r.retrains.empty()) {
         text += QLatin1Char(' ') + tr("No retraining was needed.");
     } else {
-        const core::CornerRetrainEvent& e = r.retrains.front();
-        text += QLatin1Char(' ') +
-                tr("Retrained after corner %1: the measured cost was %2 % above the prediction; "
-                   "friction identified X × %3, Z × %4.")
-                    .arg(e.move + 1)
-                    .arg(number(100.0 * r.checks[static_cast<std::size_t>(e.move)].differenceFraction, 1),
-                         number(e.friction.xFactor, 2), number(e.friction.zFactor, 2));
+        text += QLatin1Char(' ') + retrainText(r.retrains.front());
+        if (r.retrains.size() > 1)
+            text +=
+                QLatin1Char(' ') + tr("%n more retraining(s) later.", nullptr, static_cast<int>(r.retrains.size() - 1));
         if (r.reductionAfterRetrainPct)
             text += QLatin1Char(' ') + tr("After it: −%1 %.").arg(number(*r.reductionAfterRetrainPct, 0));
+        const core::DriftCheck& last = r.checks.back();
+        if (last.corners >= monitor.windowCorners)
+            text += QLatin1Char(' ') +
+                    tr("Last difference of the monitor: %1 % (threshold %2 %).")
+                        .arg(number(100.0 * last.differenceFraction, 1), number(100.0 * monitor.thresholdFraction, 1));
     }
     m_driftText->setText(text);
 }

@@ -12,6 +12,7 @@
 #include "ui/process/process_tool.h"
 
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
@@ -34,7 +35,7 @@ struct CornerNetState {
     core::CorrectiveNet net;
     core::PulseSettings pulse;             ///< the pulse it was trained for
     std::vector<core::NetSample> samples;  ///< its training set (for retraining)
-    core::FeedDrivesConfig model;          ///< the controller's model of the drives (friction identified)
+    core::FeedDrivesFactors model;         ///< the controller's model of the drives (factors identified)
     double bestReductionPct = 0.0;         ///< what the best pulses of its training moves achieved
 };
 
@@ -42,8 +43,9 @@ struct CornerNetState {
 /// the corner between two moves (speeds entered or picked), the programmed path and the simulated paths
 /// without and with the pulse (zoomed on the corner), the contour error and the pulse on a time axis;
 /// training the network on the simulator with its training curve, progress and cancel; a run of corners
-/// on a machine whose Z friction drifts, with the drift monitor and retraining, and retraining on
-/// demand. Long work runs in a worker thread (CornerJob); the engine is core/sim/feed_drives.
+/// on a machine whose friction, velocity gain or inertia of one drive drifts, with the drift monitor and
+/// the guarded retraining, and retraining on demand. Long work runs in a worker thread (CornerJob); the engine is
+/// core/sim/feed_drives.
 class CornerTool : public ProcessTool {
     Q_OBJECT
 public:
@@ -78,7 +80,9 @@ public:
     QPushButton* retrainButton() const { return m_retrain; }
     QSpinBox* trainingMovesBox() const { return m_trainingMoves; }
     QSpinBox* cornersBox() const { return m_corners; }
-    QDoubleSpinBox* frictionBox() const { return m_friction; }
+    QComboBox* driftKindBox() const { return m_driftKind; }
+    QComboBox* driftAxisBox() const { return m_driftAxis; }
+    QDoubleSpinBox* driftFactorBox() const { return m_driftFactor; }
     QCheckBox* zoomBox() const { return m_zoom; }
     QTabWidget* views() const { return m_views; }
     QLabel* summaryLabel() const { return m_summary; }
@@ -112,6 +116,8 @@ private:
     void finishJob(bool cancelled, const QString& error);
     void showNetworkText();
     void showDriftText();
+    QString retrainText(const core::CornerRetrainEvent& event) const;
+    QString factorsText(const core::FeedDrivesFactors& factors) const;
     bool netFitsPulse(const core::PulseSettings& pulse) const;
 
     core::CornerScenario m_scenario;
@@ -139,8 +145,11 @@ private:
     QPushButton* m_train;
     QLabel* m_networkText;
     plot::Chart* m_trainingChart;
-    QLabel* m_frictionLabel;
-    QDoubleSpinBox* m_friction;
+    QLabel* m_driftLabel;
+    QComboBox* m_driftKind;
+    QLabel* m_driftAxisLabel;
+    QComboBox* m_driftAxis;
+    QDoubleSpinBox* m_driftFactor;
     QLabel* m_cornersLabel;
     QSpinBox* m_corners;
     QPushButton* m_run;

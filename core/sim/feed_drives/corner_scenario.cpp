@@ -39,8 +39,8 @@ void validateCornerScenario(const CornerScenario& s) {
     validateNetTraining(s.training.network);
     validateDriftMonitor(s.retraining.monitor);
     requireRange(s.retraining.oldSetWeight, 0.0, 1.0, "weight of the old training set");
-    requireRange(s.retraining.frictionFactorMin, 0.1, 1.0, "lowest friction factor identified");
-    requireRange(s.retraining.frictionFactorMax, 1.0, 10.0, "highest friction factor identified");
+    validateDriveIdentification(s.retraining.identification);
+    requireRange(s.retraining.validationMoves, 5, 1000, "validation moves of a retraining");
     requireRange(s.machine.frictionScatter, 0.0, 0.3, "friction scatter per corner");
     requireRange(s.machine.outlierProbability, 0.0, 0.5, "share of corners hit by a load");
     requireRange(s.machine.outlierTorqueNm, 0.0, 100.0, "load torque of a miss (N·m)");

@@ -5,6 +5,7 @@
 
 #include "core/control/corner_drift_monitor.h"
 #include "core/control/corrective_net_training.h"
+#include "core/sim/feed_drives/drive_identification.h"
 #include "core/sim/feed_drives/pulse_amplitude_search.h"
 
 namespace tt::core {
@@ -34,13 +35,13 @@ struct CornerTrainingSettings {
     NetTrainingSettings network;  ///< Adam, early stopping, hidden neurons
 };
 
-/// Retraining on drift (paper 002): the monitor, the weight of the old training set, the range of
-/// friction factors the drift identification searches.
+/// Retraining on drift (paper 002): the monitor, how the drives are re-identified, the weight of the
+/// earlier training moves and how many held-out moves a candidate network is judged on.
 struct CornerRetrainSettings {
     DriftMonitorSettings monitor;
-    double oldSetWeight = 0.3;       ///< weight of each old training sample against a recent corner's 1
-    double frictionFactorMin = 0.3;  ///< identification bracket
-    double frictionFactorMax = 3.0;
+    double oldSetWeight = 0.3;                   ///< weight of each earlier training move against a recent corner's 1
+    DriveIdentificationSettings identification;  ///< brackets of the drives' factors
+    int validationMoves = 40;                    ///< held-out moves a candidate network must do better on
 };
 
 /// A corrective-pulse scenario (resources/presets/1v340-feed-drives.json): the drives, the cost, the

@@ -109,6 +109,9 @@ CornerRun simulateCorner(const FeedDrivesConfig& drives, const CornerCostSetting
                loadOn(options.disturbance, FeedAxis::X, t));
         z.step(drives.stepS, programmed.zMm, pulse.axis == FeedAxis::Z ? pulseV : 0.0,
                loadOn(options.disturbance, FeedAxis::Z, t));
+        if (pulseV != 0.0)
+            run.pulseCurrentPeakA =
+                std::max(run.pulseCurrentPeakA, std::abs((pulse.axis == FeedAxis::X ? x : z).currentA()));
     }
     run.pulseStartS = trigger.startS();
     run.cost = accumulator.result();

@@ -42,9 +42,10 @@ struct CornerTrace {
 struct CornerRun {
     CornerCost cost;
     CornerTrace trace;
-    double pulseStartS = 0.0;     ///< when the tool reached Zm0 and the pulse fired, s
-    double intervalStartS = 0.0;  ///< when the tool reached Zn, s
-    double intervalEndS = 0.0;    ///< when the tool passed Zk, s
+    double pulseStartS = 0.0;        ///< when the tool reached Zm0 and the pulse fired, s
+    double intervalStartS = 0.0;     ///< when the tool reached Zn, s
+    double intervalEndS = 0.0;       ///< when the tool passed Zk, s
+    double pulseCurrentPeakA = 0.0;  ///< largest |armature current| of the pulsed drive while the pulse is on, A
 };
 
 /// Longest simulated time after the programmed velocity change, s (the tool must pass Zk before).

@@ -1,5 +1,6 @@
 #include "core/sim/feed_drives/corner_work_run.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <random>
@@ -35,8 +36,12 @@ CornerMachine machineForCorner(const FeedDrivesConfig& base, const MachineVariat
     NormalStream normals(seed);
     std::mt19937_64 engine(splitMix64(seed));
     CornerMachine m{base, std::nullopt};
-    scaleFriction(m.drives, FeedAxis::X, std::max(0.5, 1.0 + variation.frictionScatter * normals.next()));
-    scaleFriction(m.drives, FeedAxis::Z, std::max(0.5, 1.0 + variation.frictionScatter * normals.next()));
+    // Within four standard deviations (and never below half): a drift the run accepted stays runnable.
+    const auto scatter = [&] {
+        return std::clamp(1.0 + variation.frictionScatter * normals.next(), 0.5, 1.0 + 4.0 * variation.frictionScatter);
+    };
+    scaleFriction(m.drives, FeedAxis::X, scatter());
+    scaleFriction(m.drives, FeedAxis::Z, scatter());
     if (uniform01(engine) < variation.outlierProbability) {
         LoadTorquePulse load;
         load.axis = FeedAxis::Z;
@@ -55,8 +60,10 @@ CornerWorkResult runCornerWork(const CornerScenario& scenario, CorrectiveNet& ne
     CornerWorkResult result;
     const int count = static_cast<int>(moves.size());
     if (drift.factor != 1.0) result.driftAtMove = drift.atMove < 0 ? count / 2 : drift.atMove;
-    FeedDrivesConfig drifted = scenario.drives;
-    if (drift.factor != 1.0) scaleFriction(drifted, drift.axis, drift.factor);
+    const FeedDrivesConfig drifted =
+        drift.factor != 1.0 ? scaledDrives(scenario.drives, driftFactors(drift.kind, drift.axis, drift.factor))
+                            : scenario.drives;
+    FeedDrivesFactors modelFactors;
     FeedDrivesConfig model = scenario.drives;
     CornerDriftMonitor monitor(scenario.retraining.monitor);
     std::deque<RecordedCorner> recent;
@@ -87,17 +94,21 @@ CornerWorkResult runCornerWork(const CornerScenario& scenario, CorrectiveNet& ne
         const DriftCheck check = monitor.check();
         result.checks.push_back(check);
         if (retrain && check.retrain) {
-            const std::vector<bool> outliers = monitor.outlierFlags();
+            // The corners since the change the monitor sees, misses among them left out.
+            const int from = monitor.changeStart((monitor.settings().windowCorners + 1) / 2);
+            const std::vector<bool> outliers = monitor.outlierFlagsFrom(from);
             std::vector<RecordedCorner> kept;
-            for (std::size_t k = 0; k < recent.size(); ++k)
+            for (std::size_t k = static_cast<std::size_t>(from); k < recent.size(); ++k)
                 if (!outliers[k]) kept.push_back(recent[k]);
-            result.retrains.push_back(retrainOnCorners(scenario, model, net, oldSet, kept, i, check.reason, progress));
+            result.retrains.push_back(
+                retrainOnCorners(scenario, modelFactors, net, oldSet, kept, i, check.reason, progress));
+            model = scaledDrives(scenario.drives, modelFactors);
             monitor.clear();
             recent.clear();
         }
         if (progress && !progress("work", i + 1, count)) throw OperationCancelled();
     }
-    result.model = model;
+    result.model = modelFactors;
     result.samples = std::move(oldSet);
     const std::vector<bool> outliers = monitor.outlierFlags();
     for (std::size_t k = 0; k < recent.size(); ++k)

@@ -16,8 +16,9 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 void requireRange(double value, double lo, double hi, const char* axis, const char* what, const char* unit) {
     if (!std::isfinite(value) || value < lo || value > hi)
-        throw std::invalid_argument(std::string(axis) + ": " + what + " " + formatSignificant(value, 6) + " " + unit +
-                                    " is outside " + formatSignificant(lo, 6) + " .. " + formatSignificant(hi, 6));
+        throw std::invalid_argument(std::string(axis) + ": " + what + " " + formatSignificant(value, 6) +
+                                    (*unit != '\0' ? std::string(" ") + unit : std::string()) + " is outside " +
+                                    formatSignificant(lo, 6) + " .. " + formatSignificant(hi, 6));
 }
 
 // Coulomb friction with the Stribeck rise towards the static level at low speed, N·m (≥ 0).
@@ -48,11 +49,17 @@ void validateFeedDriveAxis(const FeedDriveAxisConfig& c, const char* axis) {
     requireRange(c.commandLimitV, 0.1, 100.0, axis, "command range", "V");
     requireRange(c.velocityGainAPerRadPerS, 1e-4, 1000.0, axis, "velocity loop gain", "A per rad/s");
     requireRange(c.velocityIntegralTimeS, 0.0, 10.0, axis, "velocity loop integral time", "s");
-    if (c.coulombFrictionNm >= c.torqueConstantNmPerA * c.currentLimitA)
-        throw std::invalid_argument(std::string(axis) + ": Coulomb friction " +
-                                    formatSignificant(c.coulombFrictionNm, 6) +
+    requireRange(c.velocityGainFactor, 0.1, 10.0, axis, "velocity gain factor", "");
+    const double peakNm = c.torqueConstantNmPerA * c.currentLimitA;
+    if (c.coulombFrictionNm >= peakNm)
+        throw std::invalid_argument(
+            std::string(axis) + ": Coulomb friction " + formatSignificant(c.coulombFrictionNm, 6) +
+            " N·m is not below the torque at the current limit (" + formatSignificant(peakNm, 6) + " N·m)");
+    if (c.staticFrictionNm >= peakNm)
+        throw std::invalid_argument(std::string(axis) + ": static friction " +
+                                    formatSignificant(c.staticFrictionNm, 6) +
                                     " N·m is not below the torque at the current limit (" +
-                                    formatSignificant(c.torqueConstantNmPerA * c.currentLimitA, 6) + " N·m)");
+                                    formatSignificant(peakNm, 6) + " N·m): the motor could never break away");
 }
 
 double motorSpeedRadPerS(const FeedDriveAxisConfig& config, double slideMmPerS) {
@@ -79,9 +86,10 @@ void FeedDriveAxis::settleOnRamp(double commandMm, double slideMmPerS) {
     const double speedErrorRadPerS = c.velocityIntegralTimeS > 0.0 ? 0.0 : m_current / c.velocityGainAPerRadPerS;
     m_integralRadPerS = c.velocityIntegralTimeS > 0.0 ? m_current / c.velocityGainAPerRadPerS : 0.0;
     const double commandRadPerS = m_speed + speedErrorRadPerS;
-    const double followingMm = slideSpeedMmPerS(c, commandRadPerS) / c.positionGainPerS;
+    // The CNC asks for commandRadPerS / factor in its own scaling; its following error is that over Kv.
+    const double followingMm = slideSpeedMmPerS(c, commandRadPerS / c.velocityGainFactor) / c.positionGainPerS;
     m_angleRad = kTwoPi * (commandMm - followingMm) / c.screwLeadMm;
-    m_commandV = commandRadPerS / c.speedPerVoltRadPerSPerV;
+    m_commandV = commandRadPerS / (c.speedPerVoltRadPerSPerV * c.velocityGainFactor);
 }
 
 void FeedDriveAxis::step(double dtS, double commandMm, double extraV, double loadTorqueNm) {
@@ -91,7 +99,7 @@ void FeedDriveAxis::step(double dtS, double commandMm, double extraV, double loa
         motorSpeedRadPerS(c, c.positionGainPerS * (commandMm - encoderMm())) / c.speedPerVoltRadPerSPerV;
     m_commandV = std::clamp(cncV + extraV, -c.commandLimitV, c.commandLimitV);
     // PI velocity loop with the current limit; the integrator stops while the limit holds it back.
-    const double speedError = m_commandV * c.speedPerVoltRadPerSPerV - m_speed;
+    const double speedError = m_commandV * c.speedPerVoltRadPerSPerV * c.velocityGainFactor - m_speed;
     const double wanted = c.velocityGainAPerRadPerS * (speedError + m_integralRadPerS);
     m_current = std::clamp(wanted, -c.currentLimitA, c.currentLimitA);
     if (c.velocityIntegralTimeS > 0.0 && (m_current == wanted || signOf(speedError) != signOf(wanted)))

@@ -25,10 +25,16 @@ struct FeedDriveAxisConfig {
     double commandLimitV = 10.0;             ///< the CNC's analog output range, ±V
     double velocityGainAPerRadPerS = 0.6;    ///< proportional gain of the velocity loop, A per rad/s
     double velocityIntegralTimeS = 0.015;    ///< integral time of the velocity loop, s (0: P only)
+    /// The drive's real motor speed per volt of velocity command over speedPerVolt, the value the CNC was
+    /// commissioned with and scales its output by (1: as commissioned). A drifting tachogenerator or input
+    /// scaling changes it: the same volts then make another speed, which changes the position loop's
+    /// effective gain and what the corrective pulse does.
+    double velocityGainFactor = 1.0;
 };
 
 /// Throws std::invalid_argument naming the first value outside its physical range ("Z: screw lead
-/// 0 mm must be above 0"); `axis` prefixes the message.
+/// 0 mm is outside 0.1 .. 100"), or when the Coulomb or the static friction is not below the torque at
+/// the current limit (the motor could never move, or never break away); `axis` prefixes the message.
 void validateFeedDriveAxis(const FeedDriveAxisConfig& config, const char* axis);
 
 /// Motor speed in rad/s for a slide speed in mm/s (ω = 2π v / lead).

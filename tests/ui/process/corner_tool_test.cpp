@@ -1,7 +1,7 @@
 // The Corner tool of the Process page offscreen (issue 15, item 6): a corner entered or picked is
 // simulated without and with the pulse (paths with the zoom on the corner, contour error, the pulse on a
 // time axis); the network is trained in a worker thread with its curve, progress and cancel; a run of
-// corners with 30 % more Z friction shows the drift monitor and retrains; retraining on demand.
+// corners whose Z velocity gain drifts by 1.5x shows the drift monitor and retrains; retraining on demand.
 #include "ui/process/corner_tool.h"
 
 #include <gtest/gtest.h>
@@ -16,12 +16,12 @@
 #include <QTabWidget>
 #include <QTest>
 
+#include "plot/chart.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
 #include "ui/app_state.h"
 #include "ui/pages/process_page.h"
-#include "plot/chart.h"
 #include "ui/process/corner_move_editor.h"
 
 namespace tt::ui {
@@ -111,7 +111,7 @@ TEST_F(CornerToolTest, TrainingRunsInAWorkerWithItsCurveAndCanBeCancelled) {
     EXPECT_TRUE(tool.summaryLabel()->text().contains(QStringLiteral("no network for this pulse")));
 }
 
-TEST_F(CornerToolTest, ARunWithMoreZFrictionShowsTheDriftMonitorAndRetrains) {
+TEST_F(CornerToolTest, ARunWhoseZVelocityGainDriftsShowsTheDriftMonitorAndRetrains) {
     CornerTool tool(context);
     tool.resize(kWidth, kHeight);
     tool.show();
@@ -121,29 +121,50 @@ TEST_F(CornerToolTest, ARunWithMoreZFrictionShowsTheDriftMonitorAndRetrains) {
     ASSERT_TRUE(tool.network().has_value());
     tool.views()->setCurrentIndex(2);
     EXPECT_FALSE(tool.retrainButton()->isEnabled());  // no corners recorded yet
-    tool.frictionBox()->setValue(1.3);
+    // The drift: what, on which drive, how much (a velocity gain drift moves the best pulse, DECISIONS).
+    ASSERT_EQ(tool.driftKindBox()->count(), 3);
+    EXPECT_EQ(tool.driftKindBox()->currentText(), QStringLiteral("Friction"));
+    tool.driftKindBox()->setCurrentIndex(1);
+    EXPECT_EQ(tool.driftKindBox()->currentText(), QStringLiteral("Velocity gain"));
+    EXPECT_EQ(tool.driftAxisBox()->currentText(), QStringLiteral("Z"));
+    EXPECT_EQ(tool.driftFactorBox()->minimum(), 0.5);
+    EXPECT_EQ(tool.driftFactorBox()->maximum(), 3.0);
+    tool.driftFactorBox()->setValue(1.5);
     tool.cornersBox()->setValue(60);
     tool.runButton()->click();
     ASSERT_TRUE(tool.busy());
+    EXPECT_FALSE(tool.driftKindBox()->isEnabled());
     ASSERT_TRUE(waitForJob(tool));
     ASSERT_TRUE(tool.lastRun().has_value());
     const core::CornerWorkResult& run = *tool.lastRun();
     EXPECT_EQ(run.moves.size(), 60u);
     EXPECT_EQ(tool.driftChart()->pointCount(QStringLiteral("difference")), 60);
-    EXPECT_EQ(tool.driftChart()->pointCount(QStringLiteral("retrained")), static_cast<int>(run.retrains.size()));
+    EXPECT_EQ(tool.driftChart()->pointCount(QStringLiteral("retrained")) +
+                  tool.driftChart()->pointCount(QStringLiteral("refused")),
+              static_cast<int>(run.retrains.size()));
     ASSERT_FALSE(run.retrains.empty()) << tool.driftLabel()->text().toStdString();
-    EXPECT_GE(run.retrains.front().move, 30);  // the friction rises from the middle corner
-    EXPECT_TRUE(tool.driftLabel()->text().contains(QStringLiteral("Retrained after corner")));
-    EXPECT_EQ(tool.network()->net.record().retrainings, static_cast<int>(run.retrains.size()));
+    EXPECT_GE(run.retrains.front().move, 30);  // the gain changes from the middle corner
+    EXPECT_TRUE(run.retrains.front().verdict.accepted) << run.retrains.front().reason;
+    EXPECT_TRUE(tool.driftLabel()->text().contains(QStringLiteral("Retrained: validation cost")))
+        << tool.driftLabel()->text().toStdString();
+    int accepted = 0;
+    for (const core::CornerRetrainEvent& e : run.retrains)
+        accepted += e.verdict.accepted ? 1 : 0;
+    EXPECT_EQ(tool.network()->net.record().retrainings, accepted);  // a refused network never replaced it
+    EXPECT_EQ(tool.driftChart()->pointCount(QStringLiteral("retrained")), accepted);
+    EXPECT_NEAR(tool.network()->model.z.velocityGain, 1.5, 0.02);  // the controller's model knows it now
     EXPECT_TRUE(test::saveScreenshot(tool, QStringLiteral("corner_4_drift_monitor")));
-    // Retraining on demand on the corners recorded since.
+    // Retraining on demand on the corners recorded since: taken or refused, the tool says which.
     ASSERT_TRUE(tool.retrainButton()->isEnabled());
     const int before = tool.network()->net.record().retrainings;
     tool.retrainButton()->click();
     ASSERT_TRUE(waitForJob(tool));
-    EXPECT_EQ(tool.network()->net.record().retrainings, before + 1);
-    EXPECT_TRUE(tool.statusLabel()->text().contains(QStringLiteral("Retrained on demand")))
-        << tool.statusLabel()->text().toStdString();
+    const QString status = tool.statusLabel()->text();
+    if (tool.network()->net.record().retrainings == before + 1)
+        EXPECT_TRUE(status.contains(QStringLiteral("Retrained on demand"))) << status.toStdString();
+    else
+        EXPECT_TRUE(status.contains(QStringLiteral("Retraining on demand refused"))) << status.toStdString();
+    EXPECT_LE(tool.network()->net.record().retrainings, before + 1);
 }
 
 TEST_F(CornerToolTest, IsATabOfTheProcessPage) {

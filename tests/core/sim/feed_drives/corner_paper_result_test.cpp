@@ -1,9 +1,14 @@
 // Paper 002's results on the 1v340-feed-drives scenario (the engine defaults are that preset's values):
 // on held-out moves of another seed the network's pulse cuts the mean trajectory error by at least 60 %
-// (paper, Fig. 3: 0.04673 -> 0.01453 mm, -69 %); when the Z friction rises by 30 % mid-run the error
-// rises above the controller's prediction, retraining triggers within the monitor's window and the
-// reduction after it is at least 50 % (issue 15).
+// (paper, Fig. 3: 0.04673 -> 0.01453 mm, -69 %). Retraining on drift (paper: "the parameters of the
+// drive systems change with time"): a drift of the drive's velocity gain by 1.5x moves the best pulse,
+// and the retrained network does at least 5 points better than the network kept; a friction or inertia
+// drift hardly moves it (the PI velocity loop rejects friction, and follows a 50 ms pulse whatever the
+// inertia), so there the guard keeps the retraining from doing worse. After every drift the controller's
+// prediction returns within the monitor's threshold.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/sim/feed_drives/corner_work_run.h"
 
@@ -18,6 +23,52 @@ protected:
         delete s_training;
         s_training = nullptr;
     }
+
+    /// The same moves with retraining and with the network kept (the monitor only watching).
+    struct Compared {
+        CornerWorkResult retrained;
+        CornerWorkResult kept;
+        int first = -1;             ///< the move after which the first retraining happened
+        double retrainedPct = 0.0;  ///< reduction over the moves after it, retrained network
+        double keptPct = 0.0;       ///< the same moves, network kept
+        int acceptedRetrainings = 0;
+    };
+    static Compared compare(const CornerDrift& drift, unsigned long long seed, int count = 80) {
+        const CornerScenario scenario;
+        const std::vector<CornerMove> moves = drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, count, seed);
+        const std::vector<NetSample> set = toNetSamples(s_training->examples);
+        Compared c;
+        CorrectiveNet net = s_training->net;
+        c.retrained = runCornerWork(scenario, net, set, moves, drift);
+        CorrectiveNet old = s_training->net;
+        c.kept = runCornerWork(scenario, old, set, moves, drift, /*retrain=*/false);
+        EXPECT_TRUE(c.kept.retrains.empty());
+        for (const CornerRetrainEvent& e : c.retrained.retrains)
+            c.acceptedRetrainings += e.verdict.accepted ? 1 : 0;
+        EXPECT_EQ(net.record().retrainings, c.acceptedRetrainings);  // a refused network never replaced it
+        if (c.retrained.retrains.empty()) return c;
+        c.first = c.retrained.retrains.front().move;
+        double without = 0.0, retrained = 0.0, kept = 0.0;
+        for (std::size_t i = static_cast<std::size_t>(c.first) + 1; i < moves.size(); ++i) {
+            without += c.kept.moves[i].without.meanErrorMm;
+            kept += c.kept.moves[i].with.meanErrorMm;
+            retrained += c.retrained.moves[i].with.meanErrorMm;
+        }
+        c.retrainedPct = 100.0 * (1.0 - retrained / without);
+        c.keptPct = 100.0 * (1.0 - kept / without);
+        EXPECT_NEAR(c.retrainedPct, *c.retrained.reductionAfterRetrainPct, 1e-9);
+        return c;
+    }
+    /// The monitor's difference over its last full window after the last retraining (none: NaN).
+    static double lastDifference(const CornerWorkResult& r) {
+        const int window = CornerScenario{}.retraining.monitor.windowCorners;
+        const int since = r.retrains.empty() ? 0 : r.retrains.back().move + 1;
+        for (int i = static_cast<int>(r.checks.size()) - 1; i >= since; --i)
+            if (r.checks[static_cast<std::size_t>(i)].corners >= window)
+                return r.checks[static_cast<std::size_t>(i)].differenceFraction;
+        return std::nan("");
+    }
+
     static CornerNetTraining* s_training;
 };
 
@@ -44,45 +95,108 @@ TEST_F(CornerPaperResult, HeldOutMovesOfAnotherSeedLoseAtLeastSixtyPercentOfThei
     EXPECT_GT(hit, 0);  // misses were there and were ignored
 }
 
-TEST_F(CornerPaperResult, ThirtyPercentMoreZFrictionTriggersRetrainingThatKeepsHalfTheErrorOff) {
-    CornerScenario scenario;
-    const int window = scenario.retraining.monitor.windowCorners;
-    CorrectiveNet net = s_training->net;
-    const std::vector<CornerMove> moves = drawCornerMoves(scenario.xSpeeds, scenario.zSpeeds, 80, 3);
-    CornerDrift drift;
-    drift.factor = 1.3;
-    const CornerWorkResult r = runCornerWork(scenario, net, toNetSamples(s_training->examples), moves, drift);
-    ASSERT_EQ(r.driftAtMove, 40);
-    ASSERT_FALSE(r.retrains.empty());
-    const int first = r.retrains.front().move;
-    EXPECT_GE(first, r.driftAtMove);           // no retraining before the drift
-    EXPECT_LT(first, r.driftAtMove + window);  // and within the window after it
-    // The error rose above what the controller's model predicted: that is what triggered it.
-    EXPECT_GT(r.checks[static_cast<std::size_t>(first)].differenceFraction,
-              scenario.retraining.monitor.thresholdFraction);
-    for (int i = window; i < r.driftAtMove; ++i)
-        EXPECT_LT(std::abs(r.checks[static_cast<std::size_t>(i)].differenceFraction),
-                  scenario.retraining.monitor.thresholdFraction);
-    // The friction found is the drift: Z up by about 30 % (per-corner scatter 5 %), X unchanged.
-    EXPECT_NEAR(r.retrains.front().friction.zFactor, 1.3, 0.15);
-    EXPECT_NEAR(r.retrains.front().friction.xFactor, 1.0, 0.1);
-    ASSERT_TRUE(r.reductionAfterRetrainPct.has_value());
-    EXPECT_GE(*r.reductionAfterRetrainPct, 50.0);
-    EXPECT_EQ(net.record().retrainings, static_cast<int>(r.retrains.size()));
-    // The same moves with the monitor only watching: the retrained network does no worse than the old
-    // one after the retraining (on this machine the two are within a few tenths of a per cent, README).
-    CorrectiveNet old = s_training->net;
-    const CornerWorkResult watched =
-        runCornerWork(scenario, old, toNetSamples(s_training->examples), moves, drift, /*retrain=*/false);
-    EXPECT_TRUE(watched.retrains.empty());
-    double without = 0.0, retrained = 0.0, kept = 0.0;
-    for (std::size_t i = static_cast<std::size_t>(first) + 1; i < moves.size(); ++i) {
-        without += watched.moves[i].without.meanErrorMm;
-        kept += watched.moves[i].with.meanErrorMm;
-        retrained += r.moves[i].with.meanErrorMm;
+TEST_F(CornerPaperResult, AVelocityGainDriftOfOneAndAHalfIsRetrainedForAtLeastFivePointsBetterThanKept) {
+    const double threshold = CornerScenario{}.retraining.monitor.thresholdFraction;
+    for (FeedAxis axis : {FeedAxis::Z, FeedAxis::X}) {
+        SCOPED_TRACE(toString(axis));
+        CornerDrift drift;
+        drift.kind = DriveDriftKind::Gain;
+        drift.axis = axis;
+        drift.factor = 1.5;
+        const Compared c = compare(drift, 3);
+        ASSERT_EQ(c.retrained.driftAtMove, 40);
+        ASSERT_GE(c.first, 40);  // no retraining before the drift, and one within the window after it
+        ASSERT_LT(c.first, 50);
+        const CornerRetrainEvent& e = c.retrained.retrains.front();
+        EXPECT_TRUE(e.verdict.accepted) << e.reason;
+        // The gain found is the drift's (within 1 %); the other drive's is left at 1.
+        EXPECT_NEAR(axisFactors(e.identified.factors, axis).velocityGain, 1.5, 0.015) << e.reason;
+        EXPECT_NEAR(axisFactors(e.identified.factors, axis == FeedAxis::X ? FeedAxis::Z : FeedAxis::X).velocityGain,
+                    1.0, 0.01);
+        // The issue's figure: the retrained network at least 5 points better than the one kept.
+        EXPECT_GE(c.retrainedPct, c.keptPct + 5.0) << c.retrainedPct << " against " << c.keptPct;
+        // The controller's prediction is right again: within the threshold over the last full window.
+        EXPECT_LT(std::abs(lastDifference(c.retrained)), threshold);
     }
-    EXPECT_NEAR(100.0 * (1.0 - retrained / without), *r.reductionAfterRetrainPct, 1e-9);
-    EXPECT_LE(retrained, kept * 1.01);
+}
+
+TEST_F(CornerPaperResult, AFrictionOrInertiaDriftIsFoundAndThePredictionRightAgainWithoutLosingReduction) {
+    const double threshold = CornerScenario{}.retraining.monitor.thresholdFraction;
+    for (auto [kind, factor] : {std::pair{DriveDriftKind::Friction, 1.3}, std::pair{DriveDriftKind::Inertia, 1.5}}) {
+        SCOPED_TRACE(toString(kind));
+        CornerDrift drift;
+        drift.kind = kind;
+        drift.factor = factor;
+        const Compared c = compare(drift, 3);
+        ASSERT_GE(c.first, 40);
+        ASSERT_LT(c.first, 50);
+        const CornerRetrainEvent& e = c.retrained.retrains.front();
+        EXPECT_GT(c.retrained.checks[static_cast<std::size_t>(c.first)].differenceFraction, threshold);
+        // What drifted is found on Z (per-corner friction scatter 5 %), X is left alone.
+        const double found =
+            kind == DriveDriftKind::Friction ? e.identified.factors.z.friction : e.identified.factors.z.inertia;
+        EXPECT_NEAR(found, factor, 0.1 * factor) << e.reason;
+        EXPECT_NEAR(e.identified.factors.x.velocityGain, 1.0, 0.01);
+        EXPECT_NEAR(e.identified.factors.z.velocityGain, 1.0, 0.01);
+        EXPECT_TRUE(e.modelUpdated);
+        EXPECT_LT(std::abs(lastDifference(c.retrained)), threshold);
+        // Retrained or refused, the run does not lose reduction against the network kept (within the
+        // half point a network retrained on 10 new corners varies by), and keeps half the error off.
+        EXPECT_GE(c.retrainedPct, c.keptPct - 0.5) << c.retrainedPct << " against " << c.keptPct;
+        EXPECT_GE(c.retrainedPct, 50.0);
+    }
+}
+
+// The points of mean error a perfect retraining wins back after a drift: the best pulse of every move found
+// again on the drifted drives against the nominal drives' best pulse kept, in % of the error without a pulse.
+double perfectRetrainingPoints(const CornerScenario& s, const std::vector<CornerMove>& moves, DriveDriftKind kind,
+                               FeedAxis axis, double factor) {
+    const FeedDrivesConfig drifted = scaledDrives(s.drives, driftFactors(kind, axis, factor));
+    double without = 0.0, kept = 0.0, best = 0.0;
+    for (const CornerMove& m : moves) {
+        const double nominal = findBestPulse(s.drives, s.cost, m, s.pulse, s.training.search).amplitudeV;
+        const PulseOptimum o = findBestPulse(drifted, s.cost, m, s.pulse, s.training.search);
+        without += o.without.meanErrorMm;
+        best += o.with.meanErrorMm;
+        kept += simulateCorner(drifted, s.cost, m, s.pulse, nominal).cost.meanErrorMm;
+    }
+    return 100.0 * (kept - best) / without;
+}
+
+TEST(CornerDriftPhysics, RegressionPinEvenAPerfectRetrainingWinsBackLittleAfterAFrictionOrInertiaDrift) {
+    // Why the 5-point figure is shown on the gain and not on the friction or the inertia: over 20 moves of
+    // seed 3, 1.5x the friction or the inertia of either drive wins back under 2 points to a perfect
+    // retraining, 1.5x the velocity gain over 30 (DECISIONS, "Drift kinds").
+    const CornerScenario s;
+    const std::vector<CornerMove> moves = drawCornerMoves(s.xSpeeds, s.zSpeeds, 20, 3);
+    for (FeedAxis axis : {FeedAxis::X, FeedAxis::Z})
+        for (DriveDriftKind kind : {DriveDriftKind::Friction, DriveDriftKind::Inertia, DriveDriftKind::Gain}) {
+            const double points = perfectRetrainingPoints(s, moves, kind, axis, 1.5);
+            if (kind == DriveDriftKind::Gain)
+                EXPECT_GT(points, 30.0) << toString(kind) << " " << toString(axis);
+            else
+                EXPECT_LT(points, 2.0) << toString(kind) << " " << toString(axis);
+        }
+}
+
+TEST(CornerDriftPhysics, RegressionPinInertiaMovesTheBestPulseOnlyWhereTheVelocityLoopIsSlow) {
+    // The pulse (50 ms on X) passes through X's velocity loop, whose closed-loop time constant is
+    // J / (Kp kt): 6.7 ms on the preset, so 1.5x the inertia (10 ms) hardly reshapes what the pulse does.
+    // With a velocity gain of 0.15 A per rad/s (27 ms, 40 ms at 1.5x) a perfect retraining wins back more
+    // than 5 points, but the pulse then cuts the error by under 50 % instead of the paper's 69 %: a drive
+    // that reproduces paper 002 cannot show a 5-point inertia retraining (measured on this simulator,
+    // 20 moves of seed 3: 0.0 points at 0.6 A per rad/s, 6.5 at 0.15).
+    CornerScenario slow;
+    slow.drives.x.velocityGainAPerRadPerS = 0.15;
+    const std::vector<CornerMove> moves = drawCornerMoves(slow.xSpeeds, slow.zSpeeds, 20, 3);
+    EXPECT_GT(perfectRetrainingPoints(slow, moves, DriveDriftKind::Inertia, FeedAxis::X, 1.5), 5.0);
+    double without = 0.0, with = 0.0;
+    for (const CornerMove& m : moves) {
+        const PulseOptimum o = findBestPulse(slow.drives, slow.cost, m, slow.pulse, slow.training.search);
+        without += o.without.meanErrorMm;
+        with += o.with.meanErrorMm;
+    }
+    EXPECT_LT(100.0 * (1.0 - with / without), 50.0);
 }
 
 }  // namespace
