@@ -27,6 +27,8 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, CLI and resume"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Devices in a thread of their own"),
     QT_TRANSLATE_NOOP("tt::ui::About", "The LinuxCNC lathe on the Run page and in simulate"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Plant-wide history: a journal on each terminal, the Plant page"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Retraining of the corrective pulse on drive drifts"),
 };
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.

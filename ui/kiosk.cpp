@@ -28,7 +28,7 @@ bool engineerMayQuit(AppContext& context, QWidget* parent) {
     if (!session || session->may(kQuitting)) return engineerMayQuit(parent, context.prompt);
     storage::UserStore* users = context.data().users();
     if (!users) return false;
-    LoginDialog logIn(*users, *session, /*allowQuit=*/true, parent);
+    LoginDialog logIn(*users, *session, LoginDialog::Leave::Cancel, parent);
     return logIn.exec() == QDialog::Accepted && session->may(kQuitting);
 }
 

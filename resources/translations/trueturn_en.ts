@@ -2836,6 +2836,14 @@
         <source>The LinuxCNC lathe on the Run page and in simulate</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Plant-wide history: a journal on each terminal, the Plant page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Retraining of the corrective pulse on drive drifts</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>
@@ -5508,6 +5516,10 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     </message>
     <message>
         <source>Cannot log in: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2846,6 +2846,14 @@
         <source>The LinuxCNC lathe on the Run page and in simulate</source>
         <translation>Станок LinuxCNC на странице «Работа» и в simulate</translation>
     </message>
+    <message>
+        <source>Plant-wide history: a journal on each terminal, the Plant page</source>
+        <translation>История цеха: журнал на каждом терминале, страница «Цех»</translation>
+    </message>
+    <message>
+        <source>Retraining of the corrective pulse on drive drifts</source>
+        <translation>Переобучение корректирующего импульса при дрейфе приводов</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::AppState</name>
@@ -5550,6 +5558,10 @@ Are you an engineer, and do you want to quit TrueTurn?</source>
     <message>
         <source>Cannot log in: %1</source>
         <translation>Не удаётся войти: %1</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Отмена</translation>
     </message>
 </context>
 <context>

@@ -20,7 +20,7 @@ bool logInAtStart(AppContext& context, QWidget* parent) {
         return dialog.exec() == QDialog::Accepted;
     }
     qCInfo(lcUi) << "asking for a log-in";
-    LoginDialog dialog(*users, *context.session, true, parent);
+    LoginDialog dialog(*users, *context.session, LoginDialog::Leave::Quit, parent);
     const bool in = dialog.exec() == QDialog::Accepted;
     if (in) qCInfo(lcUi).noquote() << "logged in:" << context.session->describe();
     return in;
@@ -31,7 +31,7 @@ void logInAgainAfterLogOut(AppContext& context, QWidget* window) {
     QObject::connect(context.session, &UserSession::loggedOut, window, [&context, window](bool) {
         storage::UserStore* users = context.data().users();
         if (!users) return;
-        LoginDialog dialog(*users, *context.session, false, window);
+        LoginDialog dialog(*users, *context.session, LoginDialog::Leave::Never, window);
         dialog.exec();
     });
 }

@@ -16,11 +16,11 @@
 
 namespace tt::ui {
 
-LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, bool allowQuit, QWidget* parent)
+LoginDialog::LoginDialog(storage::UserStore& users, UserSession& session, Leave leave, QWidget* parent)
     : QDialog(parent),
       m_users(users),
       m_session(session),
-      m_allowQuit(allowQuit),
+      m_leave(leave),
       m_clockS([] { return static_cast<std::int64_t>(QDateTime::currentSecsSinceEpoch()); }),
       m_user(new QComboBox(this)),
       m_secret(new QLineEdit(this)),
@@ -75,11 +75,12 @@ QHBoxLayout* LoginDialog::buildButtons() {
     logIn->setMinimumHeight(64);
     auto* buttons = new QHBoxLayout;
     buttons->addStretch(1);
-    if (m_allowQuit) {
-        auto* quit = new QPushButton(tr("Quit"), this);
-        quit->setMinimumHeight(64);
-        buttons->addWidget(quit);
-        connect(quit, &QPushButton::clicked, this, &QDialog::reject);
+    if (m_leave != Leave::Never) {
+        auto* leave = new QPushButton(m_leave == Leave::Quit ? tr("Quit") : tr("Cancel"), this);
+        leave->setObjectName(QStringLiteral("leaveButton"));
+        leave->setMinimumHeight(64);
+        buttons->addWidget(leave);
+        connect(leave, &QPushButton::clicked, this, &QDialog::reject);
     }
     buttons->addWidget(logIn);
     connect(logIn, &QPushButton::clicked, this, &LoginDialog::attempt);
@@ -150,7 +151,7 @@ bool LoginDialog::attempt() {
 }
 
 void LoginDialog::reject() {
-    if (m_allowQuit) QDialog::reject();  // otherwise Escape does not leave the terminal unlocked
+    if (m_leave != Leave::Never) QDialog::reject();  // otherwise Escape does not leave the terminal unlocked
 }
 
 }  // namespace tt::ui

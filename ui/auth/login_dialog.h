@@ -22,8 +22,13 @@ class UserSession;
 class LoginDialog : public QDialog {
     Q_OBJECT
 public:
-    /// `allowQuit`: offer Quit (at the start); otherwise the dialog stays until someone logs in.
-    LoginDialog(storage::UserStore& users, UserSession& session, bool allowQuit, QWidget* parent = nullptr);
+    /// How the dialog may be left without logging in.
+    enum class Leave {
+        Never,   ///< it stays until someone logs in (after a log-out)
+        Quit,    ///< a Quit button: at the start, leaving quits the application
+        Cancel,  ///< a Cancel button: asked for someone else's log-in (the kiosk's engineer), back to the terminal
+    };
+    LoginDialog(storage::UserStore& users, UserSession& session, Leave leave, QWidget* parent = nullptr);
 
     /// Unix seconds for the lock-out (default: the system clock); replaced by tests.
     void setClock(std::function<std::int64_t()> unixS) { m_clockS = std::move(unixS); }
@@ -40,13 +45,13 @@ public:
 private:
     /// The title, the user and secret fields, the message, the buttons and the keypad.
     void buildLayout();
-    /// Log in (the default button) and, at the start, Quit.
+    /// Log in (the default button) and the Quit or Cancel button (object name "leaveButton").
     QHBoxLayout* buildButtons();
     QWidget* buildKeypad();
 
     storage::UserStore& m_users;
     UserSession& m_session;
-    bool m_allowQuit;
+    Leave m_leave;
     std::function<std::int64_t()> m_clockS;
     QComboBox* m_user;
     QLineEdit* m_secret;

@@ -114,7 +114,7 @@ TEST_P(AuthFlowTest, FirstStartLogInRefusalAndAuditTrail) {
     // The operator logs in on the keypad; a wrong PIN first says how many attempts are left.
     session.logOut();
     {
-        LoginDialog login(users(), session, true);
+        LoginDialog login(users(), session, LoginDialog::Leave::Quit);
         login.setClock([this] { return nowS; });
         login.userCombo()->setCurrentIndex(login.userCombo()->findText(QStringLiteral("Ivan")));
         login.show();
@@ -147,7 +147,7 @@ TEST_P(AuthFlowTest, FirstStartLogInRefusalAndAuditTrail) {
     // The engineer may; the change is in the audit trail with who, old and new.
     session.logOut();
     {
-        LoginDialog login(users(), session, false);
+        LoginDialog login(users(), session, LoginDialog::Leave::Never);
         login.userCombo()->setCurrentIndex(login.userCombo()->findText(QStringLiteral("Olga")));
         typeOnKeypad(login, QStringLiteral("2580"));
         ASSERT_TRUE(login.attempt()) << login.messageText().toStdString();
@@ -217,7 +217,7 @@ TEST_P(AuthFlowTest, FirstStartLogInRefusalAndAuditTrail) {
 
 TEST_P(AuthFlowTest, LockOutAfterFiveFailuresAndReleaseAfterFiveMinutes) {
     users().createFirstAdministrator(QStringLiteral("Anna"), "correct horse", core::auth::SecretKind::Password);
-    LoginDialog login(users(), session, true);
+    LoginDialog login(users(), session, LoginDialog::Leave::Quit);
     login.setClock([this] { return nowS; });
     login.show();
     // The default rules: 5 failed log-ins lock for 300 s (storage::LoginPolicy).

@@ -195,9 +195,11 @@ TEST_F(SecurityGatesTest, KioskQuitByAnOperatorAsksForAnEngineerAndAWrongPasswor
     window->show();
     window->setKiosk(true);
 
-    // A wrong password: refused with the attempts left, then Cancel: the terminal keeps running.
+    // A wrong password: refused with the attempts left, then Cancel (not "Quit": leaving this log-in goes
+    // back to the terminal): the terminal keeps running.
     bool seen = false;
     QString message;
+    QString leaveText;
     whenLogInShows(
         window.get(),
         [&](LoginDialog& d) {
@@ -205,11 +207,16 @@ TEST_F(SecurityGatesTest, KioskQuitByAnOperatorAsksForAnEngineerAndAWrongPasswor
             d.secretEdit()->setText(QStringLiteral("not the secret"));
             EXPECT_FALSE(d.attempt());
             message = d.messageText();
-            d.reject();
+            auto* leave = d.findChild<QPushButton*>(QStringLiteral("leaveButton"));
+            ASSERT_NE(leave, nullptr);
+            leaveText = leave->text();
+            EXPECT_TRUE(test::saveScreenshot(d, QStringLiteral("kiosk_engineer_log_in")));
+            leave->click();
         },
         seen);
     EXPECT_FALSE(window->close());
     EXPECT_TRUE(seen) << "the log-in was asked for";
+    EXPECT_EQ(leaveText, QStringLiteral("Cancel"));
     EXPECT_TRUE(window->isVisible());
     EXPECT_TRUE(message.contains(QStringLiteral("Wrong name or password"))) << message.toStdString();
     ASSERT_TRUE(session.identity());
