@@ -26,7 +26,7 @@ ShaftMachineOffer linuxCncLatheOffer(const QVariantMap& settings, const QString&
         "LinuxCNC machines every part; the simulated shaft's physics is applied to the path LinuxCNC executed and "
         "the simulated micrometer measures it; TrueTurn writes the corrections into LinuxCNC between parts.");
     offer.adjustableSpeed = false;
-    offer.make = [options](const core::ShaftScenario& scenario, std::uint64_t seed, double) {
+    offer.make = [options](const core::ShaftScenario& scenario, std::uint64_t seed) {
         return std::make_unique<LinuxCncLathe>(scenario, seed, options);
     };
     return offer;
