@@ -17,6 +17,7 @@
 #include "app/cli/command_database.h"
 #include "app/cli/command_parser.h"
 #include "app/cli/run_interrupt.h"
+#include "app/cli/simulate_adaptation.h"
 #include "app/cli/simulate_checks.h"
 #include "config/json_eigen.h"
 #include "config/loop_scenario.h"
@@ -174,8 +175,7 @@ void printText(const QString& preset, const core::LatheStudyResult& r, std::uint
 
 // ---- plant mismatch, integral action, mismatch monitor (options and output) ------------------------------
 
-/// --plant-gain, --plant-delay, --step-at, --step-mm, --step-point, --integral, --integral-weight,
-/// --mismatch-action.
+/// --plant-gain, --plant-delay, --step-at, --step-mm, --step-point, --integral, --integral-weight.
 void addRobustOptions(CommandParser& parser) {
     parser.addOption(QStringLiteral("plant-gain"),
                      QStringLiteral("The simulated plant's gain as a multiple of the model's k_i, 0.1..10 (default 1; "
@@ -205,18 +205,14 @@ void addRobustOptions(CommandParser& parser) {
                      QStringLiteral("Double EWMA: the drift weight lambda2 in (0, 1) (default 0.1; the offset's "
                                     "weight is --ewma-weight)."),
                      QStringLiteral("w"));
-    parser.addOption(QStringLiteral("mismatch-action"),
-                     QStringLiteral("When the plant no longer matches the model: hold (the CNC keeps the last "
-                                    "correction) or alarm (alarm only); default: the preset's, hold."),
-                     QStringLiteral("hold|alarm"));
 }
 
 /// The robustness options given on the command line (a resumed run keeps its own settings).
 bool robustOptionsSet(const CommandParser& parser) {
     for (const char* option : {"plant-gain", "plant-delay", "step-at", "step-mm", "step-point", "integral",
-                               "integral-weight", "mismatch-action", "drift-weight"})
+                               "integral-weight", "drift-weight"})
         if (parser.isSet(QString::fromLatin1(option))) return true;
-    return false;
+    return adaptationOptionsSet(parser);
 }
 
 /// Applies the robustness options to the scenario; throws UsageError naming the option.
@@ -257,10 +253,7 @@ void applyRobustOptions(const CommandParser& parser, config::LoopScenario& scena
         scenario.control.ewma.driftWeight = parser.number(QStringLiteral("drift-weight"), 0.0, 0.999);
         if (scenario.control.ewma.driftWeight <= 0.0) throw UsageError("--drift-weight: must be in (0, 1)");
     }
-    if (parser.isSet(QStringLiteral("mismatch-action")))
-        scenario.mismatchMonitor.action = core::mismatchActionFromName(
-            parser.choice(QStringLiteral("mismatch-action"), {QStringLiteral("hold"), QStringLiteral("alarm")})
-                .toStdString());
+    applyAdaptationOptions(parser, scenario);
     try {
         m.validate(scenario.delay(), scenario.control.plant.points.size());
         if (scenario.lathe && (m.gainFactor != 1.0 || (m.step && m.step->point)))
@@ -382,6 +375,7 @@ int run(const QStringList& arguments) {
                                     "(1: the lathe's own pace; 360: a 6-minute part per second)."),
                      QStringLiteral("x"), QStringLiteral("0"));
     addRobustOptions(parser);
+    addAdaptationOptions(parser);
     parser.parse(splitResumeRun(arguments));
 
     const bool resume = parser.isSet(QStringLiteral("resume"));
@@ -483,10 +477,12 @@ int run(const QStringList& arguments) {
     if (parser.json()) {
         QJsonObject out = toJson(result, parser.isSet(QStringLiteral("profile")), database);
         addRobustJson(out, result, scenario);
+        addAdaptationJson(out, result, scenario);
         printJson(out);
     } else {
         printText(choice.preset, result, choice.seed, parser.isSet(QStringLiteral("profile")));
         printRobustText(result);
+        printAdaptationText(result);
     }
     return kExitOk;
 }

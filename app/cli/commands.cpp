@@ -17,6 +17,7 @@ Command makeCornerCommand();
 Command makeReportCommand();
 Command makeGenerateHistoryCommand();
 Command makeIdentifyCommand();
+Command makeTuneCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -34,6 +35,7 @@ const std::vector<Command>& commands() {
         makeReportCommand(),
         makeGenerateHistoryCommand(),
         makeIdentifyCommand(),
+        makeTuneCommand(),
     };
     return all;
 }

@@ -136,10 +136,14 @@ QString faultText(const core::Notice& n) {
         case K::ModelMismatch: {
             const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
                                                     : QCoreApplication::translate("Notice", "variance");
-            const QString then = n.cause == "hold"
-                                     ? QCoreApplication::translate(
-                                           "Notice", "The CNC keeps the last correction until the run is restarted")
-                                     : QCoreApplication::translate("Notice", "The controller goes on");
+            const QString then =
+                n.cause == "hold"
+                    ? QCoreApplication::translate("Notice",
+                                                  "The CNC keeps the last correction until the run is restarted")
+                : n.cause == "adapt" || n.cause == "propose"
+                    ? QCoreApplication::translate("Notice",
+                                                  "The loop switches to its robust fallback and identifies the plant")
+                    : QCoreApplication::translate("Notice", "The controller goes on");
             return QCoreApplication::translate("Notice",
                                                "The plant no longer matches the controller's model (part %1, point "
                                                "%2): the %3 test of the innovations over %4 parts is %5, above its "
@@ -152,6 +156,43 @@ QString faultText(const core::Notice& n) {
                 .arg(n.limit, 0, 'g', 3)
                 .arg(then);
         }
+        case K::FallbackEngaged:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "From part %1 the loop corrects with its robust fallback (EWMA, weight %2: stable for plant "
+                       "gains 0.5 to 2 times the model's and one more part of delay) while it identifies the plant")
+                .arg(n.part)
+                .arg(n.value, 0, 'f', 2);
+        case K::IdentificationWaiting:
+            return QCoreApplication::translate("Notice", "Part %1: the plant cannot be identified yet: %2")
+                .arg(n.part)
+                .arg(cause(n));
+        case K::ControllerAdapted:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "From part %1 the loop corrects with an LQG designed for the plant identified from %2 (plant "
+                       "delay %3 parts, smallest gain margin %4); the mismatch monitor restarts on that model")
+                .arg(n.part)
+                .arg(cause(n))
+                .arg(n.value, 0, 'f', 0)
+                .arg(n.reference, 0, 'g', 3);
+        case K::AdaptationProposed:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Part %1: an LQG for the plant identified from %2 (plant delay %3 parts) is proposed; the "
+                       "fallback goes on until an engineer applies it on the Controller page")
+                .arg(n.part)
+                .arg(cause(n))
+                .arg(n.value, 0, 'f', 0);
+        case K::AdaptationRefused:
+            return QCoreApplication::translate(
+                       "Notice", "Part %1: the design for the identified plant is not applied: %2; the fallback goes on")
+                .arg(n.part)
+                .arg(cause(n));
+        case K::ProposalAccepted:
+            return QCoreApplication::translate("Notice",
+                                               "From part %1 the loop corrects with the proposed LQG an engineer applied")
+                .arg(n.part);
         default:
             return {};
     }
