@@ -15,6 +15,7 @@
 #include "app/cli/command_parser.h"
 #include "app/cli/run_history.h"
 #include "app/cli/run_interrupt.h"
+#include "app/cli/simulate_adaptation.h"
 #include "app/cli/simulate_checks.h"
 #include "app/cli/simulate_output.h"
 #include "app/cli/simulate_request.h"
@@ -155,10 +156,12 @@ int runStudy(const CommandParser& parser, const Invocation& run, RunHistory* his
     if (history) history->finish();
     if (parser.json()) {
         QJsonObject out = simulateJson(*study, scenario, profile, database);
+        addAdaptationJson(out, *study, scenario);
         if (history) history->addJson(out);
         printJson(out);
     } else {
         printSimulateText(run.request.preset, *study, run.request.seed, profile);
+        printAdaptationText(*study);
     }
     return kExitOk;
 }
