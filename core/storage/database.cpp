@@ -10,6 +10,8 @@
 #include <QStringList>
 #include <QUrl>
 #include <QUuid>
+#include <chrono>
+#include <thread>
 
 namespace tt::storage {
 
@@ -32,6 +34,18 @@ QString sqlError(const QSqlError& error, const QString& sqlitePath = QString()) 
         .arg(kSqliteBusyTimeoutMs / 1000)
         .arg(holder.empty() ? QStringLiteral("its process could not be found out")
                             : QStringLiteral("held by %1").arg(QString::fromStdString(holder)));
+}
+
+/// Runs `statement`, trying again while SQLite reports the file busy, up to the busy timeout. Switching a new file to
+/// WAL takes an exclusive lock, and SQLite answers "database is locked" at once, without its busy handler, when two
+/// processes open the same new file together (each holds the shared lock the other needs to give up).
+bool execWaitingForLocks(QSqlQuery& query, const QString& statement) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(kSqliteBusyTimeoutMs);
+    while (!query.exec(statement)) {
+        if (!isBusy(query.lastError()) || std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
 }
 
 }  // namespace
@@ -142,7 +156,7 @@ void Database::configureSqlite() {
                                      : QStringLiteral("PRAGMA synchronous=NORMAL"));
     for (const QString& pragma : pragmas) {
         QSqlQuery q(connection());
-        if (!q.exec(pragma))
+        if (!execWaitingForLocks(q, pragma))
             throw StorageError("cannot configure the history file: " +
                                sqlError(q.lastError(), m_config.sqlitePath).toStdString());
     }

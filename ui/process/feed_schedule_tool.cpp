@@ -256,7 +256,7 @@ void FeedScheduleTool::buildLayout() {
 
     auto* leftPanel = new QWidget(this);
     leftPanel->setLayout(left);
-    leftPanel->setFixedWidth(456);  // the paired spin boxes keep their digits in Russian
+    leftPanel->setFixedWidth(480);  // the paired spin boxes keep their digits in Russian
     auto* root = new QHBoxLayout(this);
     root->setContentsMargins(6, 6, 6, 6);
     root->addWidget(leftPanel);
@@ -274,7 +274,11 @@ void FeedScheduleTool::configureBoxes() {
     setBox(m_zEnd, -10000.0, 10000.0, 1, 5.0, QString());
     for (QDoubleSpinBox* paired : {m_feedMin, m_feedMax, m_zStart, m_zEnd})
         paired->setMinimumWidth(110);
-    m_feedStep->setMinimumWidth(96);
+    m_feedStep->setMinimumWidth(112);
+    // The switch rule shares the feed step's row: it yields its width to the label and the step (its full name is
+    // in the list and the tool tip).
+    m_switch->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_switch->setMinimumContentsLength(6);
     setBox(m_minLength, 0.0, 1000.0, 1, 1.0, QString());
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::Fanuc));
     m_dialect->addItem(QString(), static_cast<int>(devices::GCodeDialect::LinuxCnc));

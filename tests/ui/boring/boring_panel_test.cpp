@@ -214,7 +214,7 @@ TEST_F(BoringPanelTest, ADitherWindowTooShortForThePlcCycleIsRefusedInPlainWords
 TEST_F(BoringPanelTest, ASourceWithoutAPassOfItsOwnNeedsAToolAndACncOutput) {
     // A Modbus drive read-out (a plugin: no simulated pass of its own) offers neither the station's
     // PLC nor its bar.
-    ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 4) << manager.pluginErrors().join(QLatin1Char('\n')).toStdString();
+    ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 5) << manager.pluginErrors().join(QLatin1Char('\n')).toStdString();
     const QString drive =
         manager.addDevice(QStringLiteral("modbus"), devices::DeviceKind::DriveCurrent, QStringLiteral("Drive"), {});
     BoringPanel panel(context);

@@ -165,7 +165,7 @@ TEST_F(CalibrationDevicesTest, KpWizardMeasuresThroughTheSimulatorPluginsDriveRe
 }
 
 TEST_F(CalibrationDevicesTest, ProbeWizardCalibratesAndUploadsASixteenBitTableToTheMandrelOnAPty) {
-    ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 4) << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
+    ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 5) << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
     devices::test::MandrelOnPty end(QStringLiteral("ttyMANDREL"));
     double jackMm = 0.0;  // the bar is loaded on the stand; the dial indicator reads it
     end.mandrel.setDeflectionSource([&jackMm](double) { return std::array<double, 2>{jackMm, 0.0}; });

@@ -35,7 +35,7 @@ class DevicesPageTest : public ::testing::Test {
 protected:
     void SetUp() override {
         QSettings().clear();
-        ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 4)
+        ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 5)
             << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
         context.devices = &manager;
     }

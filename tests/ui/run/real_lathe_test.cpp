@@ -104,7 +104,7 @@ class RealLatheTest : public ::testing::Test {
 protected:
     void SetUp() override {
         QSettings().clear();
-        ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 4)
+        ASSERT_EQ(manager.loadPlugins(kBuildPlugins), 5)
             << manager.pluginErrors().join(QStringLiteral("; ")).toStdString();
         ASSERT_TRUE(QDir().mkpath(dncFolder()));
         micrometer.setSource([] { return kNominalMm; });
