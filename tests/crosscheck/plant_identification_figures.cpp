@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/control/plant_identification.h"
-#include "tests/core/adaptive/closed_loop_record.h"
+#include "tests/core/support/closed_loop_record.h"
 
 namespace {
 

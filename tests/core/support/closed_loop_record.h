@@ -7,7 +7,7 @@
 
 #include "core/control/plant_identification.h"
 #include "core/control/run_to_run_setup.h"
-#include "tests/core/lqg/lqg_test_support.h"
+#include "tests/core/support/lqg_test_support.h"
 
 namespace tt::core::test {
 

@@ -10,8 +10,8 @@
 #include "core/run/shaft_run.h"
 #include "core/run/shaft_run_builder.h"
 #include "core/run/simulated_lathe.h"
-#include "tests/core/lqg/lqg_test_support.h"
-#include "tests/core/loop/loop_test_support.h"
+#include "tests/core/support/lqg_test_support.h"
+#include "tests/core/support/loop_test_support.h"
 
 namespace tt::core {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "core/control/adaptive_design.h"
 #include "core/control/lagged_controller.h"
-#include "tests/core/adaptive/closed_loop_record.h"
+#include "tests/core/support/closed_loop_record.h"
 
 namespace tt::core {
 namespace {
