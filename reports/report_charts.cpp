@@ -280,7 +280,7 @@ QString ReportCharts::pointTitle(const runtime::PointReport& point) {
 
 QString ReportCharts::chartDescription(const runtime::PointReport& point) {
     const core::ChartLimits& l = point.analysis.chart.limits;
-    const QString kind = QString::fromStdString(chartKindName(l.kind));
+    const QString kind = QString::fromStdString(runtime::chartKindName(l.kind));
     if (l.kind == core::ChartKind::IndividualsMovingRange)
         return tr("%1 chart, limits from %n parts", nullptr, static_cast<int>(l.baselinePointCount)).arg(kind);
     return tr("%1 chart of subgroups of %2, limits from %n subgroups", nullptr, static_cast<int>(l.baselinePointCount))
