@@ -184,6 +184,8 @@ QString correctionText(const core::Notice& n) {
                 .arg(n.part)
                 .arg(n.point)
                 .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
+        case K::ModelMismatch:
+            return mismatchText(n);
         case K::FallbackEngaged:
         case K::IdentificationWaiting:
         case K::ControllerAdapted:
