@@ -18,7 +18,7 @@
 #include <random>
 #include <vector>
 
-#include "../../storage/plant/journal_support.h"
+#include "tests/core/storage/journal_support.h"
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "tests/support/own_postgres.h"

@@ -8,7 +8,7 @@
 #include <QJsonObject>
 #include <QSqlQuery>
 
-#include "../../storage/scratch_database.h"
+#include "tests/core/storage/scratch_database.h"
 #include "../cli_runner.h"
 #include "core/storage/history_store.h"
 

@@ -16,7 +16,7 @@
 #include "core/storage/database.h"
 #include "core/storage/history_store.h"
 #include "core/storage/synthetic_history.h"
-#include "devices/api/device_manager.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "ui/app_state.h"
@@ -76,7 +76,7 @@ protected:
     test::ScriptedPrompt prompt;
     AppState state;
     LanguageSwitcher language;
-    devices::DeviceManager devices;
+    runtime::DeviceHub devices;
     AppContext context{&prompt, &state, &language, dir.filePath(QStringLiteral("plant.sqlite")), &devices};
 };
 
