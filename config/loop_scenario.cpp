@@ -138,6 +138,7 @@ LoopScenario read(const QString& name, const QJsonObject& preset, std::optional<
     s.control.integral = integralActionFromPreset(s.json);
     s.plantMismatch = plantMismatchFromPreset(s.json);
     s.mismatchMonitor = mismatchMonitorFromPreset(s.json);
+    s.adaptation = adaptationFromPreset(s.json);
     for (const core::ControlPointSpec& p : s.control.plant.points)
         if (p.xMm < 0.0 || p.xMm > s.partLengthMm)
             throw std::invalid_argument("plant: control point x = " + std::to_string(p.xMm) +

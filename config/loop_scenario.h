@@ -22,8 +22,9 @@ namespace tt::config {
 ///            "pause_on_scrap": false}
 ///   "tolerance" entries may name their own "nominal_mm" (default: the loop's); without "tolerance" the
 ///   verdicts use nominal ± tolerance_mm at every point.
-///   "loop": {"mismatch_monitor": {...}}, "controller": {"integral": {...}} and "plant_mismatch" (the
-///   simulated plant only): config/robust_config.h.
+///   "loop": {"mismatch_monitor": {...}, "adaptation": {...}}, "controller": {"integral": {...}} and
+///   "plant_mismatch" (the simulated plant only): config/robust_config.h; "controller_model" (the controller's
+///   identified model, `trueturn tune`): config/controller_model_config.h.
 struct LoopScenario : core::ShaftScenario {
     QString preset;    ///< name or path it was loaded from
     QJsonObject json;  ///< the preset merged over its based_on chain: what runs (`simulate --dump-preset`)

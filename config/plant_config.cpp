@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+#include "config/controller_model_config.h"
 #include "config/json_eigen.h"
 #include "config/preset_library.h"
 
@@ -272,6 +273,7 @@ core::RunToRunSetup runToRunSetupFromPreset(const QJsonObject& preset, std::opti
     core::RunToRunSetup setup;
     setup.plant = plantAt(preset.value("plant").toObject(), delay);
     controllerAt(preset.value("controller").toObject(), setup);
+    setup.model = controllerModelFromPreset(preset, setup.plant.points.size(), setup.plant.delay);
     at("controller", [&] {
         setup.limits.validate();
         setup.lqg.validate();

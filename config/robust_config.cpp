@@ -45,7 +45,32 @@ core::MismatchMonitorConfig mismatchMonitorFromPreset(const QJsonObject& preset)
     c.minParts = s.integer(QStringLiteral("min_parts"), c.minParts, 5, 1000);
     c.falseAlarmProbability = s.number(QStringLiteral("false_alarm_probability"), c.falseAlarmProbability, 1e-12, 1e-2);
     try {
-        c.action = core::mismatchActionFromName(s.text(QStringLiteral("action"), "hold"));
+        c.action = core::mismatchActionFromName(s.text(QStringLiteral("action"), "adapt"));
+        c.validate();
+    } catch (const std::invalid_argument& e) {
+        s.fail(QString(), e.what());
+    }
+    return c;
+}
+
+core::AdaptationConfig adaptationFromPreset(const QJsonObject& preset) {
+    core::AdaptationConfig c;
+    const QJsonObject loop = preset.value(QStringLiteral("loop")).toObject();
+    if (!loop.contains(QStringLiteral("adaptation"))) return c;
+    const JsonSection s(loop, QStringLiteral("adaptation"), QStringLiteral("loop"));
+    c.windowParts = s.integer(QStringLiteral("window_parts"), c.windowParts, 200, 100000);
+    c.retryParts = s.integer(QStringLiteral("retry_parts"), c.retryParts, 1, 10000);
+    c.transferParts = s.integer(QStringLiteral("transfer_parts"), c.transferParts, 1, 1000);
+    c.ditherShare = s.number(QStringLiteral("dither_share"), c.ditherShare, 0.0, core::kMaxDitherShare);
+    c.maxExtraLag = s.integer(QStringLiteral("max_extra_lag"), c.maxExtraLag, 0, 4);
+    c.maxArmaOrder = s.integer(QStringLiteral("max_arma_order"), c.maxArmaOrder, 0, core::kMaxArmaOrder);
+    c.maxGainRelativeStdErr = s.number(QStringLiteral("max_gain_std_error"), c.maxGainRelativeStdErr, 1e-4, 1.0);
+    c.minDelayEvidence = s.number(QStringLiteral("min_delay_evidence"), c.minDelayEvidence, 0.0, 1e6);
+    c.minParts = s.integer(QStringLiteral("min_parts"), c.minParts, 70, 100000);
+    c.refineBelow = s.number(QStringLiteral("refine_below"), c.refineBelow, 0.0, 1.0);
+    c.refineParts = s.integer(QStringLiteral("refine_parts"), c.refineParts, 10, 100000);
+    try {
+        c.criterion = core::informationCriterionFromName(s.text(QStringLiteral("criterion"), "bic"));
         c.validate();
     } catch (const std::invalid_argument& e) {
         s.fail(QString(), e.what());

@@ -3,6 +3,7 @@
 #include <QJsonObject>
 
 #include "core/control/integral_action.h"
+#include "core/loop/adaptation_config.h"
 #include "core/loop/mismatch_monitor.h"
 #include "core/sim/shaft/plant_mismatch.h"
 
@@ -17,7 +18,13 @@ core::PlantMismatch plantMismatchFromPreset(const QJsonObject& preset);
 core::IntegralAction integralActionFromPreset(const QJsonObject& preset);
 
 /// "loop": {"mismatch_monitor": {"enabled": true, "window_parts": 50, "min_parts": 10,
-///          "false_alarm_probability": 1e-6, "action": "hold" | "alarm"}}.
+///          "false_alarm_probability": 1e-6, "action": "adapt" | "propose" | "hold" | "alarm"}}.
 core::MismatchMonitorConfig mismatchMonitorFromPreset(const QJsonObject& preset);
+
+/// "loop": {"adaptation": {"window_parts": 1000, "retry_parts": 25, "transfer_parts": 10, "dither_share": 0,
+///          "max_extra_lag": 2, "max_arma_order": 2, "criterion": "bic" | "aic", "max_gain_std_error": 0.25,
+///          "min_delay_evidence": 10, "min_parts": 150, "refine_below": 0.05, "refine_parts": 200}}
+///          (core/loop/adaptation_config.h).
+core::AdaptationConfig adaptationFromPreset(const QJsonObject& preset);
 
 }  // namespace tt::config

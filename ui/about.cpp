@@ -22,6 +22,7 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "The Controller page: tuning with live predictions and margins"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Integral action, double EWMA and model-mismatch detection"),
     QT_TRANSLATE_NOOP("tt::ui::About", "ARMA identification of the disturbance from the history"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Adaptive control: a robust fallback and a new design on a mismatch"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles, log-in and the audit trail"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode and an on-screen keypad"),
     QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, CLI and resume"),
@@ -33,7 +34,7 @@ constexpr const char* kImplemented[] = {
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
-    QT_TRANSLATE_NOOP("tt::ui::About", "Falling back to a safe controller on a model mismatch (it holds)"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The adaptations on the Run page and the Reports page's chart"),
 };
 
 template <std::size_t N>

@@ -16,6 +16,7 @@
 #include "app/cli/command_parser.h"
 #include "app/cli/run_history.h"
 #include "app/cli/run_interrupt.h"
+#include "app/cli/simulate_adaptation.h"
 #include "app/cli/simulate_checks.h"
 #include "app/cli/simulate_cnc.h"
 #include "app/cli/simulate_output.h"
@@ -165,12 +166,14 @@ int runStudy(const CommandParser& parser, const Invocation& run, RunHistory* his
     if (history) history->finish();
     if (parser.json()) {
         QJsonObject out = simulateJson(*study, scenario, profile, database);
+        addAdaptationJson(out, *study, scenario);
         if (history) history->addJson(out);
         if (!run.request.cnc.isEmpty()) addCncJson(out, cnc);
         printJson(out);
     } else {
         printSimulateText(run.request.preset, *study, run.request.seed, profile);
         if (!run.request.cnc.isEmpty()) printCncText(run.request.cnc, cnc);
+        printAdaptationText(*study);
     }
     return kExitOk;
 }

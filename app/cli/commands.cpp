@@ -21,6 +21,7 @@ Command makeAuditCommand();
 Command makeCncProgramCommand();
 Command makePlantCommand();
 Command makeForwardCommand();
+Command makeTuneCommand();
 
 const std::vector<Command>& commands() {
     static const std::vector<Command> all = {
@@ -42,6 +43,7 @@ const std::vector<Command>& commands() {
         makeCncProgramCommand(),
         makePlantCommand(),
         makeForwardCommand(),
+        makeTuneCommand(),
     };
     return all;
 }

@@ -7,6 +7,7 @@
 #include "app/cli/simulate_cnc.h"
 #include "core/control/integral_action.h"
 #include "core/control/run_to_run_plant.h"
+#include "core/loop/adaptation_config.h"
 #include "core/run/run_limits.h"
 #include "core/sim/shaft/plant_mismatch.h"
 
@@ -27,6 +28,7 @@ const QHash<QString, QString>& optionOfField() {
         {QStringLiteral("drift_weight"), QStringLiteral("--drift-weight")},
         {QStringLiteral("integral.weight"), QStringLiteral("--integral-weight")},
         {QStringLiteral("mismatch_action"), QStringLiteral("--mismatch-action")},
+        {QStringLiteral("dither_share"), QStringLiteral("--dither-share")},
         {QStringLiteral("plant_mismatch.gain_factor"), QStringLiteral("--plant-gain")},
         {QStringLiteral("plant_mismatch.delay"), QStringLiteral("--plant-delay")},
         {QStringLiteral("plant_mismatch.step.at_part"), QStringLiteral("--step-at")},
@@ -75,9 +77,16 @@ void addControlOptions(CommandParser& parser) {
                                     "weight is --ewma-weight)."),
                      QStringLiteral("w"));
     parser.addOption(QStringLiteral("mismatch-action"),
-                     QStringLiteral("When the plant no longer matches the model: hold (the CNC keeps the last "
-                                    "correction) or alarm (alarm only); default: the preset's, hold."),
-                     QStringLiteral("hold|alarm"));
+                     QStringLiteral("When the plant no longer matches the model: adapt (switch to a robust fallback, "
+                                    "identify the plant and apply a design whose margins hold), propose (the same, but "
+                                    "the design waits for an engineer), hold (the CNC keeps the last correction) or "
+                                    "alarm (alarm only); default: the preset's, adapt."),
+                     QStringLiteral("adapt|propose|hold|alarm"));
+    parser.addOption(QStringLiteral("dither-share"),
+                     QStringLiteral("A dither on the correction while the loop identifies the plant: the diameter "
+                                    "moves by +- this share of the tolerance zone, 0..0.5 (default: the preset's, 0: "
+                                    "off)."),
+                     QStringLiteral("s"));
 }
 
 void addSetupOptions(CommandParser& parser) {
@@ -164,8 +173,12 @@ void readControl(const CommandParser& parser, runtime::RunRequest& q) {
     }
     if (parser.isSet(QStringLiteral("mismatch-action")))
         q.mismatchAction =
-            parser.choice(QStringLiteral("mismatch-action"), {QStringLiteral("hold"), QStringLiteral("alarm")})
+            parser
+                .choice(QStringLiteral("mismatch-action"), {QStringLiteral("adapt"), QStringLiteral("propose"),
+                                                            QStringLiteral("hold"), QStringLiteral("alarm")})
                 .toStdString();
+    if (parser.isSet(QStringLiteral("dither-share")))
+        q.ditherShare = parser.number(QStringLiteral("dither-share"), 0.0, core::kMaxDitherShare);
 }
 
 }  // namespace
@@ -180,7 +193,7 @@ void addRunRequestOptions(CommandParser& parser) {
 std::optional<QString> runOptionGiven(const CommandParser& parser) {
     for (const char* option : {"preset", "delay", "parts", "warmup", "seed", "controller", "ewma-weight", "plant-gain",
                                "plant-delay", "step-at", "step-mm", "step-point", "integral", "integral-weight",
-                               "mismatch-action", "drift-weight", "cnc", "cnc-mode", "cnc-program-folder"})
+                               "mismatch-action", "dither-share", "drift-weight", "cnc", "cnc-mode", "cnc-program-folder"})
         if (parser.isSet(QString::fromLatin1(option))) return QStringLiteral("--") + QString::fromLatin1(option);
     return std::nullopt;
 }

@@ -2,6 +2,8 @@
 
 #include "core/common/text_format.h"
 
+#include <cmath>
+
 namespace tt::core {
 
 namespace {
@@ -99,8 +101,33 @@ std::string alarmText(const Notice& n) {
                    std::to_string(n.point) + "): the " + (n.reference == 1.0 ? "correlation" : "variance") +
                    " test of the innovations over " + std::to_string(n.otherPart) + " parts is " +
                    formatSignificant(n.value, 3) + ", above its limit " + formatSignificant(n.limit, 3) +
-                   (n.cause == "hold" ? "; the CNC keeps the last correction until the run is restarted"
-                                      : "; the controller goes on");
+                   (n.cause == "hold"      ? "; the CNC keeps the last correction until the run is restarted"
+                    : n.cause == "adapt"   ? "; the loop switches to its robust fallback and identifies the plant"
+                    : n.cause == "propose" ? "; the loop switches to its robust fallback, identifies the plant and "
+                                             "proposes a new design"
+                                           : "; the controller goes on");
+        case NoticeKind::FallbackEngaged:
+            return "from " + partText(n.part) + " the loop corrects with its robust fallback (EWMA, weight " +
+                   formatSignificant(n.value, 2) +
+                   ": stable for plant gains 0.5 .. 2 times the model's and one more part of delay) while it "
+                   "identifies the plant";
+        case NoticeKind::IdentificationWaiting:
+            return partText(n.part) + ": the plant cannot be identified yet: " + n.cause;
+        case NoticeKind::ControllerAdapted:
+            return "from " + partText(n.part) + " the loop corrects with an LQG designed for the plant identified from " +
+                   n.cause + " (plant delay " + formatSignificant(n.value, 2) + " parts, smallest gain margin " +
+                   (std::isfinite(n.reference) ? formatSignificant(n.reference, 3) : std::string("unlimited")) +
+                   "); the mismatch monitor restarts on that model";
+        case NoticeKind::AdaptationProposed:
+            return partText(n.part) + ": an LQG for the plant identified from " + n.cause + " (plant delay " +
+                   formatSignificant(n.value, 2) + " parts, smallest gain margin " +
+                   (std::isfinite(n.reference) ? formatSignificant(n.reference, 3) : std::string("unlimited")) +
+                   ") is proposed; the fallback goes on until an engineer applies it on the Controller page";
+        case NoticeKind::AdaptationRefused:
+            return partText(n.part) + ": the design for the identified plant is not applied: " + n.cause +
+                   "; the fallback goes on";
+        case NoticeKind::ProposalAccepted:
+            return "from " + partText(n.part) + " the loop corrects with the proposed LQG an engineer applied";
         default:
             return {};
     }
@@ -191,9 +218,15 @@ constexpr const char* kKindNames[] = {"none",
                                       "out-of-tolerance-scrap",
                                       "paused-on-scrap",
                                       "model-mismatch",
-                                      "history-full"};
+                                      "history-full",
+                                      "fallback-engaged",
+                                      "identification-waiting",
+                                      "controller-adapted",
+                                      "adaptation-proposed",
+                                      "adaptation-refused",
+                                      "proposal-accepted"};
 constexpr std::size_t kKinds = sizeof kKindNames / sizeof kKindNames[0];
-static_assert(kKinds == static_cast<std::size_t>(NoticeKind::HistoryFull) + 1, "one name per kind");
+static_assert(kKinds == static_cast<std::size_t>(NoticeKind::ProposalAccepted) + 1, "one name per kind");
 
 }  // namespace
 

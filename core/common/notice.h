@@ -61,13 +61,20 @@ enum class NoticeKind {
     // ---- the controller's model ----
     /// part, point (the one contributing most), value: test statistic, limit: its limit, otherPart: parts
     /// in the window, reference: 1 = the correlation test, 0 = the variance test; cause: "hold" when the
-    /// CNC now keeps the last correction
+    /// CNC now keeps the last correction; "adapt" / "propose" when the loop switches to its fallback and identifies
     ModelMismatch,
     // ---- the history ----
     /// The history store takes no new part (a terminal's journal at its size limit while the plant database
     /// is unreachable): value: bytes used, limit: the limit in bytes, cause: the store's words. The loop pauses
     /// before the next part and goes on by itself once the store takes parts again.
     HistoryFull,
+    // ---- the adaptive loop (after the model mismatch: the stored names and the order above never change) ----
+    FallbackEngaged,        ///< part: the fallback takes over here, otherPart: the alarm's part, value: its EWMA weight
+    IdentificationWaiting,  ///< part, value: parts more needed (NaN: more parts alone will not do), cause: why
+    ControllerAdapted,      ///< part: takes over here, value: plant delay, reference: smallest gain margin, cause: source
+    AdaptationProposed,     ///< part, value: plant delay, reference: smallest gain margin, cause: the data's source
+    AdaptationRefused,      ///< part, cause: why the new design is not applied (its margins)
+    ProposalAccepted,       ///< part: the proposed design takes over here
 };
 
 /// One notice with its data (which fields are set depends on the kind, see NoticeKind).

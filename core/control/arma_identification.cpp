@@ -30,8 +30,9 @@ bool rootsInside(const std::vector<double>& tail) {
     return true;
 }
 
-/// AR stable (z^p - a_1 z^(p-1) - ..) and MA invertible (z^q + b_1 z^(q-1) + ..).
-bool admissible(const Eigen::VectorXd& theta, int p, int q) {
+}  // namespace
+
+bool armaAdmissible(const Eigen::VectorXd& theta, int p, int q) {
     std::vector<double> ar(static_cast<std::size_t>(p)), ma(static_cast<std::size_t>(q));
     for (int i = 0; i < p; ++i)
         ar[static_cast<std::size_t>(i)] = -theta(i);
@@ -39,6 +40,8 @@ bool admissible(const Eigen::VectorXd& theta, int p, int q) {
         ma[static_cast<std::size_t>(j)] = theta(p + j);
     return theta.allFinite() && rootsInside(ar) && rootsInside(ma);
 }
+
+namespace {
 
 /// Conditional residuals e(t) and, when wanted, their Jacobian de/dtheta (rows t, columns a then b).
 double residuals(const std::vector<double>& y, const Eigen::VectorXd& theta, int p, int q, Eigen::VectorXd& e,
@@ -66,8 +69,9 @@ double residuals(const std::vector<double>& y, const Eigen::VectorXd& theta, int
     return e.squaredNorm();
 }
 
-/// Hannan-Rissanen start: innovations from a long AR, then y on its lags and the innovations' lags.
-Eigen::VectorXd initialEstimate(const std::vector<double>& y, int p, int q) {
+}  // namespace
+
+Eigen::VectorXd hannanRissanenStart(const std::vector<double>& y, int p, int q) {
     const auto n = static_cast<Eigen::Index>(y.size());
     Eigen::VectorXd theta = Eigen::VectorXd::Zero(p + q);
     if (p + q == 0) return theta;
@@ -95,11 +99,9 @@ Eigen::VectorXd initialEstimate(const std::vector<double>& y, int p, int q) {
             X(t - start, p + j - 1) = innovations(t - j);
     }
     theta = X.colPivHouseholderQr().solve(Y);
-    if (!admissible(theta, p, q)) theta.setZero();
+    if (!armaAdmissible(theta, p, q)) theta.setZero();
     return theta;
 }
-
-}  // namespace
 
 double ljungBoxStatistic(const std::vector<double>& residuals, int lags) {
     const std::size_t n = residuals.size();
@@ -140,7 +142,7 @@ ArmaFit fitArma(const std::vector<double>& values, ArmaOrders orders) {
     if (std::all_of(y.begin(), y.end(), [](double v) { return std::abs(v) < 1e-15; }))
         throw std::invalid_argument("the series is constant: there is no disturbance to identify");
 
-    Eigen::VectorXd theta = initialEstimate(y, p, q);
+    Eigen::VectorXd theta = hannanRissanenStart(y, p, q);
     Eigen::VectorXd e;
     Eigen::MatrixXd J;
     double cost = residuals(y, theta, p, q, e, &J);
@@ -151,7 +153,7 @@ ArmaFit fitArma(const std::vector<double>& values, ArmaOrders orders) {
         bool improved = false;
         for (int halving = 0; halving < 30; ++halving, scale *= 0.5) {
             const Eigen::VectorXd trial = theta + scale * step;
-            if (!admissible(trial, p, q)) continue;
+            if (!armaAdmissible(trial, p, q)) continue;
             Eigen::VectorXd eTrial;
             const double trialCost = residuals(y, trial, p, q, eTrial, nullptr);
             if (trialCost < cost) {

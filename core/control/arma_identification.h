@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/model/disturbance_model.h"
 
 namespace tt::core {
@@ -44,6 +46,14 @@ struct ArmaFit {
 /// h = min(20, n / 5) lags. Throws std::invalid_argument for orders out of range, fewer than 50 or more than
 /// 1e7 values, a non-finite value or a constant series.
 ArmaFit fitArma(const std::vector<double>& values, ArmaOrders orders);
+
+/// The parameters (a_1 .. a_p, b_1 .. b_q) describe a stable AR part (roots of z^p - a_1 z^(p-1) - .. inside
+/// 0.9999) and an invertible MA part (roots of z^q + b_1 z^(q-1) + .. inside 0.9999), all finite.
+bool armaAdmissible(const Eigen::VectorXd& theta, int p, int q);
+
+/// Hannan-Rissanen start of an ARMA(p, q) fit of a zero-mean series (Hannan & Rissanen 1982): innovations from a
+/// long AR by least squares, then y on its own lags and the innovations' lags; zeros when that is not admissible.
+Eigen::VectorXd hannanRissanenStart(const std::vector<double>& y, int p, int q);
 
 /// The Ljung-Box statistic Q = n (n + 2) sum_k r_k^2 / (n - k), k = 1 .. lags, of a series.
 double ljungBoxStatistic(const std::vector<double>& residuals, int lags);

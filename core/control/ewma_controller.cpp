@@ -109,6 +109,15 @@ Eigen::VectorXd EwmaController::nextCorrection(std::int64_t partNumber) {
     return m_lastApplied;
 }
 
+void EwmaController::correctionApplied(std::int64_t partNumber, const Eigen::VectorXd& appliedMm) {
+    if (!m_started || partNumber != m_lastPart || appliedMm.size() != m_gain.size() || !appliedMm.allFinite()) return;
+    const std::size_t m = static_cast<std::size_t>(m_gain.size());
+    const std::size_t s = slot(partNumber);
+    if (m_historyPart[s] == partNumber)
+        std::copy_n(appliedMm.data(), m, m_historyApplied.begin() + static_cast<std::ptrdiff_t>(s * m));
+    m_lastApplied = appliedMm;
+}
+
 std::uint16_t EwmaController::fingerprint() const {
     std::vector<double> config{m_options.weight,
                                m_options.deadBandMm,

@@ -47,6 +47,8 @@ public:
     int pointCount() const override { return static_cast<int>(m_gain.size()); }
     MeasurementVerdict addMeasurement(const PartMeasurement& measurement) override;
     Eigen::VectorXd nextCorrection(std::int64_t partNumber) override;
+    /// The part's measurement is then paired with `appliedMm`, and the next step limit starts from it.
+    void correctionApplied(std::int64_t partNumber, const Eigen::VectorXd& appliedMm) override;
     ControllerState saveState() const override;
     void restoreState(const ControllerState& state) override;
 

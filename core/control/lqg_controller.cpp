@@ -352,6 +352,23 @@ Eigen::VectorXd LqgController::nextCorrection(std::int64_t partNumber) {
     return m_lastApplied;
 }
 
+void LqgController::correctionApplied(std::int64_t partNumber, const Eigen::VectorXd& appliedMm) {
+    if (!m_started || partNumber != m_lastPart || appliedMm.size() != m_points || !appliedMm.allFinite()) return;
+    const Eigen::VectorXd change = appliedMm - m_lastApplied;
+    if (change.isZero(0.0)) return;
+    for (const Block& b : m_blocks) {
+        const Eigen::Index np = static_cast<Eigen::Index>(b.points.size());
+        PointVector du(np);
+        for (Eigen::Index j = 0; j < np; ++j)
+            du(j) = change(b.points[static_cast<std::size_t>(j)]);
+        m_prior.x.segment(b.offset, b.size).noalias() += b.B * du;
+    }
+    const std::size_t m = static_cast<std::size_t>(m_points);
+    const std::size_t hslot = historySlot(m_nextStep - 1);
+    std::copy_n(appliedMm.data(), m, m_historyApplied.begin() + static_cast<std::ptrdiff_t>(hslot * m));
+    m_lastApplied = appliedMm;
+}
+
 std::uint16_t LqgController::fingerprint() const {
     std::vector<double> config{static_cast<double>(m_points),
                                static_cast<double>(m_delay),

@@ -46,6 +46,9 @@ public:
     int pointCount() const override { return m_points; }
     MeasurementVerdict addMeasurement(const PartMeasurement& measurement) override;
     Eigen::VectorXd nextCorrection(std::int64_t partNumber) override;
+    /// Replaces u(k) of the last step in the estimate (the delay chain holds known inputs, so the change is
+    /// exact: x(k+1|k) moves by B du) and in the stored history.
+    void correctionApplied(std::int64_t partNumber, const Eigen::VectorXd& appliedMm) override;
     ControllerState saveState() const override;
     void restoreState(const ControllerState& state) override;
     std::optional<Innovation> lastInnovation() const override { return m_lastInnovation; }

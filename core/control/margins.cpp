@@ -356,3 +356,41 @@ std::vector<double> lqgSensitivityMagnitude(const RunToRunPlant& plant, const Lq
 }
 
 }  // namespace tt::core
+
+namespace tt::core {
+
+LoopController ewmaLoopController(const Eigen::VectorXd& gain, int delay, double weight) {
+    if (!(weight > 0.0 && weight <= 1.0)) throw std::invalid_argument("the EWMA weight must be in (0, 1]");
+    if (delay < 1 || delay > 2 * kMaxDelay)
+        throw std::invalid_argument("the EWMA's delay must be 1 .. " + std::to_string(2 * kMaxDelay) + " parts");
+    if (gain.size() < 1 || !gain.allFinite() || (gain.array() <= 0.0).any())
+        throw std::invalid_argument("the EWMA needs a positive gain at every point");
+    using Eigen::Index;
+    using Eigen::MatrixXd;
+    const Index m = gain.size();
+    const Index z = delay;
+    const Index nc = m * (1 + z);
+    const MatrixXd I = MatrixXd::Identity(m, m);
+    const MatrixXd G = gain.asDiagonal();
+    const MatrixXd Ginv = gain.cwiseInverse().asDiagonal();
+    LoopController c;
+    // u(k) = -G^-1 ((1 - lambda) offset(k-1) - lambda G u(k-z) + lambda y(k))
+    c.Cc = MatrixXd::Zero(m, nc);
+    c.Cc.block(0, 0, m, m) = -(1.0 - weight) * Ginv;
+    c.Cc.block(0, z * m, m, m) = weight * I;
+    c.Dc = -weight * Ginv;
+    c.Ac = MatrixXd::Zero(nc, nc);
+    c.Bc = MatrixXd::Zero(nc, m);
+    // offset(k) = (1 - lambda) offset(k-1) - lambda G u(k-z) + lambda y(k)
+    c.Ac.block(0, 0, m, m) = (1.0 - weight) * I;
+    c.Ac.block(0, z * m, m, m) = -weight * G;
+    c.Bc.block(0, 0, m, m) = weight * I;
+    // u(k) becomes the newest delayed input; the others shift by one.
+    c.Ac.block(m, 0, m, nc) = c.Cc;
+    c.Bc.block(m, 0, m, m) = c.Dc;
+    for (Index j = 2; j <= z; ++j)
+        c.Ac.block(j * m, (j - 1) * m, m, m) = I;
+    return c;
+}
+
+}  // namespace tt::core

@@ -73,6 +73,12 @@ LoopMargins lqgMargins(const RunToRunPlant& plant, const LqgDesign& design);
 /// Cc = -K(I - LC), Dc = -KL.
 LoopController lqgBlockController(const LqgBlock& block);
 
+/// The EWMA controller (weight lambda at every point, u = -offset / k_i) in loop form around y = diag(gain)
+/// z^-delay u: xi = [offset; u(k-1) .. u(k-delay)], offset(k) = (1 - lambda) offset(k-1) + lambda (y(k) - k_i
+/// u(k-delay)). Throws std::invalid_argument for a weight outside (0, 1], a delay outside 1 .. 2 kMaxDelay or a gain
+/// that is not positive.
+LoopController ewmaLoopController(const Eigen::VectorXd& gain, int delay, double weight);
+
 /// Sensitivity |S(e^jw)| of channel `channel` at the frequencies `wRadPerPart` (for plots).
 std::vector<double> sensitivityMagnitude(const Eigen::VectorXd& gain, int delay, const LoopController& controller,
                                          int channel, const std::vector<double>& wRadPerPart);

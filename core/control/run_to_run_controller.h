@@ -39,6 +39,11 @@ struct Innovation {
     std::int64_t partNumber = 0;
     Eigen::VectorXd valueMm;      ///< per point, mm
     Eigen::VectorXd varianceMm2;  ///< per point, mm^2 (> 0)
+    /// Correlation of the normalised innovations of the points at the same part as the model says (points x
+    /// points); empty: independent (the preset's model). An identified model has it from its prediction errors.
+    Eigen::MatrixXd correlation = {};
+    /// The model's actuation lag: the correction sent for part k acts on part k + lagParts (0: on part k).
+    int lagParts = 0;
 };
 
 /// A run-to-run (part-to-part) controller of the diameter profile at N control points
@@ -61,6 +66,15 @@ public:
     /// limits (absolute range, max change per part). The returned, clamped values are what the
     /// controller assumes was applied. Part numbers must increase by one per call.
     virtual Eigen::VectorXd nextCorrection(std::int64_t partNumber) = 0;
+
+    /// The correction really sent for part `partNumber` (the last part asked for) differs from what
+    /// nextCorrection returned: the loop's own limits, a hold, the fade of a controller transfer or a dither
+    /// changed it. A controller with a model of its past corrections takes `appliedMm` as the applied one, so
+    /// its estimate stays consistent with what the parts received. Ignored for any other part number.
+    virtual void correctionApplied(std::int64_t partNumber, const Eigen::VectorXd& appliedMm) {
+        (void)partNumber;
+        (void)appliedMm;
+    }
 
     /// The complete state, so that a restored controller continues exactly (resume after a restart).
     virtual ControllerState saveState() const = 0;

@@ -8,6 +8,9 @@ namespace tt::core {
 
 void validateLoopConfig(const LoopConfig& c) {
     c.mismatch.validate();
+    c.adaptation.validate();
+    if (c.adaptation.ditherShare > 0.0 && c.tolerances.empty())
+        throw std::invalid_argument("the adaptation's dither is a share of the tolerance zones: give the tolerances");
     auto positive = [](double v, const std::string& what) {
         if (!std::isfinite(v) || v <= 0.0) throw std::invalid_argument(what + " must be a positive number");
     };

@@ -8,6 +8,7 @@
 #include "core/common/tolerance.h"
 #include "core/control/correction_limits.h"
 #include "core/control/profile_interpolation.h"
+#include "core/loop/adaptation_config.h"
 #include "core/loop/mismatch_monitor.h"
 #include "core/model/scaled_polynomial.h"
 
@@ -39,6 +40,8 @@ struct LoopConfig {
     /// The innovation test of the controller's model (a controller that reports innovations: LQG) and
     /// what the loop does when it fails.
     MismatchMonitorConfig mismatch;
+    /// What the loop does on a mismatch with the action adapt or propose.
+    AdaptationConfig adaptation;
 };
 
 /// Throws std::invalid_argument naming the first bad value.

@@ -80,6 +80,7 @@ void LoopEngine::start(const RunDescription& run) {
     if (m_state != LoopState::Idle) throw std::logic_error("a run is already going; stop it first");
     m_runId.reset();
     if (m_ports.history) m_runId = m_ports.history->beginRun(run);
+    if (m_adaptive) m_adaptive->reset();
     resetRun(m_config.firstPartNumber);
     setState(LoopState::Running, notice(NoticeKind::Starting, m_nextPart));
 }
@@ -100,6 +101,17 @@ void LoopEngine::resetRun(std::int64_t nextPart) {
 
 void LoopEngine::resumeFrom(const ResumePoint& point) {
     if (m_state != LoopState::Idle) throw std::logic_error("a run is already going; stop it first");
+    if (m_adaptive) {
+        m_adaptive->reset();
+        if (m_ports.history) {
+            // The controller the recorded adaptations left in place, and the recent parts for priming and
+            // identification.
+            const std::vector<AdaptationRecord> records = m_ports.history->adaptations(point.run.runId);
+            std::unique_ptr<RunToRunController> adapted =
+                m_adaptive->restore(records, m_ports.history->parts(point.run.runId));
+            if (adapted) m_controller = std::move(adapted);
+        }
+    }
     m_controller->restoreState(point.controllerState);
     m_runId = point.run.runId;
     resetRun(point.lastPartNumber + 1);
@@ -151,7 +163,8 @@ void LoopEngine::stop() {
     setState(LoopState::Idle, notice(NoticeKind::Stopped));
 }
 
-void LoopEngine::replaceController(std::unique_ptr<RunToRunController> next, int transferParts) {
+void LoopEngine::replaceController(std::unique_ptr<RunToRunController> next, int transferParts,
+                                   std::optional<RunToRunSetup> tuning) {
     if (!next) throw std::invalid_argument("the loop needs a controller");
     if (next->pointCount() != m_controller->pointCount())
         throw std::invalid_argument("the new controller has " + std::to_string(next->pointCount()) +
@@ -161,24 +174,65 @@ void LoopEngine::replaceController(std::unique_ptr<RunToRunController> next, int
                                     std::to_string(transferParts));
     m_nextController = std::move(next);
     m_transferParts = transferParts;
+    m_nextTuning = std::move(tuning);
+}
+
+void LoopEngine::setAdaptation(RunToRunSetup setup) {
+    if (static_cast<int>(setup.plant.points.size()) != m_controller->pointCount())
+        throw std::invalid_argument("the adaptation's setup has " + std::to_string(setup.plant.points.size()) +
+                                    " control points, the loop " + std::to_string(m_controller->pointCount()));
+    m_adaptive = std::make_unique<AdaptiveLoop>(std::move(setup), m_config.adaptation, m_config.mismatch.action,
+                                                m_config.delayParts, m_config.tolerances);
+}
+
+bool LoopEngine::acceptProposal() {
+    if (!m_adaptive || !m_adaptive->hasProposal()) return false;
+    m_acceptPending = true;
+    return true;
+}
+
+std::string LoopEngine::controllerDescription() const {
+    if (m_holding) return "holding the last correction (model mismatch)";
+    if (m_adaptive) return m_adaptive->controllerDescription();
+    return m_controller->name();
+}
+
+void LoopEngine::takeOver(std::unique_ptr<RunToRunController> next, std::int64_t part, int transferParts) {
+    if (m_adaptive) m_adaptive->prime(*next, part);
+    m_controller = std::move(next);
+    m_transferParts = transferParts;
+    m_transferPending = true;
+    m_monitor.reset();
 }
 
 Eigen::VectorXd LoopEngine::correctionWithTransfer(std::int64_t part, const std::vector<double>& previous) {
-    if (m_nextController) {
-        // The new controller takes over at this part: its first correction is offset to the one applied last.
-        m_controller = std::move(m_nextController);
-        Eigen::VectorXd first = m_controller->nextCorrection(part);
-        m_transferOffsetMm =
-            Eigen::Map<const Eigen::VectorXd>(previous.data(), static_cast<Eigen::Index>(previous.size())) - first;
-        m_transferLeft = m_transferParts;
-        return first + m_transferOffsetMm;
-    }
     Eigen::VectorXd u = m_controller->nextCorrection(part);
+    if (m_transferPending) {
+        // The controller took over at this part: its first correction is offset to the one applied last.
+        m_transferPending = false;
+        m_transferOffsetMm =
+            Eigen::Map<const Eigen::VectorXd>(previous.data(), static_cast<Eigen::Index>(previous.size())) - u;
+        m_transferLeft = m_transferParts;
+        return u + m_transferOffsetMm;
+    }
     if (m_transferLeft > 0) {
         --m_transferLeft;
         u += m_transferOffsetMm * (static_cast<double>(m_transferLeft) / m_transferParts);
     }
     return u;
+}
+
+LimiterOutcome LoopEngine::correctionsFor(std::int64_t n, const std::vector<double>& previous,
+                                          Eigen::VectorXd& computed) {
+    const Eigen::Map<const Eigen::VectorXd> last(previous.data(), static_cast<Eigen::Index>(previous.size()));
+    computed = correctionWithTransfer(n, previous);
+    if (m_adaptive) computed += m_adaptive->dither(n);
+    if (m_holding) computed = last;
+    LimiterOutcome limited = m_limiter.apply(computed);
+    // The controller learns what the part really receives (limits, transfer, dither, hold).
+    m_controller->correctionApplied(
+        n, Eigen::Map<const Eigen::VectorXd>(limited.appliedMm.data(), static_cast<Eigen::Index>(limited.appliedMm.size())));
+    return limited;
 }
 
 void LoopEngine::skipMeasurement() {
@@ -391,6 +445,7 @@ void LoopEngine::offerMeasurement(PartMeasurementRecord& record) {
         verdict.reasons.assign(record.points.size(),
                                because(NoticeKind::ControllerFailed, record.partNumber, e.what()));
     }
+    if (m_adaptive) m_adaptive->partMeasured(record.partNumber, measurement.deviationMm, verdict.accepted);
     watchModel(record.partNumber);
     for (std::size_t i = 0; i < record.points.size(); ++i) {
         PointMeasurementRecord& p = record.points[i];
@@ -416,14 +471,43 @@ void LoopEngine::watchModel(std::int64_t partNumber) {
     if (!innovation || innovation->partNumber != partNumber) return;
     const std::optional<MismatchFinding> found = m_monitor.add(*innovation);
     if (!found) return;
-    m_holding = m_config.mismatch.action == MismatchAction::Hold;
+    const MismatchAction action = m_config.mismatch.action;
+    const bool adapts = m_adaptive && (action == MismatchAction::Adapt || action == MismatchAction::Propose);
+    m_holding = action == MismatchAction::Hold || (!m_adaptive && action != MismatchAction::AlarmOnly);
     Notice what(NoticeKind::ModelMismatch, found->partNumber, found->windowParts);
     what.point = found->point;
     what.value = found->statistic;
     what.limit = found->threshold;
     what.reference = found->correlation ? 1.0 : 0.0;
     if (m_holding) what.cause = "hold";
+    if (adapts) what.cause = mismatchActionName(action);
     alarm(kModelMismatchAlarm, what, found->partNumber);
+    if (adapts) applyAdaptation(m_adaptive->onMismatch(what, m_nextPart, m_ports.clock.nowS()), m_nextPart);
+}
+
+void LoopEngine::applyAdaptation(AdaptationStep step, std::int64_t part) {
+    if (step.controller) takeOver(std::move(step.controller), part, m_config.adaptation.transferParts);
+    if (step.record && m_ports.history && m_runId) {
+        try {
+            m_ports.history->recordAdaptation(*m_runId, *step.record);
+        } catch (const std::exception& e) {
+            alarm("history", because(NoticeKind::HistoryPartFailed, part, e.what()), part);
+        }
+    }
+    if (!step.notice) return;
+    const double now = m_ports.clock.nowS();
+    const std::string message = describe(step.notice);
+    if (m_ports.history && m_runId) {
+        try {
+            m_ports.history->recordAlarm(*m_runId, {part, now, kAdaptationAlarm, message});
+        } catch (const std::exception&) {
+            // Shown anyway; a history that cannot be written faults the loop at the next part.
+        }
+    }
+    LoopEvent event = makeEvent(LoopEvent::Kind::Alarm, part, step.notice);
+    event.alarmKind = kAdaptationAlarm;
+    event.adaptation = std::move(step.record);
+    notify(std::move(event));
 }
 
 void LoopEngine::startNextPart() {
@@ -461,8 +545,19 @@ void LoopEngine::startNextPart() {
         }
         used = std::move(it->second);
         m_measured.erase(it);
-        offerMeasurement(*used);
     }
+    // A controller applied from outside takes over before it gets the measurement due (it is primed up to here).
+    if (m_nextController) {
+        if (m_adaptive) m_adaptive->controllerReplaced(std::move(m_nextTuning), n);
+        m_nextTuning.reset();
+        takeOver(std::move(m_nextController), n, m_transferParts);
+    }
+    if (used) offerMeasurement(*used);
+    if (m_adaptive && m_acceptPending) {
+        m_acceptPending = false;
+        applyAdaptation(m_adaptive->acceptProposal(n, now), n);
+    }
+    if (m_adaptive) applyAdaptation(m_adaptive->beforePart(n, now), n);
     m_waitingSinceS = std::numeric_limits<double>::quiet_NaN();
 
     const std::vector<double> previous = m_limiter.lastAppliedMm();
@@ -470,10 +565,7 @@ void LoopEngine::startNextPart() {
     LimiterOutcome limited;
     PartCorrection correction;
     try {
-        computed = correctionWithTransfer(n, previous);
-        if (m_holding)
-            computed = Eigen::Map<const Eigen::VectorXd>(previous.data(), static_cast<Eigen::Index>(previous.size()));
-        limited = m_limiter.apply(computed);
+        limited = correctionsFor(n, previous, computed);
         correction = partCorrectionFor(m_config, n, limited.appliedMm);
     } catch (const std::exception& e) {
         m_limiter.setLastApplied(previous);
@@ -486,6 +578,7 @@ void LoopEngine::startNextPart() {
     }
 
     m_monitor.partStarted(n, limited.appliedMm);
+    if (m_adaptive) m_adaptive->partStarted(n, limited.appliedMm);
     OutputResult sent = m_ports.output.sendPartCorrection(correction);
     if (!sent.ok) {
         m_limiter.setLastApplied(previous);

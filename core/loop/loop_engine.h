@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/control/run_to_run_controller.h"
+#include "core/loop/adaptive_loop.h"
 #include "core/loop/correction_limiter.h"
 #include "core/loop/loop_config.h"
 #include "core/loop/loop_events.h"
@@ -117,9 +118,26 @@ public:
     /// no part sees a jump. Throws std::invalid_argument for a null controller, another number of points
     /// or transferParts outside 1 .. 1000. The fading offset is not part of a resume point: a run resumed
     /// during a transfer continues with the new controller alone (the step limit still applies).
-    void replaceController(std::unique_ptr<RunToRunController> next, int transferParts = 10);
+    /// With the adaptation (setAdaptation) the replaced controller ends an adaptation in progress: `tuning`, when
+    /// given, is the setup it was designed from and becomes the model the loop adapts from next.
+    void replaceController(std::unique_ptr<RunToRunController> next, int transferParts = 10,
+                           std::optional<RunToRunSetup> tuning = std::nullopt);
     /// Parts of a controller transfer still to fade out (0: none in progress).
     int transferPartsLeft() const { return m_transferLeft; }
+
+    /// The controllers' setup the loop adapts from on a model mismatch (MismatchAction::Adapt or Propose; the run
+    /// builder gives the scenario's). Without it those actions hold the last correction like Hold. From then on a
+    /// controller that takes over (an adaptation or replaceController) is first primed with the run's recent
+    /// parts, so its estimate is consistent with what the parts received. Call before start() or resumeFrom().
+    /// Throws std::invalid_argument for a setup that does not fit the loop.
+    void setAdaptation(RunToRunSetup setup);
+    /// The adaptive loop (null without setAdaptation): its phase, the model in use, the last adaptation.
+    const AdaptiveLoop* adaptation() const { return m_adaptive.get(); }
+    /// The engineer applies the design the loop proposed (MismatchAction::Propose): it takes over at the next part.
+    /// False when no design is proposed.
+    bool acceptProposal();
+    /// The controller now, in stable English ("LQG on the run's model", "fallback EWMA 0.23, identifying the plant").
+    std::string controllerDescription() const;
 
 private:
     /// The controller's correction for `part` plus the fading offset of a controller transfer (and the
@@ -150,6 +168,13 @@ private:
     void offerMeasurement(PartMeasurementRecord& record);
     void judgeTolerances(const PartMeasurementRecord& record);  // out-of-tolerance alarms, pause on scrap
     void watchModel(std::int64_t partNumber);                   // the mismatch monitor after a measurement
+    /// `next` takes over at part `part`: primed with the recent parts, the monitor restarts on its model and the
+    /// difference to the last applied correction fades out over `transferParts`.
+    void takeOver(std::unique_ptr<RunToRunController> next, std::int64_t part, int transferParts);
+    /// Carries out what the adaptive loop decided at part `part` (a switch, the record, the operator's notice).
+    void applyAdaptation(AdaptationStep step, std::int64_t part);
+    /// The corrections of part `n` from the controller, the transfer, the dither and a hold, then the limiter.
+    LimiterOutcome correctionsFor(std::int64_t n, const std::vector<double>& previous, Eigen::VectorXd& computed);
     void setState(LoopState state, const Notice& status);
     void alarm(const std::string& kind, const Notice& what, std::optional<std::int64_t> part = std::nullopt);
     void fault(const Notice& what);
@@ -167,6 +192,10 @@ private:
     int m_transferParts = 0;                               ///< length of the transfer asked for
     int m_transferLeft = 0;                                ///< parts of the fading offset still to come
     Eigen::VectorXd m_transferOffsetMm;                    ///< last applied - new controller's first, mm
+    bool m_transferPending = false;                        ///< the controller that took over has not corrected yet
+    std::unique_ptr<AdaptiveLoop> m_adaptive;              ///< the self-tuning part (setAdaptation)
+    bool m_acceptPending = false;                          ///< acceptProposal() waits for the next part
+    std::optional<RunToRunSetup> m_nextTuning;             ///< the setup of m_nextController, when given
     CorrectionLimiter m_limiter;
     MismatchMonitor m_monitor;
     bool m_holding = false;

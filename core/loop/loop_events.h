@@ -20,7 +20,7 @@ struct LoopEvent {
         PartStarted,   ///< corrections sent, the part is on the machine (corrections, path)
         PartFinished,  ///< the part came off the machine and is stored
         PartMeasured,  ///< all diameters of a part are in (measurement, with the loop's verdicts)
-        Alarm,         ///< alarmKind + message, also stored with the run
+        Alarm,         ///< alarmKind + message, also stored with the run ("adaptation": with `adaptation`)
         DeviceChanged  ///< device = which one ("gauge", "cnc", "machine"), health
     };
     Kind kind = Kind::StateChanged;
@@ -35,6 +35,8 @@ struct LoopEvent {
     std::vector<PointCorrectionRecord> corrections;
     CorrectionPath path;
     std::optional<PartMeasurementRecord> measurement;
+    /// What the adaptive loop did (an Alarm of kind "adaptation" that changed or proposed the controller).
+    std::optional<AdaptationRecord> adaptation;
 };
 
 /// Receives the loop engine's events, on the thread that drives the engine.

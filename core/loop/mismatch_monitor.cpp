@@ -11,13 +11,25 @@
 namespace tt::core {
 
 const char* mismatchActionName(MismatchAction action) {
-    return action == MismatchAction::Hold ? "hold" : "alarm";
+    switch (action) {
+        case MismatchAction::Hold:
+            return "hold";
+        case MismatchAction::AlarmOnly:
+            return "alarm";
+        case MismatchAction::Adapt:
+            return "adapt";
+        case MismatchAction::Propose:
+            return "propose";
+    }
+    return "adapt";
 }
 
 MismatchAction mismatchActionFromName(const std::string& name) {
     if (name == "hold") return MismatchAction::Hold;
     if (name == "alarm") return MismatchAction::AlarmOnly;
-    throw std::invalid_argument("unknown mismatch action '" + name + "' (hold, alarm)");
+    if (name == "adapt") return MismatchAction::Adapt;
+    if (name == "propose") return MismatchAction::Propose;
+    throw std::invalid_argument("unknown mismatch action '" + name + "' (adapt, propose, hold, alarm)");
 }
 
 void MismatchMonitorConfig::validate() const {
@@ -75,8 +87,10 @@ void MismatchMonitor::partStarted(std::int64_t partNumber, const std::vector<dou
 }
 
 std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovation& innovation) const {
-    const auto own = m_applied.find(innovation.partNumber);
-    const auto before = m_applied.find(innovation.partNumber - 1);
+    // The corrections that acted on the part and on the one before: sent for part k - lag and k - lag - 1.
+    const std::int64_t actedOn = innovation.partNumber - innovation.lagParts;
+    const auto own = m_applied.find(actedOn);
+    const auto before = m_applied.find(actedOn - 1);
     if (own == m_applied.end() || before == m_applied.end()) return std::nullopt;
     const std::size_t m = static_cast<std::size_t>(innovation.valueMm.size());
     if (own->second.size() != m || before->second.size() != m ||
@@ -87,24 +101,55 @@ std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovatio
     t.pointB.assign(m, Eigen::Vector2d::Zero());
     t.pointNis.assign(m, 0.0);
     t.pointValues.assign(m, 0);
+    std::vector<Eigen::Index> present;
+    Eigen::VectorXd e(static_cast<Eigen::Index>(m));
+    Eigen::MatrixXd X(static_cast<Eigen::Index>(m), 2);
     for (std::size_t i = 0; i < m; ++i) {
         const auto ii = static_cast<Eigen::Index>(i);
         const double nu = innovation.valueMm(ii);
         const double s = innovation.varianceMm2(ii);
         if (!std::isfinite(nu) || !std::isfinite(s) || s <= 0.0) continue;
         const double root = std::sqrt(s);
-        const double e = nu / root;
-        const Eigen::Vector2d x(own->second[i] / root, before->second[i] / root);
+        e(ii) = nu / root;
+        X.row(ii) << own->second[i] / root, before->second[i] / root;
+        const Eigen::Vector2d x = X.row(ii).transpose();
         t.pointM[i] = x * x.transpose();
-        t.pointB[i] = x * e;
-        t.pointNis[i] = e * e;
+        t.pointB[i] = x * e(ii);
+        t.pointNis[i] = e(ii) * e(ii);
         t.pointValues[i] = 1;
-        t.M += t.pointM[i];
-        t.b += t.pointB[i];
-        t.nis += e * e;
-        ++t.values;
+        present.push_back(ii);
     }
-    if (t.values == 0) return std::nullopt;
+    if (present.empty()) return std::nullopt;
+    t.values = static_cast<int>(present.size());
+    const bool correlated = innovation.correlation.rows() == static_cast<Eigen::Index>(m) &&
+                            innovation.correlation.cols() == static_cast<Eigen::Index>(m);
+    if (!correlated) {
+        for (std::size_t i = 0; i < m; ++i) {
+            t.M += t.pointM[i];
+            t.b += t.pointB[i];
+            t.nis += t.pointNis[i];
+        }
+        return t;
+    }
+    // Generalised least squares with the model's correlation R of the points present:
+    // b = X' R^-1 e, M = X' R^-1 X, NIS = e' R^-1 e (chi-square with as many degrees of freedom as points).
+    const auto k = static_cast<Eigen::Index>(present.size());
+    Eigen::MatrixXd R(k, k);
+    Eigen::VectorXd ep(k);
+    Eigen::MatrixXd Xp(k, 2);
+    for (Eigen::Index a = 0; a < k; ++a) {
+        ep(a) = e(present[static_cast<std::size_t>(a)]);
+        Xp.row(a) = X.row(present[static_cast<std::size_t>(a)]);
+        for (Eigen::Index c = 0; c < k; ++c)
+            R(a, c) = innovation.correlation(present[static_cast<std::size_t>(a)], present[static_cast<std::size_t>(c)]);
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(R);
+    const Eigen::VectorXd Re = ldlt.solve(ep);
+    const Eigen::MatrixXd RX = ldlt.solve(Xp);
+    if (!Re.allFinite() || !RX.allFinite()) return std::nullopt;
+    t.b = Xp.transpose() * Re;
+    t.M = Xp.transpose() * RX;
+    t.nis = ep.dot(Re);
     return t;
 }
 

@@ -15,14 +15,21 @@ namespace tt::core {
 
 /// The alarm kind of a detected model mismatch, stored with the run.
 inline constexpr const char* kModelMismatchAlarm = "model-mismatch";
+/// The alarm kind of what the adaptive loop did (fallback, adaptation, proposal, refusals), stored with the run.
+inline constexpr const char* kAdaptationAlarm = "adaptation";
 
 /// What the loop does when the plant no longer matches the controller's model.
 enum class MismatchAction {
-    Hold,      ///< alarm, then the CNC keeps the last correction until the run is restarted
-    AlarmOnly  ///< alarm, the controller goes on
+    Hold,       ///< alarm, then the CNC keeps the last correction until the run is restarted
+    AlarmOnly,  ///< alarm, the controller goes on
+    /// alarm, switch bumplessly to the robust fallback at the next part, identify the plant from the run's history
+    /// and apply a design for it whose margins hold (the monitor then restarts on the new model)
+    Adapt,
+    /// as Adapt, but the new design is only proposed (recorded; an engineer applies it); the fallback goes on
+    Propose
 };
 
-/// "hold", "alarm"; and back (throws std::invalid_argument for another name).
+/// "hold", "alarm", "adapt", "propose"; and back (throws std::invalid_argument for another name).
 const char* mismatchActionName(MismatchAction action);
 MismatchAction mismatchActionFromName(const std::string& name);
 
@@ -34,7 +41,7 @@ struct MismatchMonitorConfig {
     /// Probability that one test alarms although the plant matches the model (1e-12 .. 1e-2). Two tests
     /// per part, so the expected false alarms of a matching plant are at most 2 x this per part.
     double falseAlarmProbability = 1e-6;
-    MismatchAction action = MismatchAction::Hold;
+    MismatchAction action = MismatchAction::Adapt;
 
     /// Throws std::invalid_argument naming the value and its range.
     void validate() const;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/ports/adaptation_record.h"
 #include "core/ports/controller_state.h"
 
 namespace tt::core {
@@ -132,6 +133,9 @@ public:
     virtual void recordAlarm(std::int64_t runId, const AlarmRecord& alarm) = 0;
     /// Marks the run finished with `status` ("complete", "stopped", "fault").
     virtual void finishRun(std::int64_t runId, const std::string& status) = 0;
+    /// Stores what the adaptive loop did (a switch to its fallback, an adaptation, a proposal, a refused design)
+    /// with the models before and after and the margins; it is also read into the audit trail.
+    virtual void recordAdaptation(std::int64_t runId, const AdaptationRecord& adaptation) = 0;
 
     /// Runs, newest first.
     virtual std::vector<RunSummary> runs() = 0;
@@ -139,6 +143,8 @@ public:
     virtual std::vector<StoredPart> parts(std::int64_t runId) = 0;
     /// The alarms of a run in the order they were raised.
     virtual std::vector<AlarmRecord> alarms(std::int64_t runId) = 0;
+    /// The adaptations of a run in the order they happened.
+    virtual std::vector<AdaptationRecord> adaptations(std::int64_t runId) = 0;
     /// Where run `runId` (the newest run when none) can continue; none when there is no run or it has
     /// no part yet.
     virtual std::optional<ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) = 0;

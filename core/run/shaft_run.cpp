@@ -48,16 +48,26 @@ public:
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == "out-of-tolerance") ++m_record.toleranceAlarms;
         if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == kModelMismatchAlarm)
             m_record.modelAlarms.push_back({event.partNumber, event.alarmKind, event.notice});
-        if (event.kind == LoopEvent::Kind::PartStarted) watchCorrections(event.corrections);
+        if (event.kind == LoopEvent::Kind::Alarm && event.alarmKind == kAdaptationAlarm) {
+            m_record.adaptationNotices.push_back({event.partNumber, event.alarmKind, event.notice});
+            if (event.adaptation) m_record.adaptations.push_back(*event.adaptation);
+            if (event.adaptation && event.adaptation->applied) {
+                ++m_record.switches;
+                m_switchUntil = event.partNumber + kSwitchWatchParts;
+            }
+        }
+        if (event.kind == LoopEvent::Kind::PartStarted) watchCorrections(event.partNumber, event.corrections);
         if (m_next) m_next->onLoopEvent(event);
     }
 
-    void watchCorrections(const std::vector<PointCorrectionRecord>& corrections) {
+    void watchCorrections(std::int64_t part, const std::vector<PointCorrectionRecord>& corrections) {
         m_previous.resize(corrections.size(), 0.0);
         for (std::size_t i = 0; i < corrections.size(); ++i) {
             const double u = corrections[i].appliedMm;
             m_record.maxCorrectionMm = std::max(m_record.maxCorrectionMm, std::abs(u));
             m_record.maxCorrectionStepMm = std::max(m_record.maxCorrectionStepMm, std::abs(u - m_previous[i]));
+            if (part <= m_switchUntil)
+                m_record.maxSwitchStepMm = std::max(m_record.maxSwitchStepMm, std::abs(u - m_previous[i]));
             m_previous[i] = u;
         }
     }
@@ -107,6 +117,7 @@ private:
     double m_nominalMm;
     std::vector<double> m_pointZMm;
     std::vector<double> m_previous;  // the last corrections sent, per point
+    std::int64_t m_switchUntil = 0;  // the last part whose step counts as a controller switch's
 };
 
 /// Steps the engine on a machine whose time is the wall clock, polled every 10 ms, until the run completes,

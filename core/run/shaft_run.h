@@ -69,9 +69,18 @@ struct LatheRunRecord {
     VerdictCounts warmupVerdicts;                     ///< of them, parts 1 .. LatheRunSpec::warmupParts
     std::int64_t toleranceAlarms = 0;                 ///< out-of-tolerance alarms (one per point out of tolerance)
     std::vector<RecordedAlarm> modelAlarms;           ///< the mismatch monitor's alarms ("model-mismatch")
+    std::vector<AdaptationRecord> adaptations;        ///< what the adaptive loop did (fallback, adaptations, ...)
+    std::vector<RecordedAlarm> adaptationNotices;     ///< every notice of the adaptive loop (refusals included)
     double maxCorrectionMm = 0.0;                     ///< largest |correction| sent to the CNC, radial mm
     double maxCorrectionStepMm = 0.0;                 ///< largest change of a point's correction between parts
+    /// Largest change of a point's correction between parts from a controller switch (the adaptive loop's) to
+    /// kSwitchWatchParts after it, radial mm; and how many switches there were.
+    double maxSwitchStepMm = 0.0;
+    int switches = 0;
 };
+
+/// Parts after a controller switch whose correction steps count as the switch's.
+inline constexpr int kSwitchWatchParts = 20;
 
 /// Runs the loop (built by buildShaftRun on a SimulatedLathe whose time jumps from event to event, or on the
 /// machine of LatheRunSpec::machine) until its last part is machined and measured, a fault, or nothing can happen

@@ -25,9 +25,11 @@ ShaftRunPlan planShaftRun(const ShaftScenario& scenario, const ShaftRunChoice& c
         throw std::invalid_argument("a run needs at least one part");
     ShaftRunPlan plan;
     // Integral action lives in the LQG's design model only (the EWMA and the open loop have no model).
+    // An identified model (control.model) replaces the plant's gains, disturbances and delay in the design.
+    const RunToRunPlantSpec spec = designPlantSpec(scenario.control);
     plan.plant = buildRunToRunPlant(choice.controller == ControllerKind::Lqg
-                                        ? withIntegralAction(scenario.control.plant, scenario.control.integral)
-                                        : scenario.control.plant);
+                                        ? withIntegralAction(spec, scenario.control.integral)
+                                        : spec);
     plan.controller = choice.controller;
     plan.ewmaWeight = choice.controller == ControllerKind::Ewma || choice.controller == ControllerKind::Dewma
                           ? chooseEwmaWeight(scenario.control, plan.plant, choice.ewmaWeight)
@@ -45,10 +47,13 @@ std::unique_ptr<LoopEngine> buildShaftRun(const ShaftScenario& scenario, const S
     if (const std::optional<double> outputMm = machine.outputNominalDiameterMm();
         outputMm && std::fabs(*outputMm - plan.loop.nominalDiameterMm) > kDiameterMatchMm)
         throw OutputDiameterMismatch(*outputMm, plan.loop.nominalDiameterMm);
-    return std::make_unique<LoopEngine>(
+    auto engine = std::make_unique<LoopEngine>(
         plan.loop,
         LoopPorts{machine.cycle(), machine.output(), gauge ? *gauge : machine.gauge(), machine.clock(), history},
         makeShaftController(scenario, plan));
+    // The LQG's model is what the loop adapts when the mismatch monitor fires (the others have no innovations).
+    if (plan.controller == ControllerKind::Lqg) engine->setAdaptation(scenario.control);
+    return engine;
 }
 
 ShaftScenario withControllerTuning(ShaftScenario scenario, const RunToRunSetup& tuning) {
@@ -67,6 +72,8 @@ ShaftScenario withControllerTuning(ShaftScenario scenario, const RunToRunSetup& 
     control.integral = tuning.integral;
     for (std::size_t i = 0; i < points; ++i)
         control.plant.points[i].disturbance = tuning.plant.points[i].disturbance;
+    control.model = tuning.model;
+    if (control.model) control.model->validate(points, control.plant.delay);
     return scenario;
 }
 

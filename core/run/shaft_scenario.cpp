@@ -31,6 +31,7 @@ LoopConfig ShaftScenario::loopConfig(bool feedForward, std::optional<std::int64_
     c.tolerances = pointTolerances();
     c.pauseOnScrap = pauseOnScrap;
     c.mismatch = mismatchMonitor;
+    c.adaptation = adaptation;
     validateLoopConfig(c);
     return c;
 }

@@ -37,6 +37,8 @@ struct ShaftScenario {
     PlantMismatch plantMismatch;
     /// The loop's test of the controller's model and what it does on a mismatch.
     MismatchMonitorConfig mismatchMonitor;
+    /// How the loop adapts on a mismatch (action adapt or propose).
+    AdaptationConfig adaptation;
 
     /// The transport delay z of the plant (after any override).
     int delay() const { return control.plant.delay; }

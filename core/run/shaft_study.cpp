@@ -112,8 +112,12 @@ void takeClosedRun(LatheStudyResult& result, const LatheRunRecord& closed) {
     result.warmupVerdicts = closed.warmupVerdicts;
     result.toleranceAlarms = closed.toleranceAlarms;
     result.modelAlarms = closed.modelAlarms;
+    result.adaptations = closed.adaptations;
+    result.adaptationNotices = closed.adaptationNotices;
     result.maxCorrectionMm = closed.maxCorrectionMm;
     result.maxCorrectionStepMm = closed.maxCorrectionStepMm;
+    result.maxSwitchStepMm = closed.maxSwitchStepMm;
+    result.switches = closed.switches;
 }
 
 /// The closed run's systematic error per control point after the loop's start-up (the first 2z + 5 parts).
@@ -137,13 +141,14 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     result.warmupParts = options.warmupParts;
     if (options.controller == ControllerKind::Ewma || options.controller == ControllerKind::Dewma)
         result.ewmaWeight = closedPlan.ewmaWeight;
-    // The disturbance as modelled, without the controller's integrating state (integral action).
+    // The disturbance as modelled (by the identified model when the scenario has one), without the controller's
+    // integrating state (integral action).
     // No analytic figure for the double EWMA (no linear model of it here).
     const SteadyStateVariances analytic =
         options.controller == ControllerKind::Dewma
             ? SteadyStateVariances{}
             : analyseSteadyState(
-                  buildRunToRunPlant(scenario.control.plant),
+                  buildRunToRunPlant(designPlantSpec(scenario.control)),
                   controllerModel(scenario.control, closedPlan.plant, options.controller, closedPlan.ewmaWeight));
 
     const LatheRunRecord closed = runOnce(scenario, seed, closedPlan, options, true);

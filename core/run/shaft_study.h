@@ -98,8 +98,12 @@ struct LatheStudyResult {
     SimulationOutcome outcome;
     std::optional<StepResidual> step;        ///< when the scenario's plant has a step
     std::vector<RecordedAlarm> modelAlarms;  ///< the mismatch monitor's alarms in the closed run
+    std::vector<AdaptationRecord> adaptations;     ///< what the adaptive loop did in the closed run
+    std::vector<RecordedAlarm> adaptationNotices;  ///< its notices to the operator (refusals of the identification too)
     double maxCorrectionMm = 0.0;            ///< the closed run's largest |correction| sent, radial mm
     double maxCorrectionStepMm = 0.0;        ///< and its largest change between parts, radial mm
+    double maxSwitchStepMm = 0.0;            ///< its largest change within kSwitchWatchParts of a controller switch
+    int switches = 0;                        ///< controller switches of the adaptive loop
     /// Per control point, the closed run's systematic error: the mean true diameter deviation over parts
     /// [systematicFromPart, last] (after the loop's start-up of 2z + 5 parts), mm.
     std::vector<double> systematicMm;

@@ -82,12 +82,14 @@ bool samePlantSpec(const RunToRunPlantSpec& a, const RunToRunPlantSpec& b) {
 }
 
 TuningPreview computeTuningPreview(const RunToRunSetup& setup, const TuningPreview* samePlant) {
-    const RunToRunPlant plant = buildRunToRunPlant(setup.plant);
+    // With an identified model (setup.model) its gains, disturbances and delay z + lag are the plant analysed.
+    const RunToRunPlantSpec spec = designPlantSpec(setup);
+    const RunToRunPlant plant = buildRunToRunPlant(spec);
     validateWeights(plant, setup.weights);
     // Integral action lives in the LQG's design model only: the design is made on the plant with the
     // integrating state and its loop analysed on the true plant (as planShaftRun runs it).
     const RunToRunPlant designPlant =
-        setup.integral.enabled ? buildRunToRunPlant(withIntegralAction(setup.plant, setup.integral)) : plant;
+        setup.integral.enabled ? buildRunToRunPlant(withIntegralAction(spec, setup.integral)) : plant;
     const LqgDesign design = designLqg(designPlant, setup.weights);
     TuningPreview p;
     const LinearControllerModel lqg = lqgControllerModel(designPlant, design);

@@ -1,5 +1,6 @@
 #include "core/storage/audit_store.h"
 
+#include <QJsonDocument>
 #include <QSqlQuery>
 #include <QStringList>
 #include <algorithm>
@@ -8,7 +9,9 @@
 
 #include "core/auth/access_guard.h"
 #include "core/storage/audit_chain.h"
+#include "core/storage/adaptation_json.h"
 #include "core/storage/calibration_store.h"
+#include "core/storage/history_store.h"
 #include "core/storage/tool_store.h"
 
 namespace tt::storage {
@@ -65,6 +68,8 @@ AuditStore::AuditStore(Database& database) : m_db(database) {
     m_db.migrate(auditSchema());
     m_db.migrate(toolSchema());
     m_db.migrate(calibrationSchema());
+    m_db.migrate(historySchema());
+    m_db.migrate(adaptationSchema());
 }
 
 AuditRecord AuditStore::record(const AuditChange& change, const QString& who, const QString& role) {
@@ -163,6 +168,37 @@ void AuditStore::appendCalibrations(std::vector<AuditRecord>& out) {
     }
 }
 
+void AuditStore::appendAdaptations(std::vector<AuditRecord>& out) {
+    // What the adaptive loop changed (or proposed, or refused) in a run, with the model before and after.
+    QSqlQuery q = m_db.exec(
+        QStringLiteral("SELECT a.id, a.recorded_at, a.run_id, r.machine, a.part_number, a.kind, a.model_before,"
+                       " a.model_after, a.margins, a.message FROM adaptations a JOIN runs r ON r.id = a.run_id"));
+    auto summary = [](const QVariant& v) {
+        return v.isNull() ? QString()
+                          : modelSummary(plantModelFromJson(QJsonDocument::fromJson(v.toString().toUtf8()).object()));
+    };
+    while (q.next()) {
+        const QString machine = q.value(3).toString();
+        QString subject = QStringLiteral("run %1, part %2").arg(q.value(2).toLongLong()).arg(q.value(4).toLongLong());
+        if (!machine.isEmpty()) subject = machine + QStringLiteral(", ") + subject;
+        QString after = q.value(9).toString();
+        try {
+            const QString model = summary(q.value(7));
+            if (!model.isEmpty()) after += QStringLiteral(" | ") + model;
+            out.push_back({q.value(0).toLongLong(),
+                           q.value(1).toString(),
+                           kAdaptiveLoopName,
+                           QString(),
+                           {audit_category::kController, subject, QStringLiteral("adaptation: ") + q.value(5).toString(),
+                            summary(q.value(6)), after + QStringLiteral(" | margins ") + q.value(8).toString()}});
+        } catch (const std::invalid_argument&) {
+            out.push_back({q.value(0).toLongLong(), q.value(1).toString(), kAdaptiveLoopName, QString(),
+                           {audit_category::kController, subject,
+                            QStringLiteral("adaptation: ") + q.value(5).toString(), QString(), after}});
+        }
+    }
+}
+
 std::vector<AuditRecord> AuditStore::query(const AuditFilter& filter) {
     if (m_access) m_access->require(core::auth::Permission::ViewAudit);
     if (filter.limit < 1 || filter.limit > kMaxAuditRows)
@@ -172,6 +208,7 @@ std::vector<AuditRecord> AuditStore::query(const AuditFilter& filter) {
     appendOwn(all);
     appendTools(all);
     appendCalibrations(all);
+    appendAdaptations(all);
     std::vector<AuditRecord> out;
     std::copy_if(all.begin(), all.end(), std::back_inserter(out),
                  [&](const AuditRecord& r) { return matches(r, filter); });

@@ -29,6 +29,9 @@ inline const QString kController = QStringLiteral("controller");
 inline const QString kSession = QStringLiteral("session");
 }  // namespace audit_category
 
+/// Who the adaptive loop's controller changes are recorded as (the loop itself, no user).
+inline const QString kAdaptiveLoopName = QStringLiteral("adaptive loop");
+
 /// What changed: category (audit_category), subject ("T12", "user Ivan", "controller"), field, the
 /// value before (empty when created) and after (empty when removed).
 struct AuditChange {
@@ -83,6 +86,7 @@ private:
     void appendOwn(std::vector<AuditRecord>& out);
     void appendTools(std::vector<AuditRecord>& out);
     void appendCalibrations(std::vector<AuditRecord>& out);
+    void appendAdaptations(std::vector<AuditRecord>& out);
 
     Database& m_db;
     const core::auth::AccessGuard* m_access = nullptr;

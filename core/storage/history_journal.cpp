@@ -175,6 +175,10 @@ void HistoryJournal::finishRun(std::int64_t runId, const std::string& status) {
     if (m_written) m_written();
 }
 
+void HistoryJournal::recordAdaptation(std::int64_t runId, const core::AdaptationRecord& adaptation) {
+    m_history->recordAdaptation(runId, adaptation);
+}
+
 std::vector<core::RunSummary> HistoryJournal::runs() {
     return m_history->runs();
 }
@@ -185,6 +189,10 @@ std::vector<core::StoredPart> HistoryJournal::parts(std::int64_t runId) {
 
 std::vector<core::AlarmRecord> HistoryJournal::alarms(std::int64_t runId) {
     return m_history->alarms(runId);
+}
+
+std::vector<core::AdaptationRecord> HistoryJournal::adaptations(std::int64_t runId) {
+    return m_history->adaptations(runId);
 }
 
 std::optional<core::ResumePoint> HistoryJournal::resumePoint(std::optional<std::int64_t> runId) {

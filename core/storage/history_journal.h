@@ -71,10 +71,13 @@ public:
     void recordMeasurement(std::int64_t runId, const core::PartMeasurementRecord& measurement) override;
     void recordAlarm(std::int64_t runId, const core::AlarmRecord& alarm) override;
     void finishRun(std::int64_t runId, const std::string& status) override;
+    /// Kept in this terminal's journal (and its audit trail); not forwarded to the plant database yet.
+    void recordAdaptation(std::int64_t runId, const core::AdaptationRecord& adaptation) override;
 
     std::vector<core::RunSummary> runs() override;
     std::vector<core::StoredPart> parts(std::int64_t runId) override;
     std::vector<core::AlarmRecord> alarms(std::int64_t runId) override;
+    std::vector<core::AdaptationRecord> adaptations(std::int64_t runId) override;
     std::optional<core::ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) override;
     /// HistoryFull when the journal's pages in use reach the bound.
     core::Notice refusesNextPart() override;

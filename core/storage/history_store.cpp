@@ -1,10 +1,12 @@
 #include "core/storage/history_store.h"
 
 #include "core/storage/plant_roles.h"
+#include "core/storage/adaptation_json.h"
 
 #include <array>
 #include <cmath>
 
+#include <QJsonDocument>
 #include <QSqlQuery>
 #include <QUuid>
 #include <QVariant>
@@ -154,6 +156,23 @@ SchemaModule historySchema() {
     return module;
 }
 
+SchemaModule adaptationSchema() {
+    SchemaModule module{QStringLiteral("adaptation"), {}};
+    module.migrations.push_back(
+        {1, QStringLiteral("what the adaptive loop did: fallback, adaptations, proposals, refused designs"),
+         [](Database& db) {
+             exec(db,
+                  "CREATE TABLE adaptations (id {pk}, run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                  " part_number {bigint} NOT NULL, time_s {real} NOT NULL, kind TEXT NOT NULL, reason TEXT NOT NULL,"
+                  " fallback TEXT NOT NULL, fallback_weight {real}, model_before TEXT NOT NULL, model_after TEXT,"
+                  " margins TEXT NOT NULL, applied INTEGER NOT NULL, notice_kind TEXT NOT NULL, notice_part {bigint},"
+                  " notice_other {bigint}, notice_point INTEGER, notice_value {real}, notice_reference {real},"
+                  " notice_limit {real}, notice_cause TEXT NOT NULL, message TEXT NOT NULL, recorded_at TEXT NOT NULL)");
+             exec(db, "CREATE INDEX adaptations_by_run ON adaptations (run_id, id)");
+         }});
+    return module;
+}
+
 std::string encodeControllerValues(const std::vector<double>& values) {
     std::string out;
     char buffer[40];
@@ -185,6 +204,7 @@ std::vector<double> decodeControllerValues(const std::string& textValue) {
 
 SqlHistoryStore::SqlHistoryStore(Database& database) : m_db(database) {
     m_db.migrate(historySchema());
+    m_db.migrate(adaptationSchema());
 }
 
 std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
@@ -378,6 +398,60 @@ std::vector<core::StoredPart> SqlHistoryStore::loadParts(std::int64_t runId, std
 
 std::vector<core::StoredPart> SqlHistoryStore::parts(std::int64_t runId) {
     return loadParts(runId, std::numeric_limits<std::int64_t>::min());
+}
+
+void SqlHistoryStore::recordAdaptation(std::int64_t runId, const core::AdaptationRecord& a) {
+    auto json = [](const QJsonObject& o) { return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)); };
+    const core::Notice& n = a.notice;
+    m_db.exec(QStringLiteral("INSERT INTO adaptations (run_id, part_number, time_s, kind, reason, fallback, fallback_weight,"
+                             " model_before, model_after, margins, applied, notice_kind, notice_part, notice_other,"
+                             " notice_point, notice_value, notice_reference, notice_limit, notice_cause, message,"
+                             " recorded_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+              {id(runId), id(a.partNumber), a.timeS, text(a.kind), text(a.reason), text(a.fallback),
+               finiteOrNull(a.fallbackWeight), json(plantModelJson(a.modelBefore)),
+               a.modelAfter ? QVariant(json(plantModelJson(*a.modelAfter))) : QVariant(QMetaType::fromType<QString>()),
+               json(marginsJson(a.margins)), a.applied ? 1 : 0, text(core::noticeKindName(n.kind)), id(n.part),
+               id(n.otherPart), n.point, finiteOrNull(n.value), finiteOrNull(n.reference), finiteOrNull(n.limit),
+               text(n.cause), text(core::describe(n)), utcNowText()});
+}
+
+std::vector<core::AdaptationRecord> SqlHistoryStore::adaptations(std::int64_t runId) {
+    auto object = [](const QVariant& v) { return QJsonDocument::fromJson(v.toString().toUtf8()).object(); };
+    auto number = [](const QVariant& v) {
+        return v.isNull() ? std::numeric_limits<double>::quiet_NaN() : v.toDouble();
+    };
+    std::vector<core::AdaptationRecord> out;
+    QSqlQuery q = m_db.exec(
+        QStringLiteral("SELECT part_number, time_s, kind, reason, fallback, fallback_weight, model_before, model_after,"
+                       " margins, applied, notice_kind, notice_part, notice_other, notice_point, notice_value,"
+                       " notice_reference, notice_limit, notice_cause FROM adaptations WHERE run_id = ? ORDER BY id"),
+        {id(runId)});
+    while (q.next()) {
+        core::AdaptationRecord a;
+        a.partNumber = q.value(0).toLongLong();
+        a.timeS = q.value(1).toDouble();
+        a.kind = q.value(2).toString().toStdString();
+        a.reason = q.value(3).toString().toStdString();
+        a.fallback = q.value(4).toString().toStdString();
+        a.fallbackWeight = number(q.value(5));
+        try {
+            a.modelBefore = plantModelFromJson(object(q.value(6)));
+            if (!q.value(7).isNull()) a.modelAfter = plantModelFromJson(object(q.value(7)));
+        } catch (const std::invalid_argument& e) {
+            throw StorageError("run " + std::to_string(runId) + ": a stored adaptation is damaged (" + e.what() + ")");
+        }
+        a.margins = marginsFromJson(object(q.value(8)));
+        a.applied = q.value(9).toInt() != 0;
+        a.notice = core::Notice(core::noticeKindFromName(q.value(10).toString().toStdString()),
+                                q.value(11).toLongLong(), q.value(12).toLongLong());
+        a.notice.point = q.value(13).toInt();
+        a.notice.value = number(q.value(14));
+        a.notice.reference = number(q.value(15));
+        a.notice.limit = number(q.value(16));
+        a.notice.cause = q.value(17).toString().toStdString();
+        out.push_back(std::move(a));
+    }
+    return out;
 }
 
 std::vector<core::AlarmRecord> SqlHistoryStore::alarms(std::int64_t runId) {

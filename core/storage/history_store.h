@@ -8,6 +8,9 @@ namespace tt::storage {
 /// The schema module "history" (runs, run_points, parts, corrections, measurements, run_state, alarms; since
 /// version 5 run_ends and plant_terminal_status, and on PostgreSQL the plant's roles: plant_roles.h).
 SchemaModule historySchema();
+/// The schema module "adaptation": what the adaptive loop did in each run (adaptations), a module of its own so the
+/// history's migrations stay one list per feature. Needs "history" first (its rows name a run).
+SchemaModule adaptationSchema();
 
 /// The run history over SQL (SQLite file or PostgreSQL), implementing the loop's HistoryStore port.
 /// Each finished part is one transaction (part, corrections, the verdicts on the measurement its
@@ -16,7 +19,7 @@ SchemaModule historySchema();
 /// is a StorageError naming what could not be stored; what was stored before stays intact.
 class SqlHistoryStore final : public core::HistoryStore {
 public:
-    /// Applies the "history" migrations to `database` (which must outlive the store).
+    /// Applies the "history" and "adaptation" migrations to `database` (which must outlive the store).
     explicit SqlHistoryStore(Database& database);
 
     std::int64_t beginRun(const core::RunDescription& run) override;
@@ -24,10 +27,12 @@ public:
     void recordMeasurement(std::int64_t runId, const core::PartMeasurementRecord& measurement) override;
     void recordAlarm(std::int64_t runId, const core::AlarmRecord& alarm) override;
     void finishRun(std::int64_t runId, const std::string& status) override;
+    void recordAdaptation(std::int64_t runId, const core::AdaptationRecord& adaptation) override;
 
     std::vector<core::RunSummary> runs() override;
     std::vector<core::StoredPart> parts(std::int64_t runId) override;
     std::vector<core::AlarmRecord> alarms(std::int64_t runId) override;
+    std::vector<core::AdaptationRecord> adaptations(std::int64_t runId) override;
     std::optional<core::ResumePoint> resumePoint(std::optional<std::int64_t> runId = std::nullopt) override;
 
     /// Stores an alarm (as recordAlarm) and returns its row id.

@@ -9,7 +9,7 @@
 namespace tt::storage {
 
 std::vector<SchemaModule> allSchemas() {
-    return {historySchema(), toolSchema(), calibrationSchema(), auditSchema(), userSchema()};
+    return {historySchema(), adaptationSchema(), toolSchema(), calibrationSchema(), auditSchema(), userSchema()};
 }
 
 void migrateAll(Database& database) {

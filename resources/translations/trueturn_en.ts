@@ -1462,6 +1462,34 @@
         <source>Paused before part %1: the history takes no new part (%2). The run goes on by itself when it does; the CNC keeps the last correction</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The loop switches to its robust fallback and identifies the plant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with its robust fallback (EWMA, weight %2: stable for plant gains 0.5 to 2 times the model&apos;s and one more part of delay) while it identifies the plant</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: the plant cannot be identified yet: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with an LQG designed for the plant identified from %2 (plant delay %3 parts, smallest gain margin %4); the mismatch monitor restarts on that model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: an LQG for the plant identified from %2 (plant delay %3 parts) is proposed; the fallback goes on until an engineer applies it on the Controller page</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Part %1: the design for the identified plant is not applied: %2; the fallback goes on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with the proposed LQG an engineer applied</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2821,10 +2849,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Falling back to a safe controller on a model mismatch (it holds)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>One run request for the Run page, CLI and resume</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3607,10 +3631,6 @@ L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Fits the disturbance of a stored run at every point as (z + b)/(z − a) and types point 1&apos;s fit into the filter</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Newest run</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3630,15 +3650,59 @@ L/d %4</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Identifying the disturbance of the stored run…</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Phase margin %1, sensitivity peak |S| %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identifies the plant of a stored run at every point (gain, plant delay, disturbance as ARMA(p, q) with standard errors) and designs the controller for it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identified model</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Design on the identified model (per point gain and disturbance, the plant delay) instead of the typed filter</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use the loop&apos;s proposal (part %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The adaptive loop identified the plant and proposes a design for it; take it into the page, check the predictions and apply it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Identifying the plant of the stored run…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1: gain %2 ± %3, ARMA(%4, %5) AR [%6] MA [%7], σ² %8 mm², Ljung–Box p %9</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the design&apos;s margins hold (gain margin %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the design fails its margins: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1, parts %2 .. %3: plant delay %4 parts; point 1 gain %5 ± %6 (every point in the tooltip); %7</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1: gain %2 ± %3, σ² %4 mm²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The loop&apos;s proposal of part %1: plant delay %2 parts, identified from %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The proposal cannot be used: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

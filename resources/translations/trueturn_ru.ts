@@ -1464,6 +1464,34 @@
         <source>Paused before part %1: the history takes no new part (%2). The run goes on by itself when it does; the CNC keeps the last correction</source>
         <translation>Пауза перед деталью %1: история не принимает новых деталей (%2). Работа продолжится сама, когда примет; ЧПУ держит последнюю коррекцию</translation>
     </message>
+    <message>
+        <source>The loop switches to its robust fallback and identifies the plant</source>
+        <translation>Контур переходит на робастный резервный регулятор и идентифицирует объект</translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with its robust fallback (EWMA, weight %2: stable for plant gains 0.5 to 2 times the model&apos;s and one more part of delay) while it identifies the plant</source>
+        <translation>С детали %1 контур корректирует резервным регулятором (EWMA, вес %2: устойчив при коэффициенте объекта от 0,5 до 2 модельного и задержке на одну деталь больше), пока идентифицирует объект</translation>
+    </message>
+    <message>
+        <source>Part %1: the plant cannot be identified yet: %2</source>
+        <translation>Деталь %1: объект пока нельзя идентифицировать: %2</translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with an LQG designed for the plant identified from %2 (plant delay %3 parts, smallest gain margin %4); the mismatch monitor restarts on that model</source>
+        <translation>С детали %1 контур корректирует LQG-регулятором, рассчитанным для объекта, идентифицированного по %2 (задержка объекта %3 дет., наименьший запас по усилению %4); контроль несоответствия начинается заново по этой модели</translation>
+    </message>
+    <message>
+        <source>Part %1: an LQG for the plant identified from %2 (plant delay %3 parts) is proposed; the fallback goes on until an engineer applies it on the Controller page</source>
+        <translation>Деталь %1: предложен LQG-регулятор для объекта, идентифицированного по %2 (задержка объекта %3 дет.); резервный регулятор работает, пока инженер не применит его на странице «Регулятор»</translation>
+    </message>
+    <message>
+        <source>Part %1: the design for the identified plant is not applied: %2; the fallback goes on</source>
+        <translation>Деталь %1: расчёт для идентифицированного объекта не применён: %2; резервный регулятор продолжает работу</translation>
+    </message>
+    <message>
+        <source>From part %1 the loop corrects with the proposed LQG an engineer applied</source>
+        <translation>С детали %1 контур корректирует предложенным LQG-регулятором, который применил инженер</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2831,10 +2859,6 @@
         <translation>Режим киоска и экранная клавиатура</translation>
     </message>
     <message>
-        <source>Falling back to a safe controller on a model mismatch (it holds)</source>
-        <translation>Безопасный регулятор при несоответствии модели (сейчас удержание)</translation>
-    </message>
-    <message>
         <source>One run request for the Run page, CLI and resume</source>
         <translation>Один запрос прогона: страница «Работа», CLI, продолжение</translation>
     </message>
@@ -3623,10 +3647,6 @@ L/d %4</translation>
         <translation>Оценить по истории</translation>
     </message>
     <message>
-        <source>Fits the disturbance of a stored run at every point as (z + b)/(z − a) and types point 1&apos;s fit into the filter</source>
-        <translation>Оценивает возмущение сохранённого прогона в каждой точке как (z + b)/(z − a) и вписывает оценку точки 1 в фильтр</translation>
-    </message>
-    <message>
         <source>Newest run</source>
         <translation>Последний прогон</translation>
     </message>
@@ -3647,16 +3667,60 @@ L/d %4</translation>
         <translation>Оценка не удалась: %1</translation>
     </message>
     <message>
-        <source>Identifying the disturbance of the stored run…</source>
-        <translation>Оценка возмущения сохранённого прогона…</translation>
-    </message>
-    <message>
-        <source>Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9</source>
-        <translation>Точка %1 (прогон %2, %3 дет.): a %4 ± %5, b %6 ± %7, σ² %8 мм², Льюнг–Бокс p %9</translation>
-    </message>
-    <message>
         <source>Phase margin %1, sensitivity peak |S| %2.</source>
         <translation>Запас по фазе %1, пик чувствительности |S| %2.</translation>
+    </message>
+    <message>
+        <source>Identifies the plant of a stored run at every point (gain, plant delay, disturbance as ARMA(p, q) with standard errors) and designs the controller for it</source>
+        <translation>Идентифицирует объект сохранённой серии в каждой точке (коэффициент, задержка объекта, возмущение как ARMA(p, q) со стандартными ошибками) и рассчитывает для него регулятор</translation>
+    </message>
+    <message>
+        <source>Identified model</source>
+        <translation>Идентифицированная модель</translation>
+    </message>
+    <message>
+        <source>Design on the identified model (per point gain and disturbance, the plant delay) instead of the typed filter</source>
+        <translation>Расчёт по идентифицированной модели (коэффициент и возмущение по точкам, задержка объекта) вместо введённого фильтра</translation>
+    </message>
+    <message>
+        <source>Use the loop&apos;s proposal (part %1)</source>
+        <translation>Взять предложение контура (деталь %1)</translation>
+    </message>
+    <message>
+        <source>The adaptive loop identified the plant and proposes a design for it; take it into the page, check the predictions and apply it</source>
+        <translation>Адаптивный контур идентифицировал объект и предлагает для него расчёт; возьмите его на страницу, проверьте прогноз и примените</translation>
+    </message>
+    <message>
+        <source>Identifying the plant of the stored run…</source>
+        <translation>Идентификация объекта сохранённой серии…</translation>
+    </message>
+    <message>
+        <source>Point %1: gain %2 ± %3, ARMA(%4, %5) AR [%6] MA [%7], σ² %8 mm², Ljung–Box p %9</source>
+        <translation>Точка %1: коэффициент %2 ± %3, ARMA(%4, %5) AR [%6] MA [%7], σ² %8 мм², Льюнг–Бокс p %9</translation>
+    </message>
+    <message>
+        <source>the design&apos;s margins hold (gain margin %1)</source>
+        <translation>запасы расчёта выдержаны (запас по усилению %1)</translation>
+    </message>
+    <message>
+        <source>the design fails its margins: %1</source>
+        <translation>расчёт не выдерживает запасов: %1</translation>
+    </message>
+    <message>
+        <source>Run %1, parts %2 .. %3: plant delay %4 parts; point 1 gain %5 ± %6 (every point in the tooltip); %7</source>
+        <translation>Серия %1, детали %2 .. %3: задержка объекта %4 дет.; точка 1: коэффициент %5 ± %6 (все точки в подсказке); %7</translation>
+    </message>
+    <message>
+        <source>Point %1: gain %2 ± %3, σ² %4 mm²</source>
+        <translation>Точка %1: коэффициент %2 ± %3, σ² %4 мм²</translation>
+    </message>
+    <message>
+        <source>The loop&apos;s proposal of part %1: plant delay %2 parts, identified from %3</source>
+        <translation>Предложение контура на детали %1: задержка объекта %2 дет., идентифицировано по %3</translation>
+    </message>
+    <message>
+        <source>The proposal cannot be used: %1</source>
+        <translation>Предложение нельзя использовать: %1</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 
 #include "config/controller_tuning_json.h"
 #include "core/common/bounded_input.h"
+#include "core/loop/adaptation_config.h"
 #include "core/loop/mismatch_monitor.h"
 #include "core/run/run_limits.h"
 
@@ -113,6 +114,7 @@ void readController(const Reader& r, RunRequest& q) {
         q.integralWeight = i.number("weight");
     }
     if (r.has("mismatch_action")) q.mismatchAction = r.text("mismatch_action", {}).toStdString();
+    q.ditherShare = r.number("dither_share");
     if (r.has("tuning")) q.tuning = r.object("tuning");
 }
 
@@ -200,6 +202,7 @@ void validateController(const RunRequest& q) {
         } catch (const std::invalid_argument& e) {
             refuse("mismatch_action", e.what());
         }
+    if (q.ditherShare) requireRange("dither_share", *q.ditherShare, 0.0, core::kMaxDitherShare);
 }
 
 void validateRun(const RunRequest& q) {
@@ -287,6 +290,7 @@ QJsonObject toJson(const RunRequest& q) {
     if (q.integralWeight) integral.insert(QStringLiteral("weight"), *q.integralWeight);
     if (!integral.isEmpty()) o.insert(QStringLiteral("integral"), integral);
     if (q.mismatchAction) o.insert(QStringLiteral("mismatch_action"), QString::fromStdString(*q.mismatchAction));
+    if (q.ditherShare) o.insert(QStringLiteral("dither_share"), *q.ditherShare);
     QJsonObject plant;
     if (q.plant.gainFactor) plant.insert(QStringLiteral("gain_factor"), *q.plant.gainFactor);
     if (q.plant.delayParts) plant.insert(QStringLiteral("delay"), *q.plant.delayParts);
@@ -309,7 +313,7 @@ QJsonObject toJson(const RunRequest& q) {
 RunRequest runRequestFromJson(const QJsonObject& json) {
     onlyKeys(json, {},
              {"machine",      "lathe",          "devices",      "cnc",      "preset",          "delay",
-              "controller",   "ewma_weight",    "drift_weight", "integral", "mismatch_action", "plant_mismatch",
+              "controller",   "ewma_weight",    "drift_weight", "integral", "mismatch_action", "dither_share", "plant_mismatch",
               "tuning",       "pause_on_scrap", "seed",         "speed",    "end_part",        "warmup_parts",
               "manual_entry", "database"});
     const Reader r(json, {});
@@ -367,6 +371,7 @@ config::LoopScenario scenarioOf(const RunRequest& q) {
     if (q.integralWeight) scenario.control.integral.weight = *q.integralWeight;
     if (q.driftWeight) scenario.control.ewma.driftWeight = *q.driftWeight;
     if (q.mismatchAction) scenario.mismatchMonitor.action = core::mismatchActionFromName(*q.mismatchAction);
+    if (q.ditherShare) scenario.adaptation.ditherShare = *q.ditherShare;
     scenario.pauseOnScrap = scenario.pauseOnScrap || q.pauseOnScrap;
     validatePlant(q, scenario);
     if (!q.cnc.isEmpty() && !scenario.lathe)

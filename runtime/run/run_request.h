@@ -68,6 +68,9 @@ struct RunRequest {
     std::optional<bool> integral;       ///< the LQG's integral action
     std::optional<double> integralWeight;
     std::optional<std::string> mismatchAction;  ///< the mismatch monitor's action (core::mismatchActionFromName)
+    /// The dither on the correction while the adaptive loop identifies the plant, as a share of the tolerance zone
+    /// (0 .. core::kMaxDitherShare); none: the preset's.
+    std::optional<double> ditherShare;
     RequestedPlant plant;
     /// The controller tuning applied on the Controller page (config::controllerTuningToJson); none: the preset's.
     std::optional<QJsonObject> tuning;

@@ -18,6 +18,21 @@ QString number(double v) {
     return QString::number(v, 'g', 6);
 }
 
+/// The controller's identified model in words ("none": the preset's plant is the model).
+QString modelText(const core::RunToRunSetup& setup) {
+    if (!setup.model) return QStringLiteral("none");
+    QStringList gains;
+    for (double g : setup.model->gain)
+        gains << number(g);
+    QStringList disturbances;
+    for (const core::DisturbanceModel& d : setup.model->disturbance)
+        disturbances << QString::fromStdString(d.describe());
+    return QStringLiteral("plant delay z + %1; gains %2; disturbances %3; from %4")
+        .arg(setup.model->lagParts)
+        .arg(gains.join(QStringLiteral(", ")), disturbances.join(QStringLiteral(" | ")),
+             QString::fromStdString(setup.model->source));
+}
+
 /// The tuning as named values, in the order they are described ("delay z", "point 1 R1", ...).
 QList<QPair<QString, QString>> tuningValues(const core::RunToRunSetup& setup, Eigen::Index points) {
     QList<QPair<QString, QString>> values;
@@ -35,6 +50,7 @@ QList<QPair<QString, QString>> tuningValues(const core::RunToRunSetup& setup, Ei
     const std::string filter =
         setup.plant.points.empty() ? std::string() : setup.plant.points[0].disturbance.describe();
     values.append({QStringLiteral("shaping filter"), QString::fromStdString(filter)});
+    values.append({QStringLiteral("identified model"), modelText(setup)});
     return values;
 }
 

@@ -3,25 +3,25 @@
 #include <QString>
 #include <cstdint>
 #include <optional>
-#include <vector>
 
-#include "core/control/disturbance_identification.h"
+#include "core/control/run_to_run_setup.h"
+#include "core/run/stored_run_tuning.h"
 #include "core/storage/database.h"
 
 namespace tt::ui {
 
-/// The disturbance of every control point of one stored run, fitted as ARMA(1, 1) (issue 13 item 5):
-/// what the Controller page's "Identify from history" shows and turns into the typed shaping filter.
+/// The plant of one stored run identified at every control point and the LQG designed for it (the commissioning
+/// step of `trueturn tune`, core::tuneFromStoredRun): what the Controller page's "Identify from history" shows and
+/// designs with.
 struct HistoryIdentification {
-    std::vector<core::DisturbanceIdentification> points;  ///< point 0, 1, ... that could be fitted
-    QString problem;  ///< why nothing could be fitted at point 1 (no run, too few parts), the engine's words
+    std::optional<core::StoredRunTuning> tuning;  ///< none when nothing could be identified
+    QString problem;  ///< why not (no run, too few parts: how many more), the engine's words
 };
 
-/// Opens its own connection to `config` (the calling thread's; QtSql connections do not cross threads)
-/// and fits points 0 .. pointCount - 1 of run `runId` (none: the newest) with k_i = `gainPerPoint`
-/// (diameter per radial move). A point that cannot be fitted after point 1 is left out; a failure at
-/// point 1 or of the database is returned in `problem`. Meant for a worker thread.
+/// Opens its own connection to `config` (the calling thread's; QtSql connections do not cross threads), identifies
+/// run `runId` (none: the newest) for the controller's `setup` (its delay, its model's gains as the prior) and
+/// designs for it. Meant for a worker thread.
 HistoryIdentification identifyFromHistory(const storage::DatabaseConfig& config, std::optional<std::int64_t> runId,
-                                          const std::vector<double>& gainPerPoint);
+                                          const core::RunToRunSetup& setup);
 
 }  // namespace tt::ui

@@ -48,7 +48,7 @@ void TuningWorker::loop() {
         }
         const auto start = std::chrono::steady_clock::now();
         try {
-            const bool reuse = m_last && core::samePlantSpec(m_last->setup.plant, result->setup.plant);
+            const bool reuse = m_last && core::samePlantSpec(core::designPlantSpec(m_last->setup), core::designPlantSpec(result->setup));
             result->preview = core::computeTuningPreview(result->setup, reuse ? &*m_last->preview : nullptr);
             m_last = result;
         } catch (const std::exception& e) {

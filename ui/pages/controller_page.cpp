@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "config/plant_config.h"
+#include "core/control/adaptive_design.h"
 #include "core/model/disturbance_model.h"
 #include "core/storage/data_stores.h"
 #include "ui/auth/audit_trail.h"
@@ -142,6 +143,7 @@ QWidget* ControllerPage::buildSettings() {
     auto* identifyRow = new QHBoxLayout;
     identifyRow->addWidget(m_identifyRun);
     identifyRow->addWidget(m_identify);
+    identifyRow->addWidget(m_takeProposal);
     identifyRow->addWidget(m_identified, 1);
     grid->addLayout(identifyRow, 4, 0, 1, 4);
     for (QSpinBox* s : {m_delay})
@@ -169,9 +171,24 @@ QWidget* ControllerPage::buildExtraRow() {
     m_identified = new QLabel;
     m_identified->setWordWrap(true);
     m_identified->setObjectName(QStringLiteral("identifiedFit"));
+    m_takeProposal = new QPushButton;
+    m_takeProposal->setObjectName(QStringLiteral("takeProposal"));
+    m_takeProposal->setVisible(false);
+    m_useIdentified = new QCheckBox;
+    m_useIdentified->setObjectName(QStringLiteral("identifiedModel"));
+    m_useIdentified->setEnabled(false);
     for (QWidget* w : std::initializer_list<QWidget*>{m_integral, m_integralWeightLabel, m_integralWeight})
         h->addWidget(w);
+    h->addSpacing(24);
+    h->addWidget(m_useIdentified);
     h->addStretch(1);
+    connect(m_useIdentified, &QCheckBox::toggled, this, [this](bool on) {
+        for (QDoubleSpinBox* f : {m_pole, m_zero, m_variance})
+            f->setEnabled(!on);
+        requestPreview();
+    });
+    connect(m_takeProposal, &QPushButton::clicked, this, &ControllerPage::takeProposal);
+    connect(m_identifyRun, &QComboBox::currentIndexChanged, this, &ControllerPage::findProposal);
     connect(m_integral, &QCheckBox::toggled, this, [this](bool on) {
         m_integralWeight->setEnabled(on);
         requestPreview();
@@ -276,8 +293,16 @@ void ControllerPage::retranslate() {
     m_integralWeightLabel->setText(tr("weight"));
     m_identify->setText(tr("Identify from history"));
     m_identify->setToolTip(
-        tr("Fits the disturbance of a stored run at every point as (z + b)/(z − a) and "
-           "types point 1's fit into the filter"));
+        tr("Identifies the plant of a stored run at every point (gain, plant delay, disturbance as ARMA(p, q) with "
+           "standard errors) and designs the controller for it"));
+    m_useIdentified->setText(tr("Identified model"));
+    m_useIdentified->setToolTip(
+        tr("Design on the identified model (per point gain and disturbance, the plant delay) instead of the typed "
+           "filter"));
+    m_takeProposal->setText(m_proposal ? tr("Use the loop's proposal (part %1)").arg(m_proposal->partNumber)
+                                       : QString());
+    m_takeProposal->setToolTip(tr("The adaptive loop identified the plant and proposes a design for it; take it "
+                                  "into the page, check the predictions and apply it"));
     refreshRuns();
     m_apply->setText(tr("Apply…"));
     m_revert->setText(tr("Revert"));
@@ -304,6 +329,8 @@ core::RunToRunSetup ControllerPage::editedSetup() const {
     const core::DisturbanceModel filter = typedFilter(m_pole->value(), m_zero->value(), m_variance->value());
     for (core::ControlPointSpec& p : s.plant.points)
         p.disturbance = filter;
+    s.model.reset();
+    if (m_identifiedModel && m_useIdentified->isChecked()) s.model = m_identifiedModel;
     return s;
 }
 
@@ -321,6 +348,11 @@ void ControllerPage::loadSetup(const core::RunToRunSetup& setup) {
     m_integral->setChecked(setup.integral.enabled);
     m_integralWeight->setValue(setup.integral.weight);
     m_integralWeight->setEnabled(setup.integral.enabled);
+    m_identifiedModel = setup.model;
+    m_useIdentified->setEnabled(setup.model.has_value());
+    m_useIdentified->setChecked(setup.model.has_value());
+    for (QDoubleSpinBox* f : {m_pole, m_zero, m_variance})
+        f->setEnabled(!setup.model);
     // The typed filter starts from the first point's model when it is one first-order shaping filter
     // (paper-2012: (z + 0.246)/(z - 0.9215), 0.0013 mm^2).
     const core::DisturbanceModel& d = setup.plant.points.front().disturbance;
@@ -483,6 +515,7 @@ void ControllerPage::refreshRuns() {
     }
     const int index = chosen.isValid() ? m_identifyRun->findData(chosen) : 0;
     m_identifyRun->setCurrentIndex(index < 0 ? 0 : index);
+    findProposal();
 }
 
 void ControllerPage::identify() {
@@ -496,45 +529,125 @@ void ControllerPage::identify() {
         m_identified->setText(tr("Identification failed: %1").arg(QString::fromStdString(e.what())));
         return;
     }
-    std::vector<double> gains;
-    for (const core::ControlPointSpec& p : m_applied.plant.points)
-        gains.push_back(p.gain);
+    core::RunToRunSetup setup = editedSetup();
+    setup.model = m_applied.model;  // the prior: the model the loop runs on
     m_identify->setEnabled(false);
     m_identifying = true;
     m_identified->setStyleSheet(QStringLiteral("color: #56616d;"));
-    m_identified->setText(tr("Identifying the disturbance of the stored run…"));
-    m_identification.setFuture(QtConcurrent::run(identifyFromHistory, config, runId, gains));
+    m_identified->setText(tr("Identifying the plant of the stored run…"));
+    m_identification.setFuture(QtConcurrent::run(identifyFromHistory, config, runId, setup));
 }
 
 void ControllerPage::showIdentification() {
     m_identify->setEnabled(true);
     m_identifying = false;
     const HistoryIdentification result = m_identification.result();
-    if (!result.problem.isEmpty() || result.points.empty()) {
+    if (!result.tuning) {
         m_identified->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
         m_identified->setText(tr("Identification failed: %1").arg(result.problem));
         return;
     }
+    const core::StoredRunTuning& t = *result.tuning;
+    auto list = [](const std::vector<double>& values, const std::vector<double>& errors) {
+        QStringList parts;
+        for (std::size_t i = 0; i < values.size(); ++i)
+            parts << QStringLiteral("%1 ± %2").arg(fixed(values[i], 3), fixed(errors[i], 3));
+        return parts.join(QStringLiteral(", "));
+    };
     QStringList lines;
-    for (const core::DisturbanceIdentification& id : result.points) {
-        const core::ArmaFit& f = id.fit;
-        lines << tr("Point %1 (run %2, %3 parts): a %4 ± %5, b %6 ± %7, σ² %8 mm², Ljung–Box p %9")
-                     .arg(id.series.point + 1)
-                     .arg(id.series.runId)
-                     .arg(f.values)
-                     .arg(fixed(f.ar.front(), 3), fixed(f.arStdErr.front(), 3), fixed(f.ma.front(), 3),
-                          fixed(f.maStdErr.front(), 3))
-                     .arg(QString::number(f.disturbanceModel().stationaryVarianceMm2(), 'g', 3))
-                     .arg(fixed(f.ljungBoxP, 2));
+    for (const core::PointPlantFit& p : t.identification.points)
+        lines << tr("Point %1: gain %2 ± %3, ARMA(%4, %5) AR [%6] MA [%7], σ² %8 mm², Ljung–Box p %9")
+                     .arg(p.point + 1)
+                     .arg(fixed(p.fit.gain, 3), fixed(p.fit.gainStdErr, 3))
+                     .arg(p.orders.ar)
+                     .arg(p.orders.ma)
+                     .arg(list(p.fit.noise.ar, p.fit.noise.arStdErr), list(p.fit.noise.ma, p.fit.noise.maStdErr))
+                     .arg(QString::number(p.fit.noise.noiseVarianceMm2, 'g', 3), fixed(p.fit.noise.ljungBoxP, 2));
+    const core::PointPlantFit& first = t.identification.points.front();
+    const QString design = t.design.passes
+                               ? tr("the design's margins hold (gain margin %1)").arg(fixed(t.design.worst.gain, 2))
+                               : tr("the design fails its margins: %1").arg(QString::fromStdString(t.design.why));
+    const QString text = tr("Run %1, parts %2 .. %3: plant delay %4 parts; point 1 gain %5 ± %6 (every point in the "
+                            "tooltip); %7")
+                             .arg(t.runId)
+                             .arg(t.firstPart)
+                             .arg(t.lastPart)
+                             .arg(t.identification.delayParts())
+                             .arg(fixed(first.fit.gain, 3), fixed(first.fit.gainStdErr, 3), design);
+    // The typed filter (z + b)/(z - a) shows point 1's fit when it has that form.
+    const core::ArmaFit& f = first.fit.noise;
+    if (f.ar.size() == 1 && f.ma.size() <= 1) {
+        m_loading = true;
+        m_pole->setValue(f.ar.front());
+        m_zero->setValue(f.ma.empty() ? 0.0 : f.ma.front());
+        m_variance->setValue(f.disturbanceModel().stationaryVarianceMm2());
+        m_loading = false;
     }
+    if (t.design.passes && t.design.r2Factor > 1.0) {
+        m_loading = true;
+        for (std::size_t i = 0; i < m_r2.size(); ++i)
+            m_r2[i]->setValue(t.design.setup.weights.R2(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(i)));
+        m_loading = false;
+    }
+    useModel(*t.design.setup.model, text, lines.join(QLatin1Char('\n')));
+    m_identified->setStyleSheet(t.design.passes ? QStringLiteral("color: #1f2a36;")
+                                                : QStringLiteral("color: #b00020; font-weight: bold;"));
+}
+
+void ControllerPage::useModel(const core::ControllerModel& model, const QString& text, const QString& details) {
+    m_identifiedModel = model;
     m_identified->setStyleSheet(QStringLiteral("color: #1f2a36;"));
-    m_identified->setText(lines.front());
-    m_identified->setToolTip(lines.join(QLatin1Char('\n')));
-    // The page's filter applies to all points: it takes point 1's fit (a, b and the stationary variance).
-    const core::ArmaFit& first = result.points.front().fit;
-    m_pole->setValue(first.ar.front());
-    m_zero->setValue(first.ma.front());
-    m_variance->setValue(first.disturbanceModel().stationaryVarianceMm2());
+    m_identified->setText(text);
+    m_identified->setToolTip(details);
+    m_useIdentified->setEnabled(true);
+    const bool wasChecked = m_useIdentified->isChecked();
+    m_useIdentified->setChecked(true);
+    if (wasChecked) requestPreview();  // toggled() asks for it otherwise
+}
+
+void ControllerPage::findProposal() {
+    m_proposal.reset();
+    try {
+        core::HistoryStore* history = context().data().history();
+        std::optional<std::int64_t> runId;
+        if (const QVariant chosen = m_identifyRun->currentData(); chosen.isValid()) runId = chosen.toLongLong();
+        if (history && !runId)
+            for (const core::RunSummary& run : history->runs())
+                runId = std::max(runId.value_or(run.runId), run.runId);
+        if (history && runId) {
+            const std::vector<core::AdaptationRecord> records = history->adaptations(*runId);
+            if (!records.empty() && records.back().kind == core::adaptation_kind::kProposed && records.back().modelAfter)
+                m_proposal = records.back();
+        }
+    } catch (const std::exception&) {
+        // No database yet: no proposal.
+    }
+    m_takeProposal->setVisible(m_proposal.has_value());
+    if (m_proposal) m_takeProposal->setText(tr("Use the loop's proposal (part %1)").arg(m_proposal->partNumber));
+}
+
+void ControllerPage::takeProposal() {
+    if (!m_proposal || !m_proposal->modelAfter) return;
+    try {
+        core::ControllerModel model = core::controllerModelFrom(*m_proposal->modelAfter, m_applied);
+        QStringList details;
+        for (std::size_t i = 0; i < m_proposal->modelAfter->points.size(); ++i) {
+            const core::PointModelRecord& p = m_proposal->modelAfter->points[i];
+            details << tr("Point %1: gain %2 ± %3, σ² %4 mm²")
+                           .arg(i + 1)
+                           .arg(fixed(p.gain, 3), fixed(p.gainStdErr, 3))
+                           .arg(QString::number(p.noiseVarianceMm2, 'g', 3));
+        }
+        useModel(model,
+                 tr("The loop's proposal of part %1: plant delay %2 parts, identified from %3")
+                     .arg(m_proposal->partNumber)
+                     .arg(m_proposal->modelAfter->delayParts)
+                     .arg(QString::fromStdString(m_proposal->modelAfter->source)),
+                 details.join(QLatin1Char('\n')));
+    } catch (const std::invalid_argument& e) {
+        m_identified->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
+        m_identified->setText(tr("The proposal cannot be used: %1").arg(QString::fromStdString(e.what())));
+    }
 }
 
 QString ControllerPage::identifiedText() const {

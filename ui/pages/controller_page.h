@@ -3,6 +3,7 @@
 #include <QFutureWatcher>
 #include <QString>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "core/control/margins.h"
@@ -32,7 +33,9 @@ struct TuningResult;
 /// while anything moves, the LQG design is re-synthesised off the GUI thread (coalesced) and the page
 /// shows the predicted k_eff per point beside the best EWMA's, the margins, the step response and |S|.
 /// Integral action (on/off, its weight) is part of the previewed and applied setup; "Identify from history"
-/// fits the disturbance of a stored run per point off the GUI thread and types point 1's fit into the filter.
+/// identifies the plant of a stored run off the GUI thread (per point the gain and the disturbance as ARMA(p, q),
+/// one plant delay: core::tuneFromStoredRun) and designs for all points with it ("Identified model", per point in
+/// the tooltip); a design the adaptive loop proposed (mismatch action propose) can be taken the same way.
 /// Apply asks first, records who changed what and keeps the applied setup.
 class ControllerPage : public Page {
     Q_OBJECT
@@ -66,6 +69,11 @@ public:
     QPushButton* identifyButton() const { return m_identify; }
     QComboBox* identifyRunBox() const { return m_identifyRun; }
     QString identifiedText() const;
+    /// The identified model the design uses while "Identified model" is checked (none before an identification).
+    const std::optional<core::ControllerModel>& identifiedModel() const { return m_identifiedModel; }
+    /// The "Identified model" check box and the button that takes the loop's proposal (hidden without one).
+    QCheckBox* identifiedModelBox() const { return m_useIdentified; }
+    QPushButton* proposalButton() const { return m_takeProposal; }
     /// An identification is running in the background.
     bool identifying() const;
     /// The shaping filter fields: a, b, sigma^2 (mm^2).
@@ -96,6 +104,11 @@ private:
     void refreshRuns();
     void identify();
     void showIdentification();
+    /// The chosen run's last adaptation when it is a proposal waiting for an Apply (the proposal button).
+    void findProposal();
+    void takeProposal();
+    /// Designs with `model` from now on; `text` and `details` describe it under the filter.
+    void useModel(const core::ControllerModel& model, const QString& text, const QString& details);
 
     core::RunToRunSetup m_applied;
     std::unique_ptr<TuningWorker> m_worker;
@@ -126,6 +139,10 @@ private:
     QPushButton* m_identify = nullptr;
     QLabel* m_identified = nullptr;
     QFutureWatcher<HistoryIdentification> m_identification;
+    QCheckBox* m_useIdentified = nullptr;
+    QPushButton* m_takeProposal = nullptr;
+    std::optional<core::ControllerModel> m_identifiedModel;
+    std::optional<core::AdaptationRecord> m_proposal;
     bool m_identifying = false;  ///< from the click until its result is shown
 
     std::vector<QLabel*> m_headers;

@@ -77,6 +77,8 @@ QString mismatchText(const core::Notice& n) {
     const QString then =
         n.cause == "hold"
             ? QCoreApplication::translate("Notice", "The CNC keeps the last correction until the run is restarted")
+        : n.cause == "adapt" || n.cause == "propose"
+            ? QCoreApplication::translate("Notice", "The loop switches to its robust fallback and identifies the plant")
             : QCoreApplication::translate("Notice", "The controller goes on");
     return QCoreApplication::translate("Notice",
                                        "The plant no longer matches the controller's model (part %1, point "
@@ -92,6 +94,53 @@ QString mismatchText(const core::Notice& n) {
 }
 
 /// What the loop says about a part's corrections, its tolerance or the controller's model.
+/// What the adaptive loop did after a model mismatch (core/loop/adaptive_loop.h).
+QString adaptationText(const core::Notice& n) {
+    using K = core::NoticeKind;
+    switch (n.kind) {
+        case K::FallbackEngaged:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "From part %1 the loop corrects with its robust fallback (EWMA, weight %2: stable for plant "
+                       "gains 0.5 to 2 times the model's and one more part of delay) while it identifies the plant")
+                .arg(n.part)
+                .arg(n.value, 0, 'f', 2);
+        case K::IdentificationWaiting:
+            return QCoreApplication::translate("Notice", "Part %1: the plant cannot be identified yet: %2")
+                .arg(n.part)
+                .arg(cause(n));
+        case K::ControllerAdapted:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "From part %1 the loop corrects with an LQG designed for the plant identified from %2 (plant "
+                       "delay %3 parts, smallest gain margin %4); the mismatch monitor restarts on that model")
+                .arg(n.part)
+                .arg(cause(n))
+                .arg(n.value, 0, 'f', 0)
+                .arg(n.reference, 0, 'g', 3);
+        case K::AdaptationProposed:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Part %1: an LQG for the plant identified from %2 (plant delay %3 parts) is proposed; the "
+                       "fallback goes on until an engineer applies it on the Controller page")
+                .arg(n.part)
+                .arg(cause(n))
+                .arg(n.value, 0, 'f', 0);
+        case K::AdaptationRefused:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Part %1: the design for the identified plant is not applied: %2; the fallback goes on")
+                .arg(n.part)
+                .arg(cause(n));
+        case K::ProposalAccepted:
+            return QCoreApplication::translate(
+                       "Notice", "From part %1 the loop corrects with the proposed LQG an engineer applied")
+                .arg(n.part);
+        default:
+            return {};
+    }
+}
+
 QString correctionText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {
@@ -137,6 +186,13 @@ QString correctionText(const core::Notice& n) {
                 .arg(mm(n.zMm, 1), mm(n.value), mm(n.limit - n.value), mm(n.limit));
         case K::ModelMismatch:
             return mismatchText(n);
+        case K::FallbackEngaged:
+        case K::IdentificationWaiting:
+        case K::ControllerAdapted:
+        case K::AdaptationProposed:
+        case K::AdaptationRefused:
+        case K::ProposalAccepted:
+            return adaptationText(n);
         default:
             return {};
     }

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/control/margins.h"
 #include "core/linalg/stein.h"
 
 namespace tt::core {
@@ -31,30 +32,8 @@ LinearControllerModel lqgControllerModel(const RunToRunPlant& plant, const LqgDe
 
 LinearControllerModel ewmaControllerModel(const RunToRunPlant& plant, double weight) {
     if (!(weight > 0.0 && weight <= 1.0)) throw std::invalid_argument("analysis: the EWMA weight must be in (0, 1]");
-    const Index m = plant.pointCount();
-    const Index z = plant.delay;
-    const Index nc = m * (1 + z);
-    const MatrixXd I = MatrixXd::Identity(m, m);
-    const MatrixXd G = plant.gain.asDiagonal();
-    const MatrixXd Ginv = plant.gain.cwiseInverse().asDiagonal();
-    LinearControllerModel c;
-    // u(k) = -G^-1 ((1 - lambda) offset(k-1) - lambda G u(k-z) + lambda y(k))
-    c.Cc = MatrixXd::Zero(m, nc);
-    c.Cc.block(0, 0, m, m) = -(1.0 - weight) * Ginv;
-    c.Cc.block(0, z * m, m, m) = weight * I;
-    c.Dc = -weight * Ginv;
-    c.Ac = MatrixXd::Zero(nc, nc);
-    c.Bc = MatrixXd::Zero(nc, m);
-    // offset(k) = (1 - lambda) offset(k-1) - lambda G u(k-z) + lambda y(k)
-    c.Ac.block(0, 0, m, m) = (1.0 - weight) * I;
-    c.Ac.block(0, z * m, m, m) = -weight * G;
-    c.Bc.block(0, 0, m, m) = weight * I;
-    // u(k) becomes the newest delayed input; the others shift by one.
-    c.Ac.block(m, 0, m, nc) = c.Cc;
-    c.Bc.block(m, 0, m, m) = c.Dc;
-    for (Index j = 2; j <= z; ++j)
-        c.Ac.block(j * m, (j - 1) * m, m, m) = I;
-    return c;
+    const LoopController c = ewmaLoopController(plant.gain, plant.delay, weight);
+    return {c.Ac, c.Bc, c.Cc, c.Dc};
 }
 
 LinearControllerModel openLoopControllerModel(const RunToRunPlant& plant) {

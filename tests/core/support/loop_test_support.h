@@ -123,6 +123,8 @@ public:
     std::vector<RunSummary> runs() override { return {m_runs.rbegin(), m_runs.rend()}; }
     std::vector<StoredPart> parts(std::int64_t runId) override { return m_parts[runId]; }
     std::vector<AlarmRecord> alarms(std::int64_t runId) override { return m_alarms[runId]; }
+    void recordAdaptation(std::int64_t runId, const AdaptationRecord& a) override { m_adaptations[runId].push_back(a); }
+    std::vector<AdaptationRecord> adaptations(std::int64_t runId) override { return m_adaptations[runId]; }
     std::optional<ResumePoint> resumePoint(std::optional<std::int64_t> runId) override {
         if (m_runs.empty()) return std::nullopt;
         const std::int64_t id = runId.value_or(m_runs.back().runId);
@@ -156,6 +158,7 @@ private:
     std::map<std::int64_t, std::vector<StoredPart>> m_parts;
     std::map<std::int64_t, ControllerState> m_state;
     std::map<std::int64_t, std::vector<AlarmRecord>> m_alarms;
+    std::map<std::int64_t, std::vector<AdaptationRecord>> m_adaptations;
 };
 
 }  // namespace tt::core::test
