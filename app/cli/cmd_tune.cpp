@@ -54,6 +54,8 @@ QJsonObject identificationJson(const core::StoredRunTuning& t) {
                                   {QStringLiteral("noise_variance"), p.fit.noise.noiseVarianceMm2},
                                   {QStringLiteral("mean_mm"), p.fit.meanMm},
                                   {QStringLiteral("ljung_box_p"), config::finiteOrNull(p.fit.noise.ljungBoxP)},
+                                  {QStringLiteral("gain_std_error_joint"), config::finiteOrNull(p.fit.gainStdErrJoint)},
+                                  {QStringLiteral("disturbance_kept"), p.disturbanceKept},
                                   {QStringLiteral("criterion"), p.criterion},
                                   {QStringLiteral("parts"), QJsonObject{{QStringLiteral("from"), static_cast<qint64>(p.firstPart)},
                                                                         {QStringLiteral("to"), static_cast<qint64>(p.lastPart)}}}});
@@ -106,19 +108,23 @@ void printText(const core::StoredRunTuning& t) {
                   .arg(QString::fromLatin1(core::informationCriterionName(id.criterion)).toUpper())
                   .arg(id.delayEvidence, 0, 'g', 3));
     for (const core::PointPlantFit& p : id.points) {
-        QStringList ar, ma;
-        for (std::size_t i = 0; i < p.fit.noise.ar.size(); ++i)
-            ar << QStringLiteral("%1 ± %2").arg(p.fit.noise.ar[i], 0, 'f', 3).arg(p.fit.noise.arStdErr[i], 0, 'f', 3);
-        for (std::size_t i = 0; i < p.fit.noise.ma.size(); ++i)
-            ma << QStringLiteral("%1 ± %2").arg(p.fit.noise.ma[i], 0, 'f', 3).arg(p.fit.noise.maStdErr[i], 0, 'f', 3);
-        printLine(QStringLiteral("point %1: gain %2 ± %3, ARMA(%4,%5) AR [%6] MA [%7], σ² %8 mm²")
+        // A kept disturbance has no standard errors of its own (it was not re-estimated).
+        auto list = [](const std::vector<double>& values, const std::vector<double>& errors) {
+            QStringList out;
+            for (std::size_t i = 0; i < values.size(); ++i)
+                out << (i < errors.size() ? QStringLiteral("%1 ± %2").arg(values[i], 0, 'f', 3).arg(errors[i], 0, 'f', 3)
+                                          : QString::number(values[i], 'f', 3));
+            return out.join(QStringLiteral(", "));
+        };
+        printLine(QStringLiteral("point %1: gain %2 ± %3, ARMA(%4,%5) AR [%6] MA [%7], σ² %8 mm²%9")
                       .arg(p.point + 1)
                       .arg(p.fit.gain, 0, 'f', 3)
                       .arg(p.fit.gainStdErr, 0, 'f', 3)
                       .arg(p.orders.ar)
                       .arg(p.orders.ma)
-                      .arg(ar.join(QStringLiteral(", ")), ma.join(QStringLiteral(", ")))
-                      .arg(p.fit.noise.noiseVarianceMm2, 0, 'g', 3));
+                      .arg(list(p.fit.noise.ar, p.fit.noise.arStdErr), list(p.fit.noise.ma, p.fit.noise.maStdErr))
+                      .arg(p.fit.noise.noiseVarianceMm2, 0, 'g', 3)
+                      .arg(p.disturbanceKept ? QStringLiteral(" (the run's disturbance model kept)") : QString()));
     }
     const core::AdaptedDesign& d = t.design;
     printLine(d.passes ? QStringLiteral("design: margins hold (gain margin %1, %2 extra part(s) of delay); R2 x %3")

@@ -149,8 +149,9 @@ void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const conf
         alarms.append(QJsonObject{{QStringLiteral("part"), static_cast<qint64>(a.part)},
                                   {QStringLiteral("kind"), alarmKindJson(a.kind)},
                                   {QStringLiteral("point"), a.notice.point},
-                                  {QStringLiteral("test"), a.notice.reference == 1.0 ? QStringLiteral("correlation")
-                                                                                     : QStringLiteral("variance")},
+                                  {QStringLiteral("test"), a.notice.reference == 1.0   ? QStringLiteral("correlation")
+                                                           : a.notice.reference == 2.0 ? QStringLiteral("independence")
+                                                                                       : QStringLiteral("variance")},
                                   {QStringLiteral("statistic"), config::finiteOrNull(a.notice.value)},
                                   {QStringLiteral("limit"), config::finiteOrNull(a.notice.limit)},
                                   {QStringLiteral("window_parts"), static_cast<qint64>(a.notice.otherPart)},

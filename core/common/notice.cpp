@@ -98,7 +98,8 @@ std::string alarmText(const Notice& n) {
                    " mm (deviation " + formatFixed(n.value - n.reference, 3) + " mm from the nominal): scrap";
         case NoticeKind::ModelMismatch:
             return "the plant no longer matches the controller's model (" + partText(n.part) + ", point " +
-                   std::to_string(n.point) + "): the " + (n.reference == 1.0 ? "correlation" : "variance") +
+                   std::to_string(n.point) + "): the " +
+                   (n.reference == 1.0 ? "correlation" : n.reference == 2.0 ? "independence" : "variance") +
                    " test of the innovations over " + std::to_string(n.otherPart) + " parts is " +
                    formatSignificant(n.value, 3) + ", above its limit " + formatSignificant(n.limit, 3) +
                    (n.cause == "hold"      ? "; the CNC keeps the last correction until the run is restarted"

@@ -60,7 +60,8 @@ enum class NoticeKind {
     PausedOnScrap,         ///< part: the scrap part (state: the loop paused itself, the operator continues)
     // ---- the controller's model ----
     /// part, point (the one contributing most), value: test statistic, limit: its limit, otherPart: parts
-    /// in the window, reference: 1 = the correlation test, 0 = the variance test; cause: "hold" when the
+    /// in the window, reference: 1 = the correlation test, 0 = the variance test, 2 = the independence test of the
+    /// points (their innovations move together); cause: "hold" when the
     /// CNC now keeps the last correction; "adapt" / "propose" when the loop switches to its fallback and identifies
     ModelMismatch,
     // ---- the history ----

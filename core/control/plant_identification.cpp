@@ -371,13 +371,18 @@ PlantIdentification identifyPlant(const LoopHistory& h, const PlantIdentificatio
         }
         id.lagScores.push_back(score);
     }
+    // The model's lag stays unless the data clearly prefer another one (in closed loop near minimum variance a lag can
+    // fit about as well as another without being the plant's).
+    const int prior = std::clamp(o.priorLag, 0, maxLag);
     const auto best = std::min_element(id.lagScores.begin(), id.lagScores.end());
-    id.lagParts = static_cast<int>(best - id.lagScores.begin());
+    const int bestLag = static_cast<int>(best - id.lagScores.begin());
+    id.lagParts = id.lagScores[static_cast<std::size_t>(prior)] - *best < o.minDelayEvidence ? prior : bestLag;
+    const double chosen = id.lagScores[static_cast<std::size_t>(id.lagParts)];
     id.delayEvidence = std::numeric_limits<double>::infinity();
     for (std::size_t lag = 0; lag < id.lagScores.size(); ++lag)
-        if (static_cast<int>(lag) != id.lagParts) id.delayEvidence = std::min(id.delayEvidence, id.lagScores[lag] - *best);
+        if (static_cast<int>(lag) != id.lagParts) id.delayEvidence = std::min(id.delayEvidence, id.lagScores[lag] - chosen);
     id.points = std::move(byLag[static_cast<std::size_t>(id.lagParts)]);
-    if (id.delayEvidence < o.minDelayEvidence) {
+    if (id.lagParts != prior && id.delayEvidence < o.minDelayEvidence) {
         const double n = static_cast<double>(data.front().y.size());
         const std::int64_t needed = partsFor(n, o.minDelayEvidence / std::max(id.delayEvidence, 0.5));
         throw IdentificationRefused("the plant delay is not clear yet: " + std::to_string(id.delayParts()) +

@@ -39,8 +39,12 @@ struct PlantIdentificationOptions {
     std::vector<double> priorGain;  ///< per point, the model's gain k_i: where each fit starts (none: 0)
     /// Per point, the model's disturbance in ARMA form (a_1.., b_1..): where each fit starts (none: white noise).
     std::vector<std::vector<double>> priorAr, priorMa;
+    /// The model's lag (plant delay z + priorLag): kept unless another lag beats it by minDelayEvidence.
+    int priorLag = 0;
     double maxGainRelativeStdErr = 0.35;  ///< refused while a gain's standard error is above this share of it
-    double minDelayEvidence = 10.0;  ///< refused while the best delay's criterion beats the next by less than this
+    /// Another delay than the model's replaces it only when its criterion is better by this much (then the next best
+    /// must be this much worse too, or the identification is refused: the delay is not clear).
+    double minDelayEvidence = 10.0;
     std::size_t minParts = 150;      ///< refused with fewer consecutive measured parts at a point
 
     /// Throws std::invalid_argument naming the value and its range.
@@ -68,7 +72,9 @@ struct PlantIdentification {
     InformationCriterion criterion = InformationCriterion::Bic;
     std::vector<PointPlantFit> points;
     std::vector<double> lagScores;        ///< per lag 0 .. maxExtraLag: the criterion summed over the points
-    double delayEvidence = 0.0;           ///< the next-best lag's score minus the best's (infinity: one lag tried)
+    /// The next-best lag's score minus the chosen one's (infinity: one lag tried; negative when the model's lag was
+    /// kept although another fitted slightly better).
+    double delayEvidence = 0.0;
     Eigen::MatrixXd innovationCorrelation;  ///< correlation of the points' prediction errors at the same part
     std::size_t parts = 0;                ///< parts in the record
 };
@@ -89,7 +95,7 @@ public:
 /// the joint criterion, the standard errors from its J'J) from two starts, the model the loop had (priorGain,
 /// priorAr, priorMa) and a Gauss-Newton fit of the joint model (fitInputArma, ARMA(1, 1)); the model the loop had
 /// with only its gain re-estimated is a third candidate; the criterion chooses; the lag by the sum of the points'
-/// criteria. Throws IdentificationRefused when a point has too few parts, its corrections
+/// criteria: the model's (priorLag) unless another beats it by minDelayEvidence. Throws IdentificationRefused when a point has too few parts, its corrections
 /// did not vary, its gain is not positive or too uncertain, or the delay is not clear; std::invalid_argument for
 /// bad options or a record of inconsistent sizes.
 PlantIdentification identifyPlant(const LoopHistory& history, const PlantIdentificationOptions& options);

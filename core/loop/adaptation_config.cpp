@@ -12,6 +12,7 @@ namespace tt::core {
 PlantIdentificationOptions AdaptationConfig::identification(int loopDelay, const RunToRunPlantSpec& model) const {
     PlantIdentificationOptions o;
     o.loopDelay = loopDelay;
+    o.priorLag = std::max(0, model.delay - loopDelay);
     o.maxExtraLag = maxExtraLag;
     o.maxArmaOrder = maxArmaOrder;
     o.criterion = criterion;

@@ -9,7 +9,7 @@ namespace tt::core {
 /// {"adaptation": {...}} in a preset): the record it identifies from, how often it tries, how long a switch
 /// fades, the optional dither and the identification's choices and refusals (core/control/plant_identification.h).
 struct AdaptationConfig {
-    int windowParts = 1000;   ///< identify from the last this many parts (parts since the start when fewer)
+    int windowParts = 2000;   ///< identify from the last this many parts (parts since the start when fewer)
     int retryParts = 25;      ///< a refused identification is tried again after at least this many parts
     int transferParts = 10;   ///< each switch fades the difference of the corrections out over this many parts
     /// A dither on the correction while the loop identifies (on the fallback): the diameter moves by +- this share

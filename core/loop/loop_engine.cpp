@@ -478,7 +478,7 @@ void LoopEngine::watchModel(std::int64_t partNumber) {
     what.point = found->point;
     what.value = found->statistic;
     what.limit = found->threshold;
-    what.reference = found->correlation ? 1.0 : 0.0;
+    what.reference = found->test == MismatchTest::Correlation ? 1.0 : found->test == MismatchTest::Independence ? 2.0 : 0.0;
     if (m_holding) what.cause = "hold";
     if (adapts) what.cause = mismatchActionName(action);
     alarm(kModelMismatchAlarm, what, found->partNumber);

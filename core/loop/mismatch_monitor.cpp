@@ -129,6 +129,7 @@ std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovatio
             t.b += t.pointB[i];
             t.nis += t.pointNis[i];
         }
+        if (present.size() == m) t.whitened = e;
         return t;
     }
     // Generalised least squares with the model's correlation R of the points present:
@@ -143,13 +144,15 @@ std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovatio
         for (Eigen::Index c = 0; c < k; ++c)
             R(a, c) = innovation.correlation(present[static_cast<std::size_t>(a)], present[static_cast<std::size_t>(c)]);
     }
-    const Eigen::LDLT<Eigen::MatrixXd> ldlt(R);
-    const Eigen::VectorXd Re = ldlt.solve(ep);
-    const Eigen::MatrixXd RX = ldlt.solve(Xp);
+    const Eigen::LLT<Eigen::MatrixXd> llt(R);
+    if (llt.info() != Eigen::Success) return std::nullopt;
+    const Eigen::VectorXd Re = llt.solve(ep);
+    const Eigen::MatrixXd RX = llt.solve(Xp);
     if (!Re.allFinite() || !RX.allFinite()) return std::nullopt;
     t.b = Xp.transpose() * Re;
     t.M = Xp.transpose() * RX;
     t.nis = ep.dot(Re);
+    if (k == static_cast<Eigen::Index>(m)) t.whitened = llt.matrixL().solve(ep);
     return t;
 }
 
@@ -162,8 +165,47 @@ std::optional<MismatchFinding> MismatchMonitor::add(const Innovation& innovation
         m_window.pop_front();
     if (m_window.size() < static_cast<std::size_t>(m_config.minParts)) return std::nullopt;
     std::optional<MismatchFinding> finding = test(innovation.partNumber);
+    if (!finding) finding = independence(innovation.partNumber);
     if (finding) m_tripped = true;
     return finding;
+}
+
+std::optional<MismatchFinding> MismatchMonitor::independence(std::int64_t part) const {
+    Eigen::MatrixXd S;
+    int n = 0;
+    for (const PartTerms& t : m_window) {
+        if (t.whitened.size() < 2) continue;
+        if (S.size() == 0) S = Eigen::MatrixXd::Zero(t.whitened.size(), t.whitened.size());
+        if (t.whitened.size() != S.rows()) continue;
+        S.noalias() += t.whitened * t.whitened.transpose();
+        ++n;
+    }
+    if (n < m_config.minParts || S.size() == 0) return std::nullopt;
+    const Eigen::Index m = S.rows();
+    const Eigen::VectorXd scale = S.diagonal().cwiseSqrt().cwiseInverse();
+    if (!scale.allFinite()) return std::nullopt;
+    const Eigen::MatrixXd r = scale.asDiagonal() * S * scale.asDiagonal();
+    double lm = 0.0;
+    Eigen::VectorXd share = Eigen::VectorXd::Zero(m);
+    for (Eigen::Index i = 0; i < m; ++i)
+        for (Eigen::Index j = i + 1; j < m; ++j) {
+            lm += n * r(i, j) * r(i, j);
+            share(i) += r(i, j) * r(i, j);
+            share(j) += r(i, j) * r(i, j);
+        }
+    const int dof = static_cast<int>(m * (m - 1) / 2);
+    const double limit = chernoffChiSquareFactor(dof, m_config.falseAlarmProbability) * dof;
+    if (!(lm > limit)) return std::nullopt;
+    MismatchFinding f;
+    f.partNumber = part;
+    f.windowParts = static_cast<int>(m_window.size());
+    f.test = MismatchTest::Independence;
+    f.statistic = lm;
+    f.threshold = limit;
+    Eigen::Index worst = 0;
+    share.maxCoeff(&worst);
+    f.point = static_cast<int>(worst) + 1;
+    return f;
 }
 
 std::optional<MismatchFinding> MismatchMonitor::test(std::int64_t part) const {
@@ -195,6 +237,7 @@ std::optional<MismatchFinding> MismatchMonitor::test(std::int64_t part) const {
     const double varianceLimitValue = varianceLimit(values);
     if (score > m_correlationLimit) {
         f.correlation = true;
+        f.test = MismatchTest::Correlation;
         f.statistic = score;
         f.threshold = m_correlationLimit;
     } else if (nis > varianceLimitValue) {

@@ -47,11 +47,19 @@ struct MismatchMonitorConfig {
     void validate() const;
 };
 
+/// Which test of the mismatch monitor found a mismatch.
+enum class MismatchTest {
+    Variance,     ///< the normalised innovations are larger than the model says (NIS)
+    Correlation,  ///< the innovations follow the corrections (a gain or delay error)
+    Independence  ///< the points' innovations are correlated with each other more than the model says
+};
+
 /// A detected mismatch.
 struct MismatchFinding {
     std::int64_t partNumber = 0;  ///< the part whose innovation tipped the test
     int point = 0;                ///< 1-based control point contributing most
-    bool correlation = false;     ///< true: the correlation test; false: the variance (NIS) test
+    bool correlation = false;     ///< true: the correlation test (test == Correlation)
+    MismatchTest test = MismatchTest::Variance;
     double statistic = 0.0;       ///< the test statistic
     double threshold = 0.0;       ///< its limit
     int windowParts = 0;          ///< parts in the window
@@ -68,6 +76,12 @@ struct MismatchFinding {
 ///  - variance test: the normalised innovation squared summed over the window (chi-square with as many
 ///    degrees of freedom n as values), limit c n with the Chernoff bound exp(-n/2 (c - 1 - ln c)) = alpha,
 ///    so the false-alarm probability is at most alpha.
+///  - independence test (Breusch & Pagan 1980, the LM test of cross-sectional independence): over the window's parts
+///    with every point measured, LM = n sum_{i<j} r_ij^2 of the sample correlations of the innovations whitened with
+///    the model's correlation (Innovation::correlation; identity for the preset's independent points), chi-square
+///    with m(m-1)/2 degrees of freedom under the model; limit from the same Chernoff bound. A lathe whose points
+///    move together (a tool offset moves the whole shaft) fails it at once against a model of independent points.
+/// Innovations with a model correlation are whitened (generalised least squares) in all three tests.
 /// Latches at the first finding until reset().
 class MismatchMonitor {
 public:
@@ -90,6 +104,7 @@ public:
 
 private:
     struct PartTerms {
+        Eigen::VectorXd whitened;  ///< the part's whitened innovations when every point has one (else empty)
         Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
         Eigen::Vector2d b = Eigen::Vector2d::Zero();
         double nis = 0.0;
@@ -101,6 +116,7 @@ private:
     };
     std::optional<PartTerms> terms(const Innovation& innovation) const;
     std::optional<MismatchFinding> test(std::int64_t part) const;
+    std::optional<MismatchFinding> independence(std::int64_t part) const;
 
     MismatchMonitorConfig m_config;
     double m_correlationLimit = 0.0;

@@ -1490,6 +1490,10 @@
         <source>From part %1 the loop corrects with the proposed LQG an engineer applied</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>independence</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2866,6 +2870,14 @@
     </message>
     <message>
         <source>Retraining of the corrective pulse on drive drifts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adaptive control: a robust fallback and a new design on a mismatch</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The adaptations on the Run page and the Reports page&apos;s chart</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

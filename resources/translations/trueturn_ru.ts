@@ -1492,6 +1492,10 @@
         <source>From part %1 the loop corrects with the proposed LQG an engineer applied</source>
         <translation>С детали %1 контур корректирует предложенным LQG-регулятором, который применил инженер</translation>
     </message>
+    <message>
+        <source>independence</source>
+        <translation>перекрёстный</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2877,6 +2881,14 @@
     <message>
         <source>Retraining of the corrective pulse on drive drifts</source>
         <translation>Переобучение корректирующего импульса при дрейфе приводов</translation>
+    </message>
+    <message>
+        <source>Adaptive control: a robust fallback and a new design on a mismatch</source>
+        <translation>Адаптивное управление: резервный регулятор и новый расчёт</translation>
+    </message>
+    <message>
+        <source>The adaptations on the Run page and the Reports page&apos;s chart</source>
+        <translation>Адаптации на странице «Работа» и на карте страницы «Отчёты»</translation>
     </message>
 </context>
 <context>

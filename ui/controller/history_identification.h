@@ -19,7 +19,7 @@ struct HistoryIdentification {
 };
 
 /// Opens its own connection to `config` (the calling thread's; QtSql connections do not cross threads), identifies
-/// run `runId` (none: the newest) for the controller's `setup` (its delay, its model's gains as the prior) and
+/// run `runId` (none: the newest) with its own delay z for the controller's `setup` (its model as the start) and
 /// designs for it. Meant for a worker thread.
 HistoryIdentification identifyFromHistory(const storage::DatabaseConfig& config, std::optional<std::int64_t> runId,
                                           const core::RunToRunSetup& setup);

@@ -549,9 +549,10 @@ void ControllerPage::showIdentification() {
     }
     const core::StoredRunTuning& t = *result.tuning;
     auto list = [](const std::vector<double>& values, const std::vector<double>& errors) {
-        QStringList parts;
+        QStringList parts;  // a kept disturbance has no standard errors of its own
         for (std::size_t i = 0; i < values.size(); ++i)
-            parts << QStringLiteral("%1 ± %2").arg(fixed(values[i], 3), fixed(errors[i], 3));
+            parts << (i < errors.size() ? QStringLiteral("%1 ± %2").arg(fixed(values[i], 3), fixed(errors[i], 3))
+                                        : fixed(values[i], 3));
         return parts.join(QStringLiteral(", "));
     };
     QStringList lines;
@@ -583,6 +584,9 @@ void ControllerPage::showIdentification() {
         m_variance->setValue(f.disturbanceModel().stationaryVarianceMm2());
         m_loading = false;
     }
+    m_loading = true;
+    m_delay->setValue(t.identification.loopDelay);  // the run's z: the identified lag is counted from it
+    m_loading = false;
     if (t.design.passes && t.design.r2Factor > 1.0) {
         m_loading = true;
         for (std::size_t i = 0; i < m_r2.size(); ++i)
@@ -630,6 +634,9 @@ void ControllerPage::takeProposal() {
     if (!m_proposal || !m_proposal->modelAfter) return;
     try {
         core::ControllerModel model = core::controllerModelFrom(*m_proposal->modelAfter, m_applied);
+        m_loading = true;
+        m_delay->setValue(m_proposal->modelAfter->delayParts - m_proposal->modelAfter->lagParts);
+        m_loading = false;
         QStringList details;
         for (std::size_t i = 0; i < m_proposal->modelAfter->points.size(); ++i) {
             const core::PointModelRecord& p = m_proposal->modelAfter->points[i];

@@ -72,8 +72,9 @@ QString stateText(const core::Notice& n) {
 
 /// The mismatch monitor's alarm: which test, over how many parts, and what the loop does about it.
 QString mismatchText(const core::Notice& n) {
-    const QString test = n.reference == 1.0 ? QCoreApplication::translate("Notice", "correlation")
-                                            : QCoreApplication::translate("Notice", "variance");
+    const QString test = n.reference == 1.0   ? QCoreApplication::translate("Notice", "correlation")
+                         : n.reference == 2.0 ? QCoreApplication::translate("Notice", "independence")
+                                              : QCoreApplication::translate("Notice", "variance");
     const QString then =
         n.cause == "hold"
             ? QCoreApplication::translate("Notice", "The CNC keeps the last correction until the run is restarted")

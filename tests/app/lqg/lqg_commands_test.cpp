@@ -127,9 +127,11 @@ TEST_F(RunToRunCommands, SimulateReproducesTable2AndLqgBeatsTheBestEwma) {
                                            "--seed", "1", "--controller", "lqg", "--json"});
         ASSERT_EQ(lqg.exitCode, 0) << qPrintable(lqg.err);
         const QJsonObject j = lqg.json();
-        EXPECT_EQ(keysOf(j), set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "verdicts",
-                                  "tolerance_alarms", "alarms", "corrections", "integral", "plant",
-                                  "systematic_from_part", "largest_systematic_mm"}));
+        EXPECT_EQ(keysOf(j),
+                  set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "verdicts",
+                       "tolerance_alarms", "alarms", "corrections", "integral", "plant", "systematic_from_part",
+                       "largest_systematic_mm", "mismatch_action", "adaptations", "adaptation_notices"}));
+        EXPECT_TRUE(j["adaptations"].toArray().isEmpty()) << "the matching plant: no adaptation";
         EXPECT_EQ(j["controller"].toString(), "lqg");
         EXPECT_EQ(j["delay"].toInt(), z);
         EXPECT_EQ(j["parts"].toInt(), 20000);
@@ -153,9 +155,10 @@ TEST_F(RunToRunCommands, SimulateReproducesTable2AndLqgBeatsTheBestEwma) {
                                             "--controller", "ewma", "--ewma-weight", "auto", "--json"});
         ASSERT_EQ(ewma.exitCode, 0) << qPrintable(ewma.err);
         const QJsonObject e = ewma.json();
-        EXPECT_EQ(keysOf(e), set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "ewma_weight",
-                                  "verdicts", "alarms", "corrections", "integral", "plant", "tolerance_alarms",
-                                  "systematic_from_part", "largest_systematic_mm"}));
+        EXPECT_EQ(keysOf(e),
+                  set({"controller", "delay", "parts", "warmup_parts", "points", "k_eff", "ewma_weight", "verdicts",
+                       "alarms", "corrections", "integral", "plant", "tolerance_alarms", "systematic_from_part",
+                       "largest_systematic_mm", "mismatch_action", "adaptations", "adaptation_notices"}));
         EXPECT_GT(e["ewma_weight"].toDouble(), 0.0);
         EXPECT_LE(e["ewma_weight"].toDouble(), 1.0);
         EXPECT_LT(e["k_eff"].toDouble(), j["k_eff"].toDouble()) << "z " << z;

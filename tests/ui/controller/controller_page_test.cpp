@@ -221,18 +221,62 @@ TEST_F(ControllerPageTest, IdentifyFromHistoryTypesTheFitOfAStoredRun) {
         QTest::mouseClick(page->identifyButton(), Qt::LeftButton);
         ASSERT_TRUE(waitForIdentification(*page));
         // The preset's shaping filter is (z + 0.246)/(z - 0.9215) (resources/presets/paper-2012.json); 600
-        // parts give a standard error of a of about 0.02, so 0.05 is a safe bound.
+        // parts give a standard error of a of about 0.02, so 0.05 is a safe bound (the identification keeps the
+        // run's own disturbance when it still fits, then a is the preset's).
         EXPECT_NEAR(page->typedPole(), 0.9215, 0.05) << qPrintable(page->identifiedText());
         EXPECT_TRUE(page->identifiedText().contains(QStringLiteral("±")))
             << qPrintable(page->identifiedText());  // with standard errors
+        // Every point identified and designed for: the model of all five points, the run's delay.
+        ASSERT_TRUE(page->identifiedModel());
+        EXPECT_EQ(page->identifiedModel()->gain.size(), 5u);
+        for (double g : page->identifiedModel()->gain) EXPECT_NEAR(g, 2.0, 0.3);  // paper-2012's k_i = 2
+        EXPECT_TRUE(page->identifiedModelBox()->isChecked());
+        EXPECT_TRUE(page->identifiedText().contains(QStringLiteral("5")));
+        EXPECT_EQ(page->editedSetup().plant.delay, 1);
         ASSERT_TRUE(waitForNewest(*page));
+        ASSERT_TRUE(page->shownResult()->setup.model);
+        EXPECT_EQ(page->shownResult()->setup.model->gain, page->identifiedModel()->gain)
+            << "the predictions are those of the identified model";
         EXPECT_NEAR(page->shownResult()->setup.plant.points[0].disturbance.stationaryVarianceMm2(),
                     page->typedVarianceMm2(), 1e-6)
-            << "the predictions follow the identified filter";
+            << "the typed filter shows point 1's fit";
         EXPECT_LE(window.width(), 1280);
         EXPECT_LE(window.height(), 800);
         EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_identify_") + lang));
     }
+}
+
+// A run whose loop proposed a design (mismatch action propose, a plant of twice the gain): the page offers the
+// proposal; taking it designs with the proposed model (gains about 4) from the next preview, and Apply hands it on.
+TEST_F(ControllerPageTest, TakesTheLoopsProposal) {
+    QTemporaryDir runDir;
+    context.databasePath = runDir.filePath(QStringLiteral("history.sqlite"));
+    QProcess simulate;
+    simulate.start(QStringLiteral(TRUETURN_EXE),
+                   {QStringLiteral("simulate"), QStringLiteral("--db"), context.databasePath, QStringLiteral("--parts"),
+                    QStringLiteral("400"), QStringLiteral("--warmup"), QStringLiteral("0"), QStringLiteral("--delay"),
+                    QStringLiteral("2"), QStringLiteral("--plant-gain"), QStringLiteral("2"),
+                    QStringLiteral("--mismatch-action"), QStringLiteral("propose")});
+    ASSERT_TRUE(simulate.waitForFinished(120000));
+    ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
+    MainWindow window(context);
+    window.resize(1280, 800);
+    window.show();
+    window.showPage(PageId::Controller);
+    auto* page = qobject_cast<ControllerPage*>(window.page(PageId::Controller));
+    ASSERT_NE(page, nullptr);
+    ASSERT_TRUE(page->proposalButton()->isVisible());
+    QTest::mouseClick(page->proposalButton(), Qt::LeftButton);
+    ASSERT_TRUE(page->identifiedModel());
+    for (double g : page->identifiedModel()->gain) EXPECT_NEAR(g, 4.0, 0.6);
+    EXPECT_EQ(page->editedSetup().plant.delay, 2);
+    ASSERT_TRUE(waitForNewest(*page));
+    ASSERT_TRUE(page->shownResult()->setup.model);
+    prompt.answers.push_back(Prompt::Answer::Yes);
+    QTest::mouseClick(window.findChild<QPushButton*>(QStringLiteral("applyTuning")), Qt::LeftButton);
+    ASSERT_TRUE(page->appliedSetup().model);
+    EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("identified model"))) << qPrintable(page->lastRecord());
+    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_proposal_en")));
 }
 
 }  // namespace
