@@ -34,7 +34,7 @@ constexpr const char* kImplemented[] = {
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
-    QT_TRANSLATE_NOOP("tt::ui::About", "The adaptations on the Run page and the Reports page's chart"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The adaptations on the Reports page's control chart"),
 };
 
 template <std::size_t N>

@@ -1494,6 +1494,26 @@
         <source>independence</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Controller: robust EWMA fallback (weight %1) from part %2, while the plant is identified</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller: LQG adapted at part %1 (plant delay %2 parts, smallest gain margin %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller: robust EWMA fallback; a new design waits for an engineer&apos;s Apply (Controller page)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller: robust EWMA fallback; the new design was not applied: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controller: LQG applied by an engineer at part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2877,7 +2897,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The adaptations on the Run page and the Reports page&apos;s chart</source>
+        <source>The adaptations on the Reports page&apos;s control chart</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

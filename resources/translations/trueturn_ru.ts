@@ -1496,6 +1496,26 @@
         <source>independence</source>
         <translation>перекрёстный</translation>
     </message>
+    <message>
+        <source>Controller: robust EWMA fallback (weight %1) from part %2, while the plant is identified</source>
+        <translation>Регулятор: резервный EWMA (вес %1) с детали %2, пока идентифицируется объект</translation>
+    </message>
+    <message>
+        <source>Controller: LQG adapted at part %1 (plant delay %2 parts, smallest gain margin %3)</source>
+        <translation>Регулятор: LQG, адаптирован на детали %1 (задержка объекта %2 дет., наименьший запас по усилению %3)</translation>
+    </message>
+    <message>
+        <source>Controller: robust EWMA fallback; a new design waits for an engineer&apos;s Apply (Controller page)</source>
+        <translation>Регулятор: резервный EWMA; новый расчёт ждёт применения инженером (страница «Регулятор»)</translation>
+    </message>
+    <message>
+        <source>Controller: robust EWMA fallback; the new design was not applied: %1</source>
+        <translation>Регулятор: резервный EWMA; новый расчёт не применён: %1</translation>
+    </message>
+    <message>
+        <source>Controller: LQG applied by an engineer at part %1</source>
+        <translation>Регулятор: LQG, применён инженером на детали %1</translation>
+    </message>
 </context>
 <context>
     <name>ProbeMandrel</name>
@@ -2887,8 +2907,8 @@
         <translation>Адаптивное управление: резервный регулятор и новый расчёт</translation>
     </message>
     <message>
-        <source>The adaptations on the Run page and the Reports page&apos;s chart</source>
-        <translation>Адаптации на странице «Работа» и на карте страницы «Отчёты»</translation>
+        <source>The adaptations on the Reports page&apos;s control chart</source>
+        <translation>Адаптации на контрольной карте страницы «Отчёты»</translation>
     </message>
 </context>
 <context>

@@ -142,6 +142,46 @@ QString adaptationText(const core::Notice& n) {
     }
 }
 
+}  // namespace
+
+QString controllerInUseText(const core::Notice& n) {
+    using K = core::NoticeKind;
+    switch (n.kind) {
+        case K::FallbackEngaged:
+            return QCoreApplication::translate(
+                       "Notice",
+                       "Controller: robust EWMA fallback (weight %1) from part %2, while the plant is identified")
+                .arg(n.value, 0, 'f', 2)
+                .arg(n.part);
+        case K::ControllerAdapted:
+            return QCoreApplication::translate(
+                       "Notice", "Controller: LQG adapted at part %1 (plant delay %2 parts, smallest gain margin %3)")
+                .arg(n.part)
+                .arg(n.value, 0, 'f', 0)
+                .arg(n.reference, 0, 'g', 3);
+        case K::AdaptationProposed:
+            return QCoreApplication::translate(
+                "Notice",
+                "Controller: robust EWMA fallback; a new design waits for an engineer's Apply (Controller page)");
+        case K::AdaptationRefused:
+            return QCoreApplication::translate("Notice",
+                                               "Controller: robust EWMA fallback; the new design was not applied: %1")
+                .arg(cause(n));
+        case K::ProposalAccepted:
+            return QCoreApplication::translate("Notice", "Controller: LQG applied by an engineer at part %1")
+                .arg(n.part);
+        default:
+            return {};
+    }
+}
+
+bool controllerInUseIsFallback(const core::Notice& n) {
+    using K = core::NoticeKind;
+    return n.kind == K::FallbackEngaged || n.kind == K::AdaptationProposed || n.kind == K::AdaptationRefused;
+}
+
+namespace {
+
 QString correctionText(const core::Notice& n) {
     using K = core::NoticeKind;
     switch (n.kind) {

@@ -171,6 +171,11 @@ QWidget* ShaftRunPanel::buildLeft() {
     m_plantLink->setWordWrap(true);
     m_plantLink->hide();
     column->addWidget(m_plantLink);
+    m_controllerInUse = new QLabel(left);
+    m_controllerInUse->setObjectName(QStringLiteral("controllerInUse"));
+    m_controllerInUse->setWordWrap(true);
+    m_controllerInUse->hide();
+    column->addWidget(m_controllerInUse);
     column->addWidget(m_manual);
     return left;
 }
@@ -606,6 +611,7 @@ void ShaftRunPanel::onStarted(const runtime::RunLayout& layout) {
     m_haveRun = true;
     m_profile->setRun(layout);
     m_verdicts->reset();
+    m_controllerInUse->hide();
     m_manual->setPoints(layout.pointZMm, layout.nominalDiameterMm, layout.plausibleRangeMm);
     addAlarm(tr("Run started: %1, %2, z = %3, %4")
                  .arg(layout.preset, m_controller->itemText(m_controller->findData(layout.controller)))
@@ -637,8 +643,10 @@ void ShaftRunPanel::onSnapshot(const runtime::LoopSnapshot& snapshot) {
 void ShaftRunPanel::onLoopEvent(const core::LoopEvent& event) {
     m_profile->onLoopEvent(event);
     m_verdicts->onLoopEvent(event);
-    if (event.kind == core::LoopEvent::Kind::Alarm)
+    if (event.kind == core::LoopEvent::Kind::Alarm) {
         addAlarm(alarmText(event.notice), event.alarmKind != "correction-limited");
+        showControllerInUse(event.notice);
+    }
     if (event.kind == core::LoopEvent::Kind::PartStarted) updateLathePanel();
 }
 
@@ -755,6 +763,16 @@ QString ShaftRunPanel::deviceText() const {
     const QString diameters = m_snapshot.manualEntry || !gauge ? tr("Diameters: typed in by hand")
                                                                : line(tr("Gauge"), gauge->name, m_snapshot.gauge);
     return QStringLiteral("%1\n%2").arg(line(tr("CNC"), output ? output->name : QString(), m_snapshot.cnc), diameters);
+}
+
+void ShaftRunPanel::showControllerInUse(const core::Notice& notice) {
+    const QString text = controllerInUseText(notice);
+    if (text.isEmpty()) return;
+    m_controllerInUse->setText(text);
+    m_controllerInUse->setStyleSheet(controllerInUseIsFallback(notice)
+                                         ? QStringLiteral("color: #9a5b00; font-weight: bold;")
+                                         : QStringLiteral("font-weight: bold;"));
+    m_controllerInUse->show();
 }
 
 void ShaftRunPanel::onPlantStatus(const storage::ForwarderStatus& status) {

@@ -97,6 +97,8 @@ private:
     void onSnapshot(const runtime::LoopSnapshot& snapshot);
     void onLoopEvent(const core::LoopEvent& event);
     void addAlarm(const QString& text, bool severe);
+    /// After an adaptation notice, the controller the loop now uses (amber while on the fallback).
+    void showControllerInUse(const core::Notice& notice);
     void onOutOfTolerance();
     void fillDeviceChoices();
     void restoreChoices();
@@ -150,7 +152,8 @@ private:
     QLabel* m_state;
     QLabel* m_detail;
     QLabel* m_devices;
-    QLabel* m_plantLink = nullptr;  ///< the plant database's link (shown with a plant database only)
+    QLabel* m_plantLink = nullptr;        ///< the plant database's link (shown with a plant database only)
+    QLabel* m_controllerInUse = nullptr;  ///< the controller after an adaptation (shown once the loop adapted)
     QCheckBox* m_manualMode;
     ManualEntryPanel* m_manual;
     QPushButton* m_skip;
