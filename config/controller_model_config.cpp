@@ -75,7 +75,8 @@ Eigen::MatrixXd correlationAt(const QJsonValue& value, std::size_t m) {
     for (std::size_t i = 0; i < m; ++i) {
         const std::vector<double> row = numbersOf(rows.at(static_cast<qsizetype>(i)));
         if (row.size() != m)
-            fail(".innovation_correlation", "must be " + std::to_string(m) + " rows of " + std::to_string(m) + " numbers");
+            fail(".innovation_correlation",
+                 "must be " + std::to_string(m) + " rows of " + std::to_string(m) + " numbers");
         for (std::size_t j = 0; j < m; ++j) {
             if (!std::isfinite(row[j]) || std::abs(row[j]) > 1.0)
                 fail(".innovation_correlation", "every entry must be a number in -1 .. 1");
@@ -112,8 +113,7 @@ std::optional<core::ControllerModel> controllerModelFromPreset(const QJsonObject
         if (!(gain > 0.0 && gain <= 100.0)) fail(where + ".gain", "must be a number in (0, 100]");
         model.gain.push_back(gain);
         model.disturbance.push_back(disturbanceFromJson(
-            p.value(QStringLiteral("disturbance")),
-            QStringLiteral("controller_model.points[%1].disturbance").arg(i)));
+            p.value(QStringLiteral("disturbance")), QStringLiteral("controller_model.points[%1].disturbance").arg(i)));
     }
     model.innovationCorrelation = correlationAt(o.value(QStringLiteral("innovation_correlation")), points);
     try {
@@ -142,7 +142,8 @@ QJsonObject controllerModelJson(const core::PlantModelRecord& model) {
                   {QStringLiteral("points"), points}};
     if (!model.criterion.empty()) o.insert(QStringLiteral("criterion"), QString::fromStdString(model.criterion));
     if (!model.innovationCorrelation.empty())
-        o.insert(QStringLiteral("innovation_correlation"), matrixJson(model.innovationCorrelation, model.points.size()));
+        o.insert(QStringLiteral("innovation_correlation"),
+                 matrixJson(model.innovationCorrelation, model.points.size()));
     return o;
 }
 

@@ -42,23 +42,24 @@ QJsonObject identificationJson(const core::StoredRunTuning& t) {
     const core::PlantIdentification& id = t.identification;
     QJsonArray points;
     for (const core::PointPlantFit& p : id.points)
-        points.append(QJsonObject{{QStringLiteral("point"), p.point + 1},
-                                  {QStringLiteral("gain"), p.fit.gain},
-                                  {QStringLiteral("gain_std_error"), p.fit.gainStdErr},
-                                  {QStringLiteral("orders"),
-                                   QJsonObject{{QStringLiteral("ar"), p.orders.ar}, {QStringLiteral("ma"), p.orders.ma}}},
-                                  {QStringLiteral("ar"), numbers(p.fit.noise.ar)},
-                                  {QStringLiteral("ma"), numbers(p.fit.noise.ma)},
-                                  {QStringLiteral("ar_std_error"), numbers(p.fit.noise.arStdErr)},
-                                  {QStringLiteral("ma_std_error"), numbers(p.fit.noise.maStdErr)},
-                                  {QStringLiteral("noise_variance"), p.fit.noise.noiseVarianceMm2},
-                                  {QStringLiteral("mean_mm"), p.fit.meanMm},
-                                  {QStringLiteral("ljung_box_p"), config::finiteOrNull(p.fit.noise.ljungBoxP)},
-                                  {QStringLiteral("gain_std_error_joint"), config::finiteOrNull(p.fit.gainStdErrJoint)},
-                                  {QStringLiteral("disturbance_kept"), p.disturbanceKept},
-                                  {QStringLiteral("criterion"), p.criterion},
-                                  {QStringLiteral("parts"), QJsonObject{{QStringLiteral("from"), static_cast<qint64>(p.firstPart)},
-                                                                        {QStringLiteral("to"), static_cast<qint64>(p.lastPart)}}}});
+        points.append(QJsonObject{
+            {QStringLiteral("point"), p.point + 1},
+            {QStringLiteral("gain"), p.fit.gain},
+            {QStringLiteral("gain_std_error"), p.fit.gainStdErr},
+            {QStringLiteral("orders"),
+             QJsonObject{{QStringLiteral("ar"), p.orders.ar}, {QStringLiteral("ma"), p.orders.ma}}},
+            {QStringLiteral("ar"), numbers(p.fit.noise.ar)},
+            {QStringLiteral("ma"), numbers(p.fit.noise.ma)},
+            {QStringLiteral("ar_std_error"), numbers(p.fit.noise.arStdErr)},
+            {QStringLiteral("ma_std_error"), numbers(p.fit.noise.maStdErr)},
+            {QStringLiteral("noise_variance"), p.fit.noise.noiseVarianceMm2},
+            {QStringLiteral("mean_mm"), p.fit.meanMm},
+            {QStringLiteral("ljung_box_p"), config::finiteOrNull(p.fit.noise.ljungBoxP)},
+            {QStringLiteral("gain_std_error_joint"), config::finiteOrNull(p.fit.gainStdErrJoint)},
+            {QStringLiteral("disturbance_kept"), p.disturbanceKept},
+            {QStringLiteral("criterion"), p.criterion},
+            {QStringLiteral("parts"), QJsonObject{{QStringLiteral("from"), static_cast<qint64>(p.firstPart)},
+                                                  {QStringLiteral("to"), static_cast<qint64>(p.lastPart)}}}});
     return QJsonObject{{QStringLiteral("delay"), id.delayParts()},
                        {QStringLiteral("lag"), id.lagParts},
                        {QStringLiteral("criterion"), QString::fromLatin1(core::informationCriterionName(id.criterion))},
@@ -74,7 +75,8 @@ QJsonObject keffJson(const core::SteadyStateVariances& v) {
                        {QStringLiteral("points"), numbers(v.kEff)}};
 }
 
-QJsonObject toJson(const core::StoredRunTuning& t, const QString& preset, int delay, const std::optional<QString>& out) {
+QJsonObject toJson(const core::StoredRunTuning& t, const QString& preset, int delay,
+                   const std::optional<QString>& out) {
     const core::AdaptedDesign& d = t.design;
     QJsonObject o{{QStringLiteral("run_id"), static_cast<qint64>(t.runId)},
                   {QStringLiteral("preset"), preset},
@@ -82,12 +84,11 @@ QJsonObject toJson(const core::StoredRunTuning& t, const QString& preset, int de
                   {QStringLiteral("parts"), QJsonObject{{QStringLiteral("from"), static_cast<qint64>(t.firstPart)},
                                                         {QStringLiteral("to"), static_cast<qint64>(t.lastPart)}}},
                   {QStringLiteral("identification"), identificationJson(t)},
-                  {QStringLiteral("design"),
-                   QJsonObject{{QStringLiteral("passes"), d.passes},
-                               {QStringLiteral("why"), QString::fromStdString(d.why)},
-                               {QStringLiteral("r2_factor"), d.r2Factor},
-                               {QStringLiteral("required_gain_factor"), d.requiredGainFactor},
-                               {QStringLiteral("margins"), storage::marginsJson(d.worst)}}},
+                  {QStringLiteral("design"), QJsonObject{{QStringLiteral("passes"), d.passes},
+                                                         {QStringLiteral("why"), QString::fromStdString(d.why)},
+                                                         {QStringLiteral("r2_factor"), d.r2Factor},
+                                                         {QStringLiteral("required_gain_factor"), d.requiredGainFactor},
+                                                         {QStringLiteral("margins"), storage::marginsJson(d.worst)}}},
                   {QStringLiteral("k_eff_on_identified_plant"),
                    QJsonObject{{QStringLiteral("run_controller"), keffJson(t.current)},
                                {QStringLiteral("new_design"), keffJson(t.adapted)},
@@ -112,8 +113,9 @@ void printText(const core::StoredRunTuning& t) {
         auto list = [](const std::vector<double>& values, const std::vector<double>& errors) {
             QStringList out;
             for (std::size_t i = 0; i < values.size(); ++i)
-                out << (i < errors.size() ? QStringLiteral("%1 ± %2").arg(values[i], 0, 'f', 3).arg(errors[i], 0, 'f', 3)
-                                          : QString::number(values[i], 'f', 3));
+                out << (i < errors.size()
+                            ? QStringLiteral("%1 ± %2").arg(values[i], 0, 'f', 3).arg(errors[i], 0, 'f', 3)
+                            : QString::number(values[i], 'f', 3));
             return out.join(QStringLiteral(", "));
         };
         printLine(QStringLiteral("point %1: gain %2 ± %3, ARMA(%4,%5) AR [%6] MA [%7], σ² %8 mm²%9")
@@ -132,11 +134,12 @@ void printText(const core::StoredRunTuning& t) {
                              .arg(d.worst.extraPartsTolerated)
                              .arg(d.r2Factor, 0, 'g', 3)
                        : QStringLiteral("design refused: %1").arg(QString::fromStdString(d.why)));
-    printLine(QStringLiteral("k_eff on the identified plant: run's controller %1, new design %2, best EWMA %3 (weight %4)")
-                  .arg(t.current.kEffOverall, 0, 'f', 2)
-                  .arg(t.adapted.kEffOverall, 0, 'f', 2)
-                  .arg(t.ewma.kEffOverall, 0, 'f', 2)
-                  .arg(t.ewmaWeight, 0, 'f', 2));
+    printLine(
+        QStringLiteral("k_eff on the identified plant: run's controller %1, new design %2, best EWMA %3 (weight %4)")
+            .arg(t.current.kEffOverall, 0, 'f', 2)
+            .arg(t.adapted.kEffOverall, 0, 'f', 2)
+            .arg(t.ewma.kEffOverall, 0, 'f', 2)
+            .arg(t.ewmaWeight, 0, 'f', 2));
 }
 
 /// The preset the next runs use: the run's preset with the identified model, the run's delay and (when the
@@ -207,9 +210,8 @@ int run(const QStringList& arguments) {
     for (const core::RunSummary& r : history->runs())
         if (r.runId == runId) summary = r;
     if (!summary) throw UsageError("--run: the history has no run " + std::to_string(runId));
-    const QString preset = parser.isSet(QStringLiteral("preset"))
-                               ? parser.value(QStringLiteral("preset"))
-                               : QString::fromStdString(summary->description.preset);
+    const QString preset = parser.isSet(QStringLiteral("preset")) ? parser.value(QStringLiteral("preset"))
+                                                                  : QString::fromStdString(summary->description.preset);
     config::LoopScenario scenario;
     try {
         scenario = config::loadLoopScenario(preset, summary->description.delayParts);

@@ -191,9 +191,10 @@ void addRunRequestOptions(CommandParser& parser) {
 }
 
 std::optional<QString> runOptionGiven(const CommandParser& parser) {
-    for (const char* option : {"preset", "delay", "parts", "warmup", "seed", "controller", "ewma-weight", "plant-gain",
-                               "plant-delay", "step-at", "step-mm", "step-point", "integral", "integral-weight",
-                               "mismatch-action", "dither-share", "drift-weight", "cnc", "cnc-mode", "cnc-program-folder"})
+    for (const char* option : {"preset",       "delay",        "parts",      "warmup",          "seed",
+                               "controller",   "ewma-weight",  "plant-gain", "plant-delay",     "step-at",
+                               "step-mm",      "step-point",   "integral",   "integral-weight", "mismatch-action",
+                               "dither-share", "drift-weight", "cnc",        "cnc-mode",        "cnc-program-folder"})
         if (parser.isSet(QString::fromLatin1(option))) return QStringLiteral("--") + QString::fromLatin1(option);
     return std::nullopt;
 }

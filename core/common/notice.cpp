@@ -99,7 +99,9 @@ std::string alarmText(const Notice& n) {
         case NoticeKind::ModelMismatch:
             return "the plant no longer matches the controller's model (" + partText(n.part) + ", point " +
                    std::to_string(n.point) + "): the " +
-                   (n.reference == 1.0 ? "correlation" : n.reference == 2.0 ? "independence" : "variance") +
+                   (n.reference == 1.0   ? "correlation"
+                    : n.reference == 2.0 ? "independence"
+                                         : "variance") +
                    " test of the innovations over " + std::to_string(n.otherPart) + " parts is " +
                    formatSignificant(n.value, 3) + ", above its limit " + formatSignificant(n.limit, 3) +
                    (n.cause == "hold"      ? "; the CNC keeps the last correction until the run is restarted"
@@ -115,8 +117,9 @@ std::string alarmText(const Notice& n) {
         case NoticeKind::IdentificationWaiting:
             return partText(n.part) + ": the plant cannot be identified yet: " + n.cause;
         case NoticeKind::ControllerAdapted:
-            return "from " + partText(n.part) + " the loop corrects with an LQG designed for the plant identified from " +
-                   n.cause + " (plant delay " + formatSignificant(n.value, 2) + " parts, smallest gain margin " +
+            return "from " + partText(n.part) +
+                   " the loop corrects with an LQG designed for the plant identified from " + n.cause +
+                   " (plant delay " + formatSignificant(n.value, 2) + " parts, smallest gain margin " +
                    (std::isfinite(n.reference) ? formatSignificant(n.reference, 3) : std::string("unlimited")) +
                    "); the mismatch monitor restarts on that model";
         case NoticeKind::AdaptationProposed:

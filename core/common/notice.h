@@ -72,10 +72,10 @@ enum class NoticeKind {
     // ---- the adaptive loop (after the model mismatch: the stored names and the order above never change) ----
     FallbackEngaged,        ///< part: the fallback takes over here, otherPart: the alarm's part, value: its EWMA weight
     IdentificationWaiting,  ///< part, value: parts more needed (NaN: more parts alone will not do), cause: why
-    ControllerAdapted,      ///< part: takes over here, value: plant delay, reference: smallest gain margin, cause: source
-    AdaptationProposed,     ///< part, value: plant delay, reference: smallest gain margin, cause: the data's source
-    AdaptationRefused,      ///< part, cause: why the new design is not applied (its margins)
-    ProposalAccepted,       ///< part: the proposed design takes over here
+    ControllerAdapted,   ///< part: takes over here, value: plant delay, reference: smallest gain margin, cause: source
+    AdaptationProposed,  ///< part, value: plant delay, reference: smallest gain margin, cause: the data's source
+    AdaptationRefused,   ///< part, cause: why the new design is not applied (its margins)
+    ProposalAccepted,    ///< part: the proposed design takes over here
 };
 
 /// One notice with its data (which fields are set depends on the kind, see NoticeKind).

@@ -131,8 +131,8 @@ AdaptedDesign designForModel(const RunToRunSetup& withModel, double required) {
     out.setup = withModel;
     out.requiredGainFactor = required;
     const RunToRunPlantSpec spec = designPlantSpec(out.setup);
-    const RunToRunPlant designPlant = buildRunToRunPlant(
-        out.setup.integral.enabled ? withIntegralAction(spec, out.setup.integral) : spec);
+    const RunToRunPlant designPlant =
+        buildRunToRunPlant(out.setup.integral.enabled ? withIntegralAction(spec, out.setup.integral) : spec);
     for (double factor : kDetuneFactors) {
         LqgWeights weights = withModel.weights;
         weights.R2 *= factor;

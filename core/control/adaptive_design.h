@@ -24,9 +24,9 @@ inline constexpr int kFallbackExtraParts = 1;
 /// mean value, no model of the disturbance) with the largest weight on 0.01 .. 1 whose loop stays stable for
 /// every plant gain factor in [0.5, 2] at the model's delay and one part more (closed-loop eigenvalues).
 struct FallbackDesign {
-    double weight = 0.0;      ///< lambda
-    int delayParts = 1;       ///< the model's plant delay it was designed for
-    ChannelMargins margins;   ///< at the model's gain and delay (every point alike: the loop depends on g / k_i)
+    double weight = 0.0;     ///< lambda
+    int delayParts = 1;      ///< the model's plant delay it was designed for
+    ChannelMargins margins;  ///< at the model's gain and delay (every point alike: the loop depends on g / k_i)
 };
 
 /// Designs the fallback for a plant delay `delayParts` (1 .. kMaxDelay). Throws std::invalid_argument when no
@@ -38,8 +38,9 @@ std::unique_ptr<RunToRunController> makeFallbackController(const RunToRunSetup& 
 
 /// What a design adapted to an identified plant must show before it is applied: a stable loop whose gain margins
 /// cover the identified gains' uncertainty, a factor 1 + max(kMinGainUncertainty, kGainSigmas x the largest relative
-/// standard error) up and its inverse down (kGainSigmas = 2: about 95 % of the gains the data allow). The LQG is synthesised with the setup's weights and, while it fails,
-/// with R2 multiplied by each of kDetuneFactors in turn (a slower, more robust design).
+/// standard error) up and its inverse down (kGainSigmas = 2: about 95 % of the gains the data allow). The LQG is
+/// synthesised with the setup's weights and, while it fails, with R2 multiplied by each of kDetuneFactors in turn (a
+/// slower, more robust design).
 inline constexpr double kMinGainUncertainty = 0.25;
 inline constexpr double kGainSigmas = 2.0;
 inline constexpr double kDetuneFactors[] = {1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0};

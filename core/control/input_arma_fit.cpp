@@ -173,15 +173,16 @@ InputArmaFit fitInputArma(const std::vector<double>& y, const std::vector<double
             iterations = itOther;
         }
     }
-    InputArmaFit fit = evaluateInputArma(y, u, theta(l.gain()), theta(l.mean()),
-                                         std::vector<double>(theta.data(), theta.data() + l.p),
-                                         std::vector<double>(theta.data() + l.p, theta.data() + l.p + l.q), skip);
+    InputArmaFit fit =
+        evaluateInputArma(y, u, theta(l.gain()), theta(l.mean()), std::vector<double>(theta.data(), theta.data() + l.p),
+                          std::vector<double>(theta.data() + l.p, theta.data() + l.p + l.q), skip);
     fit.noise.iterations = iterations;
     return fit;
 }
 
 InputArmaFit evaluateInputArma(const std::vector<double>& y, const std::vector<double>& u, double gain, double meanMm,
-                               const std::vector<double>& ar, const std::vector<double>& ma, int skip, bool noiseFixed) {
+                               const std::vector<double>& ar, const std::vector<double>& ma, int skip,
+                               bool noiseFixed) {
     const ArmaOrders orders{static_cast<int>(ar.size()), static_cast<int>(ma.size())};
     checkInput(y, u, orders, skip);
     const Layout l{orders.ar, orders.ma};
@@ -206,7 +207,8 @@ InputArmaFit evaluateInputArma(const std::vector<double>& y, const std::vector<d
     noise.meanMm = meanMm;
     noise.noiseVarianceMm2 = cost / (n - free);
     const Eigen::MatrixXd Jf = J.rightCols(free);
-    const Eigen::MatrixXd cov = noise.noiseVarianceMm2 * (Jf.transpose() * Jf).ldlt().solve(Eigen::MatrixXd::Identity(free, free));
+    const Eigen::MatrixXd cov =
+        noise.noiseVarianceMm2 * (Jf.transpose() * Jf).ldlt().solve(Eigen::MatrixXd::Identity(free, free));
     auto stdErr = [&](int i) {
         const double v = cov(i, i);
         return std::isfinite(v) ? std::sqrt(std::max(0.0, v)) : std::numeric_limits<double>::infinity();

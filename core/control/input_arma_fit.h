@@ -12,8 +12,8 @@ namespace tt::core {
 /// (Ljung, System Identification, 2nd ed., 1999: the Box-Jenkins model with B = g, F = 1; the "direct
 /// method" of closed-loop identification, sec. 13.4, consistent in closed loop when the noise model holds).
 struct InputArmaFit {
-    double gain = 0.0;              ///< g, output per unit input
-    double gainStdErr = 0.0;        ///< its standard error (given the ARMA part when that was taken as known)
+    double gain = 0.0;        ///< g, output per unit input
+    double gainStdErr = 0.0;  ///< its standard error (given the ARMA part when that was taken as known)
     /// Its standard error with the ARMA part free at the same parameters: how well the data alone tell the gain (in
     /// closed loop a gain change can look like a noise change; then this is much larger than gainStdErr).
     double gainStdErrJoint = 0.0;

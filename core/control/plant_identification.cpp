@@ -59,8 +59,8 @@ std::string pointName(int point) {
 }
 
 struct PointData {
-    std::vector<double> y;                ///< deviations of the stretch
-    std::vector<std::vector<double>> u;   ///< per lag: the correction acting on each part of it
+    std::vector<double> y;               ///< deviations of the stretch
+    std::vector<std::vector<double>> u;  ///< per lag: the correction acting on each part of it
     std::int64_t firstPart = 0, lastPart = 0;
 };
 
@@ -68,10 +68,11 @@ PointData pointData(const LoopHistory& h, int point, int maxLag, const PlantIden
     const auto [first, end] = longestStretch(h, point, static_cast<std::size_t>(maxLag));
     const std::size_t length = end - first;
     if (length < o.minParts)
-        throw IdentificationRefused(
-            pointName(point) + ": " + std::to_string(length) + " consecutive measured parts, the identification needs " +
-                std::to_string(o.minParts) + "; about " + std::to_string(o.minParts - length) + " parts more",
-            static_cast<std::int64_t>(o.minParts - length));
+        throw IdentificationRefused(pointName(point) + ": " + std::to_string(length) +
+                                        " consecutive measured parts, the identification needs " +
+                                        std::to_string(o.minParts) + "; about " + std::to_string(o.minParts - length) +
+                                        " parts more",
+                                    static_cast<std::int64_t>(o.minParts - length));
     PointData d;
     d.firstPart = h.firstPart + static_cast<std::int64_t>(first);
     d.lastPart = h.firstPart + static_cast<std::int64_t>(end) - 1;
@@ -230,9 +231,9 @@ PointPlantFit relax(const PointData& d, int point, int lag, double prior, const 
     const bool havePrior = std::isfinite(prior);
     PointPlantFit fit = relaxFrom(d, lag, havePrior ? prior : 0.0, priorAr, priorMa, o);
     try {
-        const InputArmaFit joint =
-            fitInputArma(d.y, d.u[static_cast<std::size_t>(lag)], {std::min(1, o.maxArmaOrder), std::min(1, o.maxArmaOrder)},
-                         havePrior ? std::optional<double>(prior) : std::nullopt, kSkippedErrors);
+        const InputArmaFit joint = fitInputArma(
+            d.y, d.u[static_cast<std::size_t>(lag)], {std::min(1, o.maxArmaOrder), std::min(1, o.maxArmaOrder)},
+            havePrior ? std::optional<double>(prior) : std::nullopt, kSkippedErrors);
         PointPlantFit other = relaxFrom(d, lag, joint.gain, joint.noise.ar, joint.noise.ma, o);
         if (other.criterion < fit.criterion - kCriterionTie) fit = std::move(other);
     } catch (const std::invalid_argument&) {
@@ -318,11 +319,11 @@ void PlantIdentificationOptions::validate(std::size_t points) const {
         throw std::invalid_argument("the extra plant delay tried must be 0 .. 4 parts, got " +
                                     std::to_string(maxExtraLag));
     if (maxArmaOrder < 0 || maxArmaOrder > kMaxArmaOrder)
-        throw std::invalid_argument("the largest ARMA order must be 0 .. " + std::to_string(kMaxArmaOrder) +
-                                    ", got " + std::to_string(maxArmaOrder));
+        throw std::invalid_argument("the largest ARMA order must be 0 .. " + std::to_string(kMaxArmaOrder) + ", got " +
+                                    std::to_string(maxArmaOrder));
     if (!priorGain.empty() && priorGain.size() != points)
-        throw std::invalid_argument("one prior gain per control point is needed: " + std::to_string(points) +
-                                    ", got " + std::to_string(priorGain.size()));
+        throw std::invalid_argument("one prior gain per control point is needed: " + std::to_string(points) + ", got " +
+                                    std::to_string(priorGain.size()));
     if ((!priorAr.empty() && priorAr.size() != points) || (!priorMa.empty() && priorMa.size() != points))
         throw std::invalid_argument("one prior disturbance per control point is needed: " + std::to_string(points));
     if (!(maxGainRelativeStdErr > 0.0 && maxGainRelativeStdErr <= 1.0))
@@ -340,12 +341,12 @@ PlantIdentification identifyPlant(const LoopHistory& h, const PlantIdentificatio
         throw std::invalid_argument("the record has " + std::to_string(h.appliedMm.size()) + " corrections and " +
                                     std::to_string(h.deviationMm.size()) + " measurements");
     if (h.appliedMm.empty())
-        throw IdentificationRefused("no part was recorded yet; the identification needs " +
-                                        std::to_string(o.minParts),
+        throw IdentificationRefused("no part was recorded yet; the identification needs " + std::to_string(o.minParts),
                                     static_cast<std::int64_t>(o.minParts));
     const auto m = static_cast<std::size_t>(h.appliedMm.front().size());
     for (std::size_t t = 0; t < h.size(); ++t)
-        if (static_cast<std::size_t>(h.appliedMm[t].size()) != m || static_cast<std::size_t>(h.deviationMm[t].size()) != m)
+        if (static_cast<std::size_t>(h.appliedMm[t].size()) != m ||
+            static_cast<std::size_t>(h.deviationMm[t].size()) != m)
             throw std::invalid_argument("part " + std::to_string(h.firstPart + static_cast<std::int64_t>(t)) +
                                         " of the record has another number of control points");
     o.validate(m);
@@ -364,9 +365,9 @@ PlantIdentification identifyPlant(const LoopHistory& h, const PlantIdentificatio
         for (std::size_t i = 0; i < m; ++i) {
             const double prior = o.priorGain.empty() ? std::numeric_limits<double>::quiet_NaN() : o.priorGain[i];
             const std::vector<double> noAr, noMa;
-            byLag[static_cast<std::size_t>(lag)].push_back(
-                relax(data[i], static_cast<int>(i), lag, prior, o.priorAr.empty() ? noAr : o.priorAr[i],
-                      o.priorMa.empty() ? noMa : o.priorMa[i], o));
+            byLag[static_cast<std::size_t>(lag)].push_back(relax(data[i], static_cast<int>(i), lag, prior,
+                                                                 o.priorAr.empty() ? noAr : o.priorAr[i],
+                                                                 o.priorMa.empty() ? noMa : o.priorMa[i], o));
             score += byLag[static_cast<std::size_t>(lag)].back().criterion;
         }
         id.lagScores.push_back(score);
@@ -380,7 +381,8 @@ PlantIdentification identifyPlant(const LoopHistory& h, const PlantIdentificatio
     const double chosen = id.lagScores[static_cast<std::size_t>(id.lagParts)];
     id.delayEvidence = std::numeric_limits<double>::infinity();
     for (std::size_t lag = 0; lag < id.lagScores.size(); ++lag)
-        if (static_cast<int>(lag) != id.lagParts) id.delayEvidence = std::min(id.delayEvidence, id.lagScores[lag] - chosen);
+        if (static_cast<int>(lag) != id.lagParts)
+            id.delayEvidence = std::min(id.delayEvidence, id.lagScores[lag] - chosen);
     id.points = std::move(byLag[static_cast<std::size_t>(id.lagParts)]);
     if (id.lagParts != prior && id.delayEvidence < o.minDelayEvidence) {
         const double n = static_cast<double>(data.front().y.size());

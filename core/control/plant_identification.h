@@ -32,8 +32,8 @@ InformationCriterion informationCriterionFromName(const std::string& name);
 
 /// What the identification may choose and when it refuses.
 struct PlantIdentificationOptions {
-    int loopDelay = 1;    ///< z: the measurement of part k is used for part k + z (1 .. kMaxDelay)
-    int maxExtraLag = 2;  ///< plant delays z .. z + maxExtraLag are tried (the plant cannot act before z)
+    int loopDelay = 1;     ///< z: the measurement of part k is used for part k + z (1 .. kMaxDelay)
+    int maxExtraLag = 2;   ///< plant delays z .. z + maxExtraLag are tried (the plant cannot act before z)
     int maxArmaOrder = 2;  ///< p, q = 0 .. maxArmaOrder for the disturbance
     InformationCriterion criterion = InformationCriterion::Bic;
     std::vector<double> priorGain;  ///< per point, the model's gain k_i: where each fit starts (none: 0)
@@ -45,7 +45,7 @@ struct PlantIdentificationOptions {
     /// Another delay than the model's replaces it only when its criterion is better by this much (then the next best
     /// must be this much worse too, or the identification is refused: the delay is not clear).
     double minDelayEvidence = 10.0;
-    std::size_t minParts = 150;      ///< refused with fewer consecutive measured parts at a point
+    std::size_t minParts = 150;  ///< refused with fewer consecutive measured parts at a point
 
     /// Throws std::invalid_argument naming the value and its range.
     void validate(std::size_t points) const;
@@ -53,10 +53,10 @@ struct PlantIdentificationOptions {
 
 /// The model of one control point: y(k) = gain u(k - lag) + mean + ARMA(p, q) noise.
 struct PointPlantFit {
-    int point = 0;                        ///< 0-based
-    InputArmaFit fit;                     ///< gain, mean, ARMA part, standard errors, residuals
-    ArmaOrders orders;                    ///< chosen by the criterion
-    double criterion = 0.0;               ///< its value (AIC or BIC) for the chosen orders
+    int point = 0;           ///< 0-based
+    InputArmaFit fit;        ///< gain, mean, ARMA part, standard errors, residuals
+    ArmaOrders orders;       ///< chosen by the criterion
+    double criterion = 0.0;  ///< its value (AIC or BIC) for the chosen orders
     /// The disturbance model the loop had was kept (only the gain, the mean and the noise variance re-estimated): the
     /// criterion preferred it to every re-identified ARMA. The gain's standard error is then the one given it.
     bool disturbanceKept = false;
@@ -71,12 +71,12 @@ struct PlantIdentification {
     int delayParts() const { return loopDelay + lagParts; }  ///< the plant delay the design uses
     InformationCriterion criterion = InformationCriterion::Bic;
     std::vector<PointPlantFit> points;
-    std::vector<double> lagScores;        ///< per lag 0 .. maxExtraLag: the criterion summed over the points
+    std::vector<double> lagScores;  ///< per lag 0 .. maxExtraLag: the criterion summed over the points
     /// The next-best lag's score minus the chosen one's (infinity: one lag tried; negative when the model's lag was
     /// kept although another fitted slightly better).
     double delayEvidence = 0.0;
     Eigen::MatrixXd innovationCorrelation;  ///< correlation of the points' prediction errors at the same part
-    std::size_t parts = 0;                ///< parts in the record
+    std::size_t parts = 0;                  ///< parts in the record
 };
 
 /// The data cannot tell the plant yet; `partsNeeded` more parts would likely do (0: more parts alone will
@@ -95,9 +95,9 @@ public:
 /// the joint criterion, the standard errors from its J'J) from two starts, the model the loop had (priorGain,
 /// priorAr, priorMa) and a Gauss-Newton fit of the joint model (fitInputArma, ARMA(1, 1)); the model the loop had
 /// with only its gain re-estimated is a third candidate; the criterion chooses; the lag by the sum of the points'
-/// criteria: the model's (priorLag) unless another beats it by minDelayEvidence. Throws IdentificationRefused when a point has too few parts, its corrections
-/// did not vary, its gain is not positive or too uncertain, or the delay is not clear; std::invalid_argument for
-/// bad options or a record of inconsistent sizes.
+/// criteria: the model's (priorLag) unless another beats it by minDelayEvidence. Throws IdentificationRefused when a
+/// point has too few parts, its corrections did not vary, its gain is not positive or too uncertain, or the delay is
+/// not clear; std::invalid_argument for bad options or a record of inconsistent sizes.
 PlantIdentification identifyPlant(const LoopHistory& history, const PlantIdentificationOptions& options);
 
 /// The ARMA fit of a point as the presets' disturbance model (ArmaFit::disturbanceModel).

@@ -31,16 +31,16 @@ ControllerKind controllerKindFromName(const std::string& name) {
 void ControllerModel::validate(std::size_t points, int delay) const {
     if (gain.size() != points || disturbance.size() != points)
         throw std::invalid_argument("the controller's model has " + std::to_string(gain.size()) + " gains and " +
-                                    std::to_string(disturbance.size()) + " disturbances for " +
-                                    std::to_string(points) + " control points");
+                                    std::to_string(disturbance.size()) + " disturbances for " + std::to_string(points) +
+                                    " control points");
     for (std::size_t i = 0; i < points; ++i)
         if (!(gain[i] > 0.0 && gain[i] <= 100.0))
             throw std::invalid_argument("the controller's model: the gain of point " + std::to_string(i + 1) +
                                         " must be in (0, 100], got " + std::to_string(gain[i]));
     if (lagParts < 0 || delay + lagParts > kMaxDelay)
-        throw std::invalid_argument("the controller's model: the plant delay z + lag = " +
-                                    std::to_string(delay + lagParts) + " must be " + std::to_string(delay) +
-                                    " .. " + std::to_string(kMaxDelay) + " parts");
+        throw std::invalid_argument(
+            "the controller's model: the plant delay z + lag = " + std::to_string(delay + lagParts) + " must be " +
+            std::to_string(delay) + " .. " + std::to_string(kMaxDelay) + " parts");
     const auto m = static_cast<Eigen::Index>(points);
     if (innovationCorrelation.size() != 0 &&
         (innovationCorrelation.rows() != m || innovationCorrelation.cols() != m || !innovationCorrelation.allFinite()))

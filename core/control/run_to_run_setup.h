@@ -20,7 +20,7 @@ namespace tt::core {
 /// (core/control/plant_identification.h, `trueturn tune`, the loop's adaptation, the Controller page's "Identify
 /// from history"). The plant spec stays what the simulator uses; only the controller's design changes.
 struct ControllerModel {
-    std::vector<double> gain;                  ///< k_i per point (diameter per radial move)
+    std::vector<double> gain;                   ///< k_i per point (diameter per radial move)
     std::vector<DisturbanceModel> disturbance;  ///< per point
     /// The plant's extra delay: a correction sent for part k acts on part k + lagParts (plant delay z + lag).
     int lagParts = 0;

@@ -72,10 +72,10 @@ void AdaptiveLoop::reset() {
 void AdaptiveLoop::scheduleRefinement(std::int64_t part, double worstShare) {
     m_modelShare = worstShare;
     m_refinements = 0;
-    m_nextRefinement = m_action == MismatchAction::Adapt && m_config.refineBelow > 0.0 &&
-                               worstShare > m_config.refineBelow
-                           ? part + m_config.refineParts
-                           : 0;
+    m_nextRefinement =
+        m_action == MismatchAction::Adapt && m_config.refineBelow > 0.0 && worstShare > m_config.refineBelow
+            ? part + m_config.refineParts
+            : 0;
 }
 
 AdaptiveLoop::RecentPart* AdaptiveLoop::find(std::int64_t part) {
@@ -194,8 +194,9 @@ AdaptationStep AdaptiveLoop::refine(std::int64_t part, double timeS) {
                                " of the run";
     // Each refinement that does not help waits twice as long for the next (the data tell more slowly than 1 / n).
     ++m_refinements;
-    m_nextRefinement =
-        m_refinements < kMaxRefinements ? part + (static_cast<std::int64_t>(m_config.refineParts) << std::min(m_refinements, 10)) : 0;
+    m_nextRefinement = m_refinements < kMaxRefinements
+                           ? part + (static_cast<std::int64_t>(m_config.refineParts) << std::min(m_refinements, 10))
+                           : 0;
     PlantIdentification id;
     try {
         id = identifyPlant(history, m_config.identification(m_loopDelay, designPlantSpec(m_setup)));
@@ -304,11 +305,11 @@ AdaptationStep AdaptiveLoop::identifyAndDesign(std::int64_t part, double timeS) 
         r.notice = Notice(NoticeKind::AdaptationRefused, part);
         r.notice.cause = design.why;
     } else {
-        r.reason = "identified from " + source + " by the " +
-                   std::string(id.criterion == InformationCriterion::Aic ? "AIC" : "BIC") +
-                   (design.r2Factor > 1.0 ? "; R2 raised " + formatSignificant(design.r2Factor, 3) +
-                                                " times for the margins"
-                                          : std::string());
+        r.reason =
+            "identified from " + source + " by the " +
+            std::string(id.criterion == InformationCriterion::Aic ? "AIC" : "BIC") +
+            (design.r2Factor > 1.0 ? "; R2 raised " + formatSignificant(design.r2Factor, 3) + " times for the margins"
+                                   : std::string());
         r.notice = Notice(propose ? NoticeKind::AdaptationProposed : NoticeKind::ControllerAdapted, part);
         r.notice.value = id.delayParts();
         r.notice.reference = design.worst.gain;
@@ -412,10 +413,10 @@ std::unique_ptr<RunToRunController> AdaptiveLoop::restore(const std::vector<Adap
 std::string AdaptiveLoop::controllerDescription() const {
     switch (m_phase) {
         case Phase::Fallback:
-            return "fallback EWMA " + formatFixed(m_fallback ? m_fallback->weight : kNaN, 2) + ", identifying the plant";
-        case Phase::Proposed:
             return "fallback EWMA " + formatFixed(m_fallback ? m_fallback->weight : kNaN, 2) +
-                   ", a design is proposed";
+                   ", identifying the plant";
+        case Phase::Proposed:
+            return "fallback EWMA " + formatFixed(m_fallback ? m_fallback->weight : kNaN, 2) + ", a design is proposed";
         case Phase::Model:
             break;
     }

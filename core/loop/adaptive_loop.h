@@ -22,8 +22,8 @@ namespace tt::core {
 /// What one step of the adaptation hands the loop engine.
 struct AdaptationStep {
     std::unique_ptr<RunToRunController> controller;  ///< takes over at the part (null: no switch)
-    std::optional<AdaptationRecord> record;           ///< stored with the run
-    Notice notice;                                    ///< told to the operator (kind None: nothing to tell)
+    std::optional<AdaptationRecord> record;          ///< stored with the run
+    Notice notice;                                   ///< told to the operator (kind None: nothing to tell)
 };
 
 /// The self-tuning part of the loop (paper 000's LQG made adaptive): on a model mismatch it hands the engine a
@@ -119,9 +119,9 @@ private:
     std::optional<RunToRunSetup> m_proposal;
     PlantModelRecord m_proposalModel;  ///< the proposal's identified model as recorded
     std::optional<AdaptationRecord> m_last;
-    std::int64_t m_adaptedAt = 0;  ///< part the model in use took over at (0: the run's own)
-    double m_modelShare = 0.0;      ///< the largest relative standard error of the model's gains in use
-    PlantModelRecord m_modelRecord;  ///< the identified model in use, as recorded
+    std::int64_t m_adaptedAt = 0;       ///< part the model in use took over at (0: the run's own)
+    double m_modelShare = 0.0;          ///< the largest relative standard error of the model's gains in use
+    PlantModelRecord m_modelRecord;     ///< the identified model in use, as recorded
     std::int64_t m_nextRefinement = 0;  ///< 0: no refinement due
     int m_refinements = 0;
     std::deque<RecentPart> m_recent;

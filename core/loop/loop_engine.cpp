@@ -231,7 +231,8 @@ LimiterOutcome LoopEngine::correctionsFor(std::int64_t n, const std::vector<doub
     LimiterOutcome limited = m_limiter.apply(computed);
     // The controller learns what the part really receives (limits, transfer, dither, hold).
     m_controller->correctionApplied(
-        n, Eigen::Map<const Eigen::VectorXd>(limited.appliedMm.data(), static_cast<Eigen::Index>(limited.appliedMm.size())));
+        n, Eigen::Map<const Eigen::VectorXd>(limited.appliedMm.data(),
+                                             static_cast<Eigen::Index>(limited.appliedMm.size())));
     return limited;
 }
 
@@ -478,7 +479,9 @@ void LoopEngine::watchModel(std::int64_t partNumber) {
     what.point = found->point;
     what.value = found->statistic;
     what.limit = found->threshold;
-    what.reference = found->test == MismatchTest::Correlation ? 1.0 : found->test == MismatchTest::Independence ? 2.0 : 0.0;
+    what.reference = found->test == MismatchTest::Correlation    ? 1.0
+                     : found->test == MismatchTest::Independence ? 2.0
+                                                                 : 0.0;
     if (m_holding) what.cause = "hold";
     if (adapts) what.cause = mismatchActionName(action);
     alarm(kModelMismatchAlarm, what, found->partNumber);

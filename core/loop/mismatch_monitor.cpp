@@ -142,7 +142,8 @@ std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovatio
         ep(a) = e(present[static_cast<std::size_t>(a)]);
         Xp.row(a) = X.row(present[static_cast<std::size_t>(a)]);
         for (Eigen::Index c = 0; c < k; ++c)
-            R(a, c) = innovation.correlation(present[static_cast<std::size_t>(a)], present[static_cast<std::size_t>(c)]);
+            R(a, c) =
+                innovation.correlation(present[static_cast<std::size_t>(a)], present[static_cast<std::size_t>(c)]);
     }
     const Eigen::LLT<Eigen::MatrixXd> llt(R);
     if (llt.info() != Eigen::Success) return std::nullopt;

@@ -60,9 +60,9 @@ struct MismatchFinding {
     int point = 0;                ///< 1-based control point contributing most
     bool correlation = false;     ///< true: the correlation test (test == Correlation)
     MismatchTest test = MismatchTest::Variance;
-    double statistic = 0.0;       ///< the test statistic
-    double threshold = 0.0;       ///< its limit
-    int windowParts = 0;          ///< parts in the window
+    double statistic = 0.0;  ///< the test statistic
+    double threshold = 0.0;  ///< its limit
+    int windowParts = 0;     ///< parts in the window
 };
 
 /// Watches the controller's innovations for a plant that no longer matches the model, with two tests

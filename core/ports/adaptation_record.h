@@ -18,10 +18,10 @@ struct PointModelRecord {
     double gainStdErr = std::numeric_limits<double>::quiet_NaN();
     /// The gain's standard error with the disturbance free too (equal to gainStdErr unless the disturbance was kept).
     double gainStdErrJoint = std::numeric_limits<double>::quiet_NaN();
-    std::vector<double> ar, ma;            ///< empty lists with a NaN noise variance: not an ARMA model
+    std::vector<double> ar, ma;  ///< empty lists with a NaN noise variance: not an ARMA model
     std::vector<double> arStdErr, maStdErr;
     double noiseVarianceMm2 = std::numeric_limits<double>::quiet_NaN();  ///< variance of e, mm^2
-    double meanMm = std::numeric_limits<double>::quiet_NaN();             ///< identified mean, mm
+    double meanMm = std::numeric_limits<double>::quiet_NaN();            ///< identified mean, mm
 };
 
 /// The controller's model of the plant before or after an adaptation.
@@ -37,11 +37,11 @@ struct PlantModelRecord {
 
 /// Robustness of a design as recorded: the worst channel (NaN: no such margin, the loop tolerates any change).
 struct MarginsRecord {
-    double gain = std::numeric_limits<double>::quiet_NaN();       ///< smallest upper gain margin
-    double gainLower = std::numeric_limits<double>::quiet_NaN();  ///< largest lower gain margin
-    double phaseDeg = std::numeric_limits<double>::quiet_NaN();   ///< smallest phase margin, degrees
-    double delayParts = std::numeric_limits<double>::quiet_NaN(); ///< smallest delay margin, parts
-    int extraPartsTolerated = 0;                                  ///< whole extra parts of delay tolerated
+    double gain = std::numeric_limits<double>::quiet_NaN();        ///< smallest upper gain margin
+    double gainLower = std::numeric_limits<double>::quiet_NaN();   ///< largest lower gain margin
+    double phaseDeg = std::numeric_limits<double>::quiet_NaN();    ///< smallest phase margin, degrees
+    double delayParts = std::numeric_limits<double>::quiet_NaN();  ///< smallest delay margin, parts
+    int extraPartsTolerated = 0;                                   ///< whole extra parts of delay tolerated
 };
 
 /// What the adaptive loop did, stored with the run (and read into the audit trail): switched to the fallback on a
@@ -57,9 +57,9 @@ struct AdaptationRecord {
     double fallbackWeight = std::numeric_limits<double>::quiet_NaN();
     PlantModelRecord modelBefore;
     std::optional<PlantModelRecord> modelAfter;  ///< the identified model (none: the fallback alone)
-    MarginsRecord margins;        ///< of the controller taking over (the fallback's, or the new design's)
-    bool applied = false;         ///< the loop's controller changed
-    Notice notice;                ///< the same as a kind with data (the UI words it)
+    MarginsRecord margins;  ///< of the controller taking over (the fallback's, or the new design's)
+    bool applied = false;   ///< the loop's controller changed
+    Notice notice;          ///< the same as a kind with data (the UI words it)
 };
 
 /// The kinds of an adaptation record.

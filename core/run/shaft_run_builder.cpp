@@ -27,9 +27,8 @@ ShaftRunPlan planShaftRun(const ShaftScenario& scenario, const ShaftRunChoice& c
     // Integral action lives in the LQG's design model only (the EWMA and the open loop have no model).
     // An identified model (control.model) replaces the plant's gains, disturbances and delay in the design.
     const RunToRunPlantSpec spec = designPlantSpec(scenario.control);
-    plan.plant = buildRunToRunPlant(choice.controller == ControllerKind::Lqg
-                                        ? withIntegralAction(spec, scenario.control.integral)
-                                        : spec);
+    plan.plant = buildRunToRunPlant(
+        choice.controller == ControllerKind::Lqg ? withIntegralAction(spec, scenario.control.integral) : spec);
     plan.controller = choice.controller;
     plan.ewmaWeight = choice.controller == ControllerKind::Ewma || choice.controller == ControllerKind::Dewma
                           ? chooseEwmaWeight(scenario.control, plan.plant, choice.ewmaWeight)

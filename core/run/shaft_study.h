@@ -96,14 +96,14 @@ struct LatheStudyResult {
     std::int64_t profileFromPart = 0, profileToPart = 0;
     std::optional<std::int64_t> runId;
     SimulationOutcome outcome;
-    std::optional<StepResidual> step;        ///< when the scenario's plant has a step
-    std::vector<RecordedAlarm> modelAlarms;  ///< the mismatch monitor's alarms in the closed run
+    std::optional<StepResidual> step;              ///< when the scenario's plant has a step
+    std::vector<RecordedAlarm> modelAlarms;        ///< the mismatch monitor's alarms in the closed run
     std::vector<AdaptationRecord> adaptations;     ///< what the adaptive loop did in the closed run
     std::vector<RecordedAlarm> adaptationNotices;  ///< its notices to the operator (refusals of the identification too)
-    double maxCorrectionMm = 0.0;            ///< the closed run's largest |correction| sent, radial mm
-    double maxCorrectionStepMm = 0.0;        ///< and its largest change between parts, radial mm
-    double maxSwitchStepMm = 0.0;            ///< its largest change within kSwitchWatchParts of a controller switch
-    int switches = 0;                        ///< controller switches of the adaptive loop
+    double maxCorrectionMm = 0.0;                  ///< the closed run's largest |correction| sent, radial mm
+    double maxCorrectionStepMm = 0.0;              ///< and its largest change between parts, radial mm
+    double maxSwitchStepMm = 0.0;  ///< its largest change within kSwitchWatchParts of a controller switch
+    int switches = 0;              ///< controller switches of the adaptive loop
     /// Per control point, the closed run's systematic error: the mean true diameter deviation over parts
     /// [systematicFromPart, last] (after the loop's start-up of 2z + 5 parts), mm.
     std::vector<double> systematicMm;

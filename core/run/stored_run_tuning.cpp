@@ -10,8 +10,8 @@ namespace {
 
 /// The deviation the controller used at each point of a stored part (NaN elsewhere).
 Eigen::VectorXd usedDeviations(const StoredPart& part, std::size_t points) {
-    Eigen::VectorXd d = Eigen::VectorXd::Constant(static_cast<Eigen::Index>(points),
-                                                  std::numeric_limits<double>::quiet_NaN());
+    Eigen::VectorXd d =
+        Eigen::VectorXd::Constant(static_cast<Eigen::Index>(points), std::numeric_limits<double>::quiet_NaN());
     if (!part.measurement) return d;
     for (const PointMeasurementRecord& p : part.measurement->points)
         if (p.accepted && p.measuredMm && p.pointIndex >= 0 && static_cast<std::size_t>(p.pointIndex) < points)
@@ -21,7 +21,8 @@ Eigen::VectorXd usedDeviations(const StoredPart& part, std::size_t points) {
 
 SteadyStateVariances onPlant(const RunToRunPlant& truth, const RunToRunSetup& setup) {
     const RunToRunPlantSpec spec = designPlantSpec(setup);
-    const RunToRunPlant design = buildRunToRunPlant(setup.integral.enabled ? withIntegralAction(spec, setup.integral) : spec);
+    const RunToRunPlant design =
+        buildRunToRunPlant(setup.integral.enabled ? withIntegralAction(spec, setup.integral) : spec);
     return analyseSteadyState(truth, lqgControllerModel(design, designLqg(design, setup.weights)));
 }
 
@@ -63,8 +64,8 @@ StoredRunTuning tuneFromStoredRun(HistoryStore& history, std::int64_t runId, con
     t.firstPart = h.firstPart;
     t.lastPart = h.firstPart + static_cast<std::int64_t>(h.size()) - 1;
     t.identification = identifyPlant(h, config.identification(setup.plant.delay, designPlantSpec(setup)));
-    const std::string source = "run " + std::to_string(runId) + ", parts " + std::to_string(t.firstPart) + " .. " +
-                               std::to_string(t.lastPart);
+    const std::string source =
+        "run " + std::to_string(runId) + ", parts " + std::to_string(t.firstPart) + " .. " + std::to_string(t.lastPart);
     t.model = modelRecord(t.identification, source);
     t.design = designAdapted(setup, t.identification, source);
     // The identified plant as the truth: its delay z + lag, gains and disturbances.

@@ -74,7 +74,8 @@ QJsonObject plantModelJson(const core::PlantModelRecord& model) {
                   {QStringLiteral("source"), QString::fromStdString(model.source)}};
     if (!model.criterion.empty()) o.insert(QStringLiteral("criterion"), QString::fromStdString(model.criterion));
     if (!model.innovationCorrelation.empty())
-        o.insert(QStringLiteral("innovation_correlation"), matrixJson(model.innovationCorrelation, model.points.size()));
+        o.insert(QStringLiteral("innovation_correlation"),
+                 matrixJson(model.innovationCorrelation, model.points.size()));
     return o;
 }
 
@@ -147,16 +148,17 @@ QString modelSummary(const core::PlantModelRecord& model) {
 }
 
 QJsonObject adaptationJson(const core::AdaptationRecord& a) {
-    return QJsonObject{{QStringLiteral("part"), static_cast<qint64>(a.partNumber)},
-                       {QStringLiteral("kind"), QString::fromStdString(a.kind)},
-                       {QStringLiteral("reason"), QString::fromStdString(a.reason)},
-                       {QStringLiteral("fallback"), a.fallback.empty() ? QJsonValue() : QString::fromStdString(a.fallback)},
-                       {QStringLiteral("fallback_weight"), finiteOrNull(a.fallbackWeight)},
-                       {QStringLiteral("model_before"), plantModelJson(a.modelBefore)},
-                       {QStringLiteral("model_after"), a.modelAfter ? QJsonValue(plantModelJson(*a.modelAfter)) : QJsonValue()},
-                       {QStringLiteral("margins"), marginsJson(a.margins)},
-                       {QStringLiteral("applied"), a.applied},
-                       {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}};
+    return QJsonObject{
+        {QStringLiteral("part"), static_cast<qint64>(a.partNumber)},
+        {QStringLiteral("kind"), QString::fromStdString(a.kind)},
+        {QStringLiteral("reason"), QString::fromStdString(a.reason)},
+        {QStringLiteral("fallback"), a.fallback.empty() ? QJsonValue() : QString::fromStdString(a.fallback)},
+        {QStringLiteral("fallback_weight"), finiteOrNull(a.fallbackWeight)},
+        {QStringLiteral("model_before"), plantModelJson(a.modelBefore)},
+        {QStringLiteral("model_after"), a.modelAfter ? QJsonValue(plantModelJson(*a.modelAfter)) : QJsonValue()},
+        {QStringLiteral("margins"), marginsJson(a.margins)},
+        {QStringLiteral("applied"), a.applied},
+        {QStringLiteral("message"), QString::fromStdString(core::describe(a.notice))}};
 }
 
 }  // namespace tt::storage

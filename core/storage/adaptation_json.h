@@ -8,8 +8,8 @@
 namespace tt::storage {
 
 /// A plant model as recorded, in JSON (the history's stored text and the adaptations of `simulate --json`):
-/// {delay, lag, gain, gain_std_error, gain_std_error_joint, ar, ma, ar_std_error, ma_std_error, noise_variance, mean, source, criterion,
-/// innovation_correlation}, the point values as arrays in point order (null: none).
+/// {delay, lag, gain, gain_std_error, gain_std_error_joint, ar, ma, ar_std_error, ma_std_error, noise_variance, mean,
+/// source, criterion, innovation_correlation}, the point values as arrays in point order (null: none).
 QJsonObject plantModelJson(const core::PlantModelRecord& model);
 /// Back; throws std::invalid_argument on a damaged object.
 core::PlantModelRecord plantModelFromJson(const QJsonObject& json);

@@ -8,8 +8,8 @@
 #include <stdexcept>
 
 #include "core/auth/access_guard.h"
-#include "core/storage/audit_chain.h"
 #include "core/storage/adaptation_json.h"
+#include "core/storage/audit_chain.h"
 #include "core/storage/calibration_store.h"
 #include "core/storage/history_store.h"
 #include "core/storage/tool_store.h"
@@ -185,14 +185,18 @@ void AuditStore::appendAdaptations(std::vector<AuditRecord>& out) {
         try {
             const QString model = summary(q.value(7));
             if (!model.isEmpty()) after += QStringLiteral(" | ") + model;
+            out.push_back(
+                {q.value(0).toLongLong(),
+                 q.value(1).toString(),
+                 kAdaptiveLoopName,
+                 QString(),
+                 {audit_category::kController, subject, QStringLiteral("adaptation: ") + q.value(5).toString(),
+                  summary(q.value(6)), after + QStringLiteral(" | margins ") + q.value(8).toString()}});
+        } catch (const std::invalid_argument&) {
             out.push_back({q.value(0).toLongLong(),
                            q.value(1).toString(),
                            kAdaptiveLoopName,
                            QString(),
-                           {audit_category::kController, subject, QStringLiteral("adaptation: ") + q.value(5).toString(),
-                            summary(q.value(6)), after + QStringLiteral(" | margins ") + q.value(8).toString()}});
-        } catch (const std::invalid_argument&) {
-            out.push_back({q.value(0).toLongLong(), q.value(1).toString(), kAdaptiveLoopName, QString(),
                            {audit_category::kController, subject,
                             QStringLiteral("adaptation: ") + q.value(5).toString(), QString(), after}});
         }

@@ -52,9 +52,10 @@ SchemaModule journalSchema() {
          [](Database& db) {
              // kind: run (item 0), part (item: part number), measurement (item: part number), alarm (item: the
              // alarm's row id), end (item: the end's number within the run; status and at: the end).
-             db.exec(QStringLiteral("CREATE TABLE journal_outbox (seq INTEGER PRIMARY KEY AUTOINCREMENT,"
-                                    " kind TEXT NOT NULL, run_id INTEGER NOT NULL, item INTEGER NOT NULL,"
-                                    " status TEXT, at TEXT)"));
+             db.exec(
+                 QStringLiteral("CREATE TABLE journal_outbox (seq INTEGER PRIMARY KEY AUTOINCREMENT,"
+                                " kind TEXT NOT NULL, run_id INTEGER NOT NULL, item INTEGER NOT NULL,"
+                                " status TEXT, at TEXT)"));
              db.exec(QStringLiteral("CREATE INDEX journal_outbox_items ON journal_outbox (run_id, kind, item)"));
              db.exec(QStringLiteral("CREATE TABLE journal_state (key TEXT PRIMARY KEY, value TEXT NOT NULL)"));
          }});
@@ -94,8 +95,8 @@ void HistoryJournal::bindTo(const JournalOptions& options) {
                 m_db->exec(QStringLiteral("INSERT INTO journal_state (key, value) VALUES (?, ?)"), {key, value});
             } else if (q.value(0).toString() != value) {
                 throw StorageError("the journal " + quoted(options.path) + " holds the history of " +
-                                   key.toStdString() + " " + quoted(q.value(0).toString()) + ", not " +
-                                   quoted(value) + "; it was left untouched (give another journal file)");
+                                   key.toStdString() + " " + quoted(q.value(0).toString()) + ", not " + quoted(value) +
+                                   "; it was left untouched (give another journal file)");
             }
         }
     });

@@ -1,7 +1,7 @@
 #include "core/storage/history_store.h"
 
-#include "core/storage/plant_roles.h"
 #include "core/storage/adaptation_json.h"
+#include "core/storage/plant_roles.h"
 
 #include <array>
 #include <cmath>
@@ -129,9 +129,10 @@ SchemaModule historySchema() {
          }});
     module.migrations.push_back(
         {5,
-         QStringLiteral("the plant-wide history: runs known by a unique id, alarms by the terminal's sequence, the ends "
-                        "of runs as rows, the terminals' reports, the plant overview's indexes; on PostgreSQL the "
-                        "roles of the terminals and of the quality engineer with row-level security by machine"),
+         QStringLiteral(
+             "the plant-wide history: runs known by a unique id, alarms by the terminal's sequence, the ends "
+             "of runs as rows, the terminals' reports, the plant overview's indexes; on PostgreSQL the "
+             "roles of the terminals and of the quality engineer with row-level security by machine"),
          [](Database& db) {
              // A run keeps its id wherever it is copied (a terminal's journal -> the plant database): the natural
              // key of a forwarded row is (run_uid, part, point), so a batch sent twice inserts nothing twice.
@@ -161,13 +162,14 @@ SchemaModule adaptationSchema() {
     module.migrations.push_back(
         {1, QStringLiteral("what the adaptive loop did: fallback, adaptations, proposals, refused designs"),
          [](Database& db) {
-             exec(db,
-                  "CREATE TABLE adaptations (id {pk}, run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
-                  " part_number {bigint} NOT NULL, time_s {real} NOT NULL, kind TEXT NOT NULL, reason TEXT NOT NULL,"
-                  " fallback TEXT NOT NULL, fallback_weight {real}, model_before TEXT NOT NULL, model_after TEXT,"
-                  " margins TEXT NOT NULL, applied INTEGER NOT NULL, notice_kind TEXT NOT NULL, notice_part {bigint},"
-                  " notice_other {bigint}, notice_point INTEGER, notice_value {real}, notice_reference {real},"
-                  " notice_limit {real}, notice_cause TEXT NOT NULL, message TEXT NOT NULL, recorded_at TEXT NOT NULL)");
+             exec(
+                 db,
+                 "CREATE TABLE adaptations (id {pk}, run_id {bigint} NOT NULL REFERENCES runs(id) ON DELETE CASCADE,"
+                 " part_number {bigint} NOT NULL, time_s {real} NOT NULL, kind TEXT NOT NULL, reason TEXT NOT NULL,"
+                 " fallback TEXT NOT NULL, fallback_weight {real}, model_before TEXT NOT NULL, model_after TEXT,"
+                 " margins TEXT NOT NULL, applied INTEGER NOT NULL, notice_kind TEXT NOT NULL, notice_part {bigint},"
+                 " notice_other {bigint}, notice_point INTEGER, notice_value {real}, notice_reference {real},"
+                 " notice_limit {real}, notice_cause TEXT NOT NULL, message TEXT NOT NULL, recorded_at TEXT NOT NULL)");
              exec(db, "CREATE INDEX adaptations_by_run ON adaptations (run_id, id)");
          }});
     return module;
@@ -210,12 +212,13 @@ SqlHistoryStore::SqlHistoryStore(Database& database) : m_db(database) {
 std::int64_t SqlHistoryStore::beginRun(const core::RunDescription& run) {
     std::int64_t runId = 0;
     m_db.transaction([&] {
-        QSqlQuery insert = m_db.exec(
-            QStringLiteral("INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
-                           " part_length_mm, settings, machine, run_uid) VALUES (?, 'running', ?, ?, ?, ?, ?, ?, ?, ?)"),
-            {utcNowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm,
-             run.partLengthMm, text(run.settingsJson), text(run.machine),
-             QUuid::createUuid().toString(QUuid::WithoutBraces)});
+        QSqlQuery insert =
+            m_db.exec(QStringLiteral(
+                          "INSERT INTO runs (started_at, status, preset, controller, delay_parts, nominal_diameter_mm,"
+                          " part_length_mm, settings, machine, run_uid) VALUES (?, 'running', ?, ?, ?, ?, ?, ?, ?, ?)"),
+                      {utcNowText(), text(run.preset), text(run.controller), run.delayParts, run.nominalDiameterMm,
+                       run.partLengthMm, text(run.settingsJson), text(run.machine),
+                       QUuid::createUuid().toString(QUuid::WithoutBraces)});
         runId = m_db.lastInsertId(insert);
         for (std::size_t i = 0; i < run.pointZMm.size(); ++i)
             m_db.exec(QStringLiteral("INSERT INTO run_points (run_id, point_index, z_mm) VALUES (?, ?, ?)"),
@@ -287,8 +290,8 @@ std::int64_t SqlHistoryStore::insertAlarm(std::int64_t runId, const core::AlarmR
     QSqlQuery insert =
         m_db.exec(QStringLiteral("INSERT INTO alarms (run_id, part_number, time_s, kind, message, recorded_at)"
                                  " VALUES (?, ?, ?, ?, ?, ?)"),
-                  {id(runId), nullable<qlonglong>(alarm.partNumber), alarm.timeS, text(alarm.kind),
-                   text(alarm.message), utcNowText()});
+                  {id(runId), nullable<qlonglong>(alarm.partNumber), alarm.timeS, text(alarm.kind), text(alarm.message),
+                   utcNowText()});
     return m_db.lastInsertId(insert);
 }
 
@@ -299,13 +302,13 @@ void SqlHistoryStore::finishRun(std::int64_t runId, const std::string& status) {
 
 std::vector<core::RunSummary> SqlHistoryStore::runs() {
     std::vector<core::RunSummary> out;
-    QSqlQuery q = m_db.exec(
-        QStringLiteral("SELECT r.id, r.started_at, COALESCE(e.finished_at, r.finished_at), COALESCE(e.status, r.status),"
-                       " r.preset, r.controller, r.delay_parts, r.nominal_diameter_mm, r.part_length_mm, r.settings,"
-                       " (SELECT COUNT(*) FROM parts p WHERE p.run_id = r.id),"
-                       " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id), r.machine"
-                       " FROM runs r LEFT JOIN run_ends e ON e.run_id = r.id"
-                       " AND e.seq = (SELECT MAX(seq) FROM run_ends x WHERE x.run_id = r.id) ORDER BY r.id DESC"));
+    QSqlQuery q = m_db.exec(QStringLiteral(
+        "SELECT r.id, r.started_at, COALESCE(e.finished_at, r.finished_at), COALESCE(e.status, r.status),"
+        " r.preset, r.controller, r.delay_parts, r.nominal_diameter_mm, r.part_length_mm, r.settings,"
+        " (SELECT COUNT(*) FROM parts p WHERE p.run_id = r.id),"
+        " (SELECT MAX(part_number) FROM parts p WHERE p.run_id = r.id), r.machine"
+        " FROM runs r LEFT JOIN run_ends e ON e.run_id = r.id"
+        " AND e.seq = (SELECT MAX(seq) FROM run_ends x WHERE x.run_id = r.id) ORDER BY r.id DESC"));
     while (q.next()) {
         core::RunSummary s;
         s.runId = q.value(0).toLongLong();
@@ -403,16 +406,32 @@ std::vector<core::StoredPart> SqlHistoryStore::parts(std::int64_t runId) {
 void SqlHistoryStore::recordAdaptation(std::int64_t runId, const core::AdaptationRecord& a) {
     auto json = [](const QJsonObject& o) { return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact)); };
     const core::Notice& n = a.notice;
-    m_db.exec(QStringLiteral("INSERT INTO adaptations (run_id, part_number, time_s, kind, reason, fallback, fallback_weight,"
-                             " model_before, model_after, margins, applied, notice_kind, notice_part, notice_other,"
-                             " notice_point, notice_value, notice_reference, notice_limit, notice_cause, message,"
-                             " recorded_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
-              {id(runId), id(a.partNumber), a.timeS, text(a.kind), text(a.reason), text(a.fallback),
-               finiteOrNull(a.fallbackWeight), json(plantModelJson(a.modelBefore)),
-               a.modelAfter ? QVariant(json(plantModelJson(*a.modelAfter))) : QVariant(QMetaType::fromType<QString>()),
-               json(marginsJson(a.margins)), a.applied ? 1 : 0, text(core::noticeKindName(n.kind)), id(n.part),
-               id(n.otherPart), n.point, finiteOrNull(n.value), finiteOrNull(n.reference), finiteOrNull(n.limit),
-               text(n.cause), text(core::describe(n)), utcNowText()});
+    m_db.exec(
+        QStringLiteral("INSERT INTO adaptations (run_id, part_number, time_s, kind, reason, fallback, fallback_weight,"
+                       " model_before, model_after, margins, applied, notice_kind, notice_part, notice_other,"
+                       " notice_point, notice_value, notice_reference, notice_limit, notice_cause, message,"
+                       " recorded_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)"),
+        {id(runId),
+         id(a.partNumber),
+         a.timeS,
+         text(a.kind),
+         text(a.reason),
+         text(a.fallback),
+         finiteOrNull(a.fallbackWeight),
+         json(plantModelJson(a.modelBefore)),
+         a.modelAfter ? QVariant(json(plantModelJson(*a.modelAfter))) : QVariant(QMetaType::fromType<QString>()),
+         json(marginsJson(a.margins)),
+         a.applied ? 1 : 0,
+         text(core::noticeKindName(n.kind)),
+         id(n.part),
+         id(n.otherPart),
+         n.point,
+         finiteOrNull(n.value),
+         finiteOrNull(n.reference),
+         finiteOrNull(n.limit),
+         text(n.cause),
+         text(core::describe(n)),
+         utcNowText()});
 }
 
 std::vector<core::AdaptationRecord> SqlHistoryStore::adaptations(std::int64_t runId) {

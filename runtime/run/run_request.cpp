@@ -312,10 +312,10 @@ QJsonObject toJson(const RunRequest& q) {
 
 RunRequest runRequestFromJson(const QJsonObject& json) {
     onlyKeys(json, {},
-             {"machine",      "lathe",          "devices",      "cnc",      "preset",          "delay",
-              "controller",   "ewma_weight",    "drift_weight", "integral", "mismatch_action", "dither_share", "plant_mismatch",
-              "tuning",       "pause_on_scrap", "seed",         "speed",    "end_part",        "warmup_parts",
-              "manual_entry", "database"});
+             {"machine",        "lathe",        "devices",        "cnc",      "preset",          "delay",
+              "controller",     "ewma_weight",  "drift_weight",   "integral", "mismatch_action", "dither_share",
+              "plant_mismatch", "tuning",       "pause_on_scrap", "seed",     "speed",           "end_part",
+              "warmup_parts",   "manual_entry", "database"});
     const Reader r(json, {});
     RunRequest q;
     q.machine = r.text("machine", kBuiltInLatheKey);

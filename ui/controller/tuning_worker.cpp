@@ -48,7 +48,8 @@ void TuningWorker::loop() {
         }
         const auto start = std::chrono::steady_clock::now();
         try {
-            const bool reuse = m_last && core::samePlantSpec(core::designPlantSpec(m_last->setup), core::designPlantSpec(result->setup));
+            const bool reuse = m_last && core::samePlantSpec(core::designPlantSpec(m_last->setup),
+                                                             core::designPlantSpec(result->setup));
             result->preview = core::computeTuningPreview(result->setup, reuse ? &*m_last->preview : nullptr);
             m_last = result;
         } catch (const std::exception& e) {

@@ -18,12 +18,12 @@
 #include "core/control/adaptive_design.h"
 #include "core/model/disturbance_model.h"
 #include "core/storage/data_stores.h"
+#include "plot/chart.h"
 #include "ui/auth/audit_trail.h"
 #include "ui/controller/controller_apply.h"
 #include "ui/controller/controller_tuning.h"
 #include "ui/controller/tuning_worker.h"
 #include "ui/controller/weight_row.h"
-#include "plot/chart.h"
 #include "ui/prompt.h"
 
 namespace tt::ui {
@@ -301,8 +301,9 @@ void ControllerPage::retranslate() {
            "filter"));
     m_takeProposal->setText(m_proposal ? tr("Use the loop's proposal (part %1)").arg(m_proposal->partNumber)
                                        : QString());
-    m_takeProposal->setToolTip(tr("The adaptive loop identified the plant and proposes a design for it; take it "
-                                  "into the page, check the predictions and apply it"));
+    m_takeProposal->setToolTip(
+        tr("The adaptive loop identified the plant and proposes a design for it; take it "
+           "into the page, check the predictions and apply it"));
     refreshRuns();
     m_apply->setText(tr("Apply…"));
     m_revert->setText(tr("Revert"));
@@ -434,8 +435,10 @@ void ControllerPage::showCharts(const TuningResult& r) {
     std::vector<double> parts(p.stepLqg.size());
     for (std::size_t k = 0; k < parts.size(); ++k)
         parts[k] = static_cast<double>(k);
-    m_stepChart->setSeries(QStringLiteral("open"), tr("open"), parts, p.stepOpen, kOpenColour, plot::Chart::Style::Steps);
-    m_stepChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), parts, p.stepEwma, kEwmaColour, plot::Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("open"), tr("open"), parts, p.stepOpen, kOpenColour,
+                           plot::Chart::Style::Steps);
+    m_stepChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), parts, p.stepEwma, kEwmaColour,
+                           plot::Chart::Style::Steps);
     m_stepChart->setSeries(QStringLiteral("lqg"), tr("LQG"), parts, p.stepLqg, kLqgColour, plot::Chart::Style::Steps);
     m_stepChart->rescale(true);
     m_sensitivityChart->setSeries(QStringLiteral("ewma"), tr("EWMA"), p.frequencyRadPerPart, p.sensitivityEwma,
@@ -620,7 +623,8 @@ void ControllerPage::findProposal() {
                 runId = std::max(runId.value_or(run.runId), run.runId);
         if (history && runId) {
             const std::vector<core::AdaptationRecord> records = history->adaptations(*runId);
-            if (!records.empty() && records.back().kind == core::adaptation_kind::kProposed && records.back().modelAfter)
+            if (!records.empty() && records.back().kind == core::adaptation_kind::kProposed &&
+                records.back().modelAfter)
                 m_proposal = records.back();
         }
     } catch (const std::exception&) {

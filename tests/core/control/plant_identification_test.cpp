@@ -9,8 +9,8 @@
 #include "core/control/input_arma_fit.h"
 #include "core/control/plant_identification.h"
 #include "core/model/shaping_filter.h"
-#include "tests/core/support/closed_loop_record.h"
 #include "tests/core/support/arma_series.h"
+#include "tests/core/support/closed_loop_record.h"
 
 namespace tt::core {
 namespace {

@@ -10,8 +10,8 @@
 #include "core/run/shaft_run.h"
 #include "core/run/shaft_run_builder.h"
 #include "core/run/simulated_lathe.h"
-#include "tests/core/support/lqg_test_support.h"
 #include "tests/core/support/loop_test_support.h"
+#include "tests/core/support/lqg_test_support.h"
 
 namespace tt::core {
 namespace {
@@ -70,7 +70,8 @@ void expectBumpless(const Watch& w, const LatheRunRecord& r, double maxStepMm) {
                 EXPECT_LE(std::abs(now[i].appliedMm - before[i].appliedMm), maxStepMm) << "part " << p;
             }
             if (p == a.partNumber) {  // the first part of the new controller gets the last correction exactly
-                for (std::size_t i = 0; i < now.size(); ++i) EXPECT_NEAR(now[i].appliedMm, before[i].appliedMm, 1e-12);
+                for (std::size_t i = 0; i < now.size(); ++i)
+                    EXPECT_NEAR(now[i].appliedMm, before[i].appliedMm, 1e-12);
             }
         }
     }
@@ -79,8 +80,10 @@ void expectBumpless(const Watch& w, const LatheRunRecord& r, double maxStepMm) {
 /// The records in words, for a failing expectation.
 std::string sequence(const LatheRunRecord& r) {
     std::string out;
-    for (const AdaptationRecord& a : r.adaptations) out += a.kind + "@" + std::to_string(a.partNumber) + " ";
-    for (const RecordedAlarm& a : r.modelAlarms) out += "alarm@" + std::to_string(a.part) + " ";
+    for (const AdaptationRecord& a : r.adaptations)
+        out += a.kind + "@" + std::to_string(a.partNumber) + " ";
+    for (const RecordedAlarm& a : r.modelAlarms)
+        out += "alarm@" + std::to_string(a.part) + " ";
     return out;
 }
 
@@ -123,9 +126,11 @@ TEST(AdaptiveLoop, AdaptsToTwiceTheGain) {
     const PlantModelRecord* model = lastModel(r);
     ASSERT_NE(model, nullptr);
     EXPECT_EQ(model->delayParts, 1);
-    for (const PointModelRecord& p : model->points) EXPECT_NEAR(p.gain, 4.0, 0.4);
+    for (const PointModelRecord& p : model->points)
+        EXPECT_NEAR(p.gain, 4.0, 0.4);
     int applied = 0;
-    for (const AdaptationRecord& a : r.adaptations) applied += a.applied ? 1 : 0;
+    for (const AdaptationRecord& a : r.adaptations)
+        applied += a.applied ? 1 : 0;
     EXPECT_EQ(r.switches, applied);
     expectBumpless(w, r, s.control.limits.maxStepMm);
 }
@@ -216,7 +221,8 @@ TEST(AdaptiveLoop, RecordedAndResumedWithTheAdaptedController) {
     ASSERT_EQ(stored.size(), r.adaptations.size());
     ASSERT_TRUE(stored.back().applied && stored.back().modelAfter) << sequence(r);
     bool alarmed = false;
-    for (const AlarmRecord& a : history.alarms(*r.runId)) alarmed = alarmed || a.kind == kAdaptationAlarm;
+    for (const AlarmRecord& a : history.alarms(*r.runId))
+        alarmed = alarmed || a.kind == kAdaptationAlarm;
     EXPECT_TRUE(alarmed);
 
     const std::optional<ResumePoint> point = history.resumePoint(*r.runId);

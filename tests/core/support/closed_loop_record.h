@@ -43,7 +43,8 @@ inline LoopHistory runClosedLoop(RunToRunController& controller, int delay, doub
     std::vector<Eigen::VectorXd> measured;
     for (std::size_t p = 1; p <= parts; ++p) {
         const auto part = static_cast<std::int64_t>(p);
-        if (part - delay >= 1) controller.addMeasurement({part - delay, measured[p - 1 - static_cast<std::size_t>(delay)]});
+        if (part - delay >= 1)
+            controller.addMeasurement({part - delay, measured[p - 1 - static_cast<std::size_t>(delay)]});
         const Eigen::VectorXd u = controller.nextCorrection(part);
         h.appliedMm.push_back(u);
         Eigen::VectorXd y(m);
@@ -52,7 +53,8 @@ inline LoopHistory runClosedLoop(RunToRunController& controller, int delay, doub
             const double en = sigmaE * n01(rng);
             d[ii] = kPaperPole * d[ii] + en + kPaperZero * e[ii];
             e[ii] = en;
-            const double acting = p > static_cast<std::size_t>(lag) ? h.appliedMm[p - 1 - static_cast<std::size_t>(lag)](i) : 0.0;
+            const double acting =
+                p > static_cast<std::size_t>(lag) ? h.appliedMm[p - 1 - static_cast<std::size_t>(lag)](i) : 0.0;
             y(i) = 2.0 * gainFactor * acting + d[ii] + sigmaGauge * n01(rng);
         }
         measured.push_back(y);

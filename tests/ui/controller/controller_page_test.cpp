@@ -229,7 +229,8 @@ TEST_F(ControllerPageTest, IdentifyFromHistoryTypesTheFitOfAStoredRun) {
         // Every point identified and designed for: the model of all five points, the run's delay.
         ASSERT_TRUE(page->identifiedModel());
         EXPECT_EQ(page->identifiedModel()->gain.size(), 5u);
-        for (double g : page->identifiedModel()->gain) EXPECT_NEAR(g, 2.0, 0.3);  // paper-2012's k_i = 2
+        for (double g : page->identifiedModel()->gain)
+            EXPECT_NEAR(g, 2.0, 0.3);  // paper-2012's k_i = 2
         EXPECT_TRUE(page->identifiedModelBox()->isChecked());
         EXPECT_TRUE(page->identifiedText().contains(QStringLiteral("5")));
         EXPECT_EQ(page->editedSetup().plant.delay, 1);
@@ -268,7 +269,8 @@ TEST_F(ControllerPageTest, TakesTheLoopsProposal) {
     ASSERT_TRUE(page->proposalButton()->isVisible());
     QTest::mouseClick(page->proposalButton(), Qt::LeftButton);
     ASSERT_TRUE(page->identifiedModel());
-    for (double g : page->identifiedModel()->gain) EXPECT_NEAR(g, 4.0, 0.6);
+    for (double g : page->identifiedModel()->gain)
+        EXPECT_NEAR(g, 4.0, 0.6);
     EXPECT_EQ(page->editedSetup().plant.delay, 2);
     ASSERT_TRUE(waitForNewest(*page));
     ASSERT_TRUE(page->shownResult()->setup.model);

@@ -44,8 +44,7 @@ TEST_P(AdaptationStoreTest, StoresWhatTheLoopDidAndReadsItBack) {
     Database db(scratch.config());
     SqlHistoryStore store(db);
     EXPECT_EQ(db.schemaVersion(QStringLiteral("adaptation")), 1);
-    const std::int64_t run =
-        store.beginRun({"paper-2012", "lqg", 2, 27.0, 325.0, {0.0, 325.0}, "{}"});
+    const std::int64_t run = store.beginRun({"paper-2012", "lqg", 2, 27.0, 325.0, {0.0, 325.0}, "{}"});
     core::AdaptationRecord fallback;
     fallback.kind = core::adaptation_kind::kFallback;
     fallback.partNumber = 215;
