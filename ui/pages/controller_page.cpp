@@ -144,8 +144,9 @@ QWidget* ControllerPage::buildSettings() {
     identifyRow->addWidget(m_identifyRun);
     identifyRow->addWidget(m_identify);
     identifyRow->addWidget(m_takeProposal);
-    identifyRow->addWidget(m_identified, 1);
+    identifyRow->addStretch(1);
     grid->addLayout(identifyRow, 4, 0, 1, 4);
+    grid->addWidget(m_identified, 5, 0, 1, 4);  // the fit in words, on a line of its own: it wraps, never squeezes
     for (QSpinBox* s : {m_delay})
         connect(s, &QSpinBox::valueChanged, this, &ControllerPage::requestPreview);
     for (QDoubleSpinBox* f : {m_maxAbs, m_maxStep, m_deadBand, m_pole, m_zero, m_variance})

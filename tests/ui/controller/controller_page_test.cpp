@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QProcess>
 #include <QPushButton>
 #include <QSlider>
@@ -279,6 +280,13 @@ TEST_F(ControllerPageTest, TakesTheLoopsProposal) {
     ASSERT_TRUE(page->appliedSetup().model);
     EXPECT_TRUE(page->lastRecord().contains(QStringLiteral("identified model"))) << qPrintable(page->lastRecord());
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("controller_proposal_en")));
+    // With the proposal's button shown the page still fits the terminal's 1280 x 800 screen, and the fit's
+    // words have the whole width under the buttons.
+    EXPECT_LE(window.width(), 1280);
+    EXPECT_LE(window.height(), 800);
+    auto* fit = window.findChild<QLabel*>(QStringLiteral("identifiedFit"));
+    ASSERT_NE(fit, nullptr);
+    EXPECT_GE(fit->width(), page->proposalButton()->width() * 2) << "not squeezed beside the buttons";
 }
 
 }  // namespace
