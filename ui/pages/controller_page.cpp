@@ -172,6 +172,7 @@ QWidget* ControllerPage::buildExtraRow() {
     m_identified = new QLabel;
     m_identified->setWordWrap(true);
     m_identified->setObjectName(QStringLiteral("identifiedFit"));
+    m_identified->hide();  // its line appears with its words only
     m_takeProposal = new QPushButton;
     m_takeProposal->setObjectName(QStringLiteral("takeProposal"));
     m_takeProposal->setVisible(false);
@@ -530,7 +531,7 @@ void ControllerPage::identify() {
     try {
         config = storage::DataStores(context().databasePath).config();
     } catch (const std::exception& e) {
-        m_identified->setText(tr("Identification failed: %1").arg(QString::fromStdString(e.what())));
+        sayIdentified(tr("Identification failed: %1").arg(QString::fromStdString(e.what())));
         return;
     }
     core::RunToRunSetup setup = editedSetup();
@@ -538,7 +539,7 @@ void ControllerPage::identify() {
     m_identify->setEnabled(false);
     m_identifying = true;
     m_identified->setStyleSheet(QStringLiteral("color: #56616d;"));
-    m_identified->setText(tr("Identifying the plant of the stored run…"));
+    sayIdentified(tr("Identifying the plant of the stored run…"));
     m_identification.setFuture(QtConcurrent::run(identifyFromHistory, config, runId, setup));
 }
 
@@ -548,7 +549,7 @@ void ControllerPage::showIdentification() {
     const HistoryIdentification result = m_identification.result();
     if (!result.tuning) {
         m_identified->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
-        m_identified->setText(tr("Identification failed: %1").arg(result.problem));
+        sayIdentified(tr("Identification failed: %1").arg(result.problem));
         return;
     }
     const core::StoredRunTuning& t = *result.tuning;
@@ -605,12 +606,17 @@ void ControllerPage::showIdentification() {
 void ControllerPage::useModel(const core::ControllerModel& model, const QString& text, const QString& details) {
     m_identifiedModel = model;
     m_identified->setStyleSheet(QStringLiteral("color: #1f2a36;"));
-    m_identified->setText(text);
+    sayIdentified(text);
     m_identified->setToolTip(details);
     m_useIdentified->setEnabled(true);
     const bool wasChecked = m_useIdentified->isChecked();
     m_useIdentified->setChecked(true);
     if (wasChecked) requestPreview();  // toggled() asks for it otherwise
+}
+
+void ControllerPage::sayIdentified(const QString& text) {
+    m_identified->setText(text);
+    m_identified->setVisible(!text.isEmpty());
 }
 
 void ControllerPage::findProposal() {
@@ -658,7 +664,7 @@ void ControllerPage::takeProposal() {
                  details.join(QLatin1Char('\n')));
     } catch (const std::invalid_argument& e) {
         m_identified->setStyleSheet(QStringLiteral("color: #b00020; font-weight: bold;"));
-        m_identified->setText(tr("The proposal cannot be used: %1").arg(QString::fromStdString(e.what())));
+        sayIdentified(tr("The proposal cannot be used: %1").arg(QString::fromStdString(e.what())));
     }
 }
 

@@ -105,6 +105,8 @@ private:
     void identify();
     void showIdentification();
     /// The chosen run's last adaptation when it is a proposal waiting for an Apply (the proposal button).
+    /// The identification's words under its buttons (the line is hidden while there are none).
+    void sayIdentified(const QString& text);
     void findProposal();
     void takeProposal();
     /// Designs with `model` from now on; `text` and `details` describe it under the filter.
