@@ -3,6 +3,7 @@
 #include <QColor>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -18,6 +19,7 @@ const QColor kLimit(200, 40, 40);
 const QColor kViolation(230, 120, 0);
 const QColor kSpec(120, 30, 150);
 const QColor kFit(20, 20, 20);
+const QColor kAdaptation(150, 40, 190);
 
 /// 1, 2, ... n: the chart points' numbers on the x axis.
 std::vector<double> pointNumbers(std::size_t n, std::size_t first = 0) {
@@ -38,6 +40,24 @@ std::set<std::size_t> violationPoints(const runtime::PointReport& point) {
     for (const core::PointViolation& v : point.analysis.violations)
         points.insert(v.violation.points.begin(), v.violation.points.end());
     return points;
+}
+
+/// Vertical lines from `low` to `high` at the chart points where the controller changed (one line per point, broken
+/// between them by a NaN).
+void drawAdaptations(plot::Chart& chart, const runtime::PointReport& point, double low, double high, bool compact) {
+    std::set<std::size_t> at;
+    for (const runtime::ChartAdaptation& a : point.adaptations)
+        at.insert(a.chartPoint);
+    std::vector<double> xs, ys;
+    for (std::size_t p : at) {
+        const double x = static_cast<double>(p + 1);
+        xs.insert(xs.end(), {x, x, x});
+        ys.insert(ys.end(), {low, high, std::numeric_limits<double>::quiet_NaN()});
+    }
+    if (!xs.empty())
+        chart.setSeries(QStringLiteral("adaptations"),
+                        compact ? QString() : QCoreApplication::translate("tt::reports::ReportCharts", "controller changed"),
+                        xs, ys, kAdaptation);
 }
 
 QString number(double v, int decimals = 4) {
@@ -146,13 +166,17 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
     const ChartSeries marked = decimateMinMax(vx, vy, columns);
     chart.setSeries(QStringLiteral("violations"), compact ? QString() : tr("rule violations"), marked.xs, marked.ys,
                     kViolation, compact ? plot::Chart::Style::SmallPoints : plot::Chart::Style::Points);
+    const auto [lowest, highest] = std::minmax_element(c.locationMm.begin(), c.locationMm.end());
+    const double low = lowest == c.locationMm.end() ? c.limits.location.lowerMm
+                                                    : std::min(*lowest, c.limits.location.lowerMm);
+    const double high = highest == c.locationMm.end() ? c.limits.location.upperMm
+                                                       : std::max(*highest, c.limits.location.upperMm);
     const std::size_t baseline = c.limits.baselineFirstPoint + c.limits.baselinePointCount;
     if (!compact && baseline < c.locationMm.size()) {  // phase I | phase II
-        const auto [low, high] = std::minmax_element(c.locationMm.begin(), c.locationMm.end());
         const double x = static_cast<double>(baseline) + 0.5;
-        chart.setSeries(QStringLiteral("baseline"), tr("end of the baseline"), {x, x},
-                        {std::min(*low, c.limits.location.lowerMm), std::max(*high, c.limits.location.upperMm)}, kFit);
+        chart.setSeries(QStringLiteral("baseline"), tr("end of the baseline"), {x, x}, {low, high}, kFit);
     }
+    drawAdaptations(chart, point, low, high, compact);
     chart.rescale(false);
     chart.refresh();
 }
@@ -290,6 +314,28 @@ QString ReportCharts::chartDescription(const runtime::PointReport& point) {
 
 QString ReportCharts::verdictText(const core::VerdictCounts& verdicts) {
     return tr("good %1 · rework %2 · scrap %3").arg(verdicts.good).arg(verdicts.rework).arg(verdicts.scrap);
+}
+
+QString ReportCharts::adaptationText(const core::AdaptationRecord& a) {
+    namespace kind = core::adaptation_kind;
+    if (a.kind == kind::kFallback)
+        return tr("EWMA fallback (weight %1)").arg(a.fallbackWeight, 0, 'f', 2);
+    const QString delay = a.modelAfter ? tr(", delay %n part(s)", nullptr, a.modelAfter->delayParts) : QString();
+    if (a.kind == kind::kAccepted) return tr("proposed LQG applied%1").arg(delay);
+    if (a.kind == kind::kRefined) return tr("LQG refined%1").arg(delay);
+    return tr("LQG adapted%1").arg(delay);
+}
+
+QStringList ReportCharts::adaptationLines(const runtime::PointReport& point, int maxLines) {
+    QStringList lines;
+    for (const runtime::ChartAdaptation& a : point.adaptations) {
+        if (lines.size() == maxLines) {
+            lines << tr("… and %n more", nullptr, static_cast<int>(point.adaptations.size()) - maxLines);
+            break;
+        }
+        lines << tr("Run %1, part %2: %3").arg(a.runId).arg(a.record.partNumber).arg(adaptationText(a.record));
+    }
+    return lines;
 }
 
 QStringList ReportCharts::violationLines(const runtime::PointReport& point, int maxLines) {

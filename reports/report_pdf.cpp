@@ -272,6 +272,12 @@ void ReportPdf::writePointPage(Sheet& sheet, const ReportHeader& header, const r
                10, true);
     for (const QString& line : ReportCharts::violationLines(p, 6))
         sheet.text(line, 9, false, 8);
+    if (p.adaptations.empty()) return;
+    sheet.text(tr("Controller changes of the adaptive loop (marked on the chart): %n", nullptr,
+                  static_cast<int>(p.adaptations.size())),
+               10, true);
+    for (const QString& line : ReportCharts::adaptationLines(p, 4))
+        sheet.text(line, 9, false, 8);
 }
 
 }  // namespace tt::reports

@@ -178,6 +178,8 @@ PointReadings pointReadingsOf(int pointIndex, std::vector<PointRow>& rows, const
         const PointRow& r = *it;
         p.valuesMm.push_back(r.valueMm);
         p.partNumbers.push_back(r.partNumber);
+        if (p.runStarts.empty() || p.runStarts.back().runId != r.runId)
+            p.runStarts.push_back({r.runId, p.valuesMm.size() - 1});
         p.timesS.push_back(r.timeS);
         if (r.verdict == 1) ++p.verdicts.good;
         if (r.verdict == 2) ++p.verdicts.rework;

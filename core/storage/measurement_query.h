@@ -46,6 +46,12 @@ struct MeasurementRow {
     std::optional<double> upperLimitMm;
 };
 
+/// Where a run's readings begin among a point's readings (they come run after run).
+struct RunStart {
+    std::int64_t runId = 0;
+    std::size_t firstReading = 0;  ///< index into PointReadings::valuesMm
+};
+
 /// One control point's plausible readings as its statistics take them (the report of one point over a whole
 /// history reads only these): the values in production order (run, then part) and their verdict counts.
 struct PointReadings {
@@ -58,7 +64,8 @@ struct PointReadings {
     std::vector<double> valuesMm;
     std::vector<std::int64_t> partNumbers;
     std::vector<double> timesS;    ///< when each reading arrived on the loop's clock, s
-    core::VerdictCounts verdicts;  ///< of these readings; readings without a verdict are not counted
+    std::vector<RunStart> runStarts;  ///< one per run in the readings, ascending run
+    core::VerdictCounts verdicts;     ///< of these readings; readings without a verdict are not counted
 };
 
 /// The readings of every chosen control point, in point order: one pass over the covering index of the readings

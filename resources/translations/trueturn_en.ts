@@ -2506,6 +2506,37 @@
         <source>%1: parts %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>controller changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>EWMA fallback (weight %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>, delay %n part(s)</source>
+        <translation>
+            <numerusform>, delay %n part</numerusform>
+            <numerusform>, delay %n parts</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>proposed LQG applied%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LQG refined%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>LQG adapted%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run %1, part %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::reports::ReportPdf</name>
@@ -2557,6 +2588,13 @@
         <translation type="unfinished">
             <numerusform>Rule violations (Western Electric): %n</numerusform>
             <numerusform>Rule violations (Western Electric): %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Controller changes of the adaptive loop (marked on the chart): %n</source>
+        <translation>
+            <numerusform>Controller changes of the adaptive loop (marked on the chart): %n</numerusform>
+            <numerusform>Controller changes of the adaptive loop (marked on the chart): %n</numerusform>
         </translation>
     </message>
 </context>
@@ -6761,6 +6799,17 @@ point %1</source>
     </message>
     <message>
         <source>95 % interval</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Controller changes (marked): %n</source>
+        <translation>
+            <numerusform>Controller changes (marked): %n</numerusform>
+            <numerusform>Controller changes (marked): %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The controller changes of these runs could not be read: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

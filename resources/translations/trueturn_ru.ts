@@ -2512,6 +2512,38 @@
         <source>%1: parts %2</source>
         <translation>%1: детали %2</translation>
     </message>
+    <message>
+        <source>controller changed</source>
+        <translation>смена регулятора</translation>
+    </message>
+    <message>
+        <source>EWMA fallback (weight %1)</source>
+        <translation>резервный EWMA (вес %1)</translation>
+    </message>
+    <message numerus="yes">
+        <source>, delay %n part(s)</source>
+        <translation>
+            <numerusform>, запазд. %n деталь</numerusform>
+            <numerusform>, запазд. %n детали</numerusform>
+            <numerusform>, запазд. %n деталей</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>proposed LQG applied%1</source>
+        <translation>применён предложенный LQG%1</translation>
+    </message>
+    <message>
+        <source>LQG refined%1</source>
+        <translation>LQG уточнён%1</translation>
+    </message>
+    <message>
+        <source>LQG adapted%1</source>
+        <translation>LQG адаптирован%1</translation>
+    </message>
+    <message>
+        <source>Run %1, part %2: %3</source>
+        <translation>Серия %1, деталь %2: %3</translation>
+    </message>
 </context>
 <context>
     <name>tt::reports::ReportPdf</name>
@@ -2565,6 +2597,14 @@
             <numerusform>Нарушения правил (WE): %n</numerusform>
             <numerusform>Нарушения правил (WE): %n</numerusform>
             <numerusform>Нарушения правил (WE): %n</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Controller changes of the adaptive loop (marked on the chart): %n</source>
+        <translation>
+            <numerusform>Смены регулятора адаптивного контура (отмечены на карте): %n</numerusform>
+            <numerusform>Смены регулятора адаптивного контура (отмечены на карте): %n</numerusform>
+            <numerusform>Смены регулятора адаптивного контура (отмечены на карте): %n</numerusform>
         </translation>
     </message>
 </context>
@@ -6814,6 +6854,18 @@ point %1</source>
     <message>
         <source>95 % interval</source>
         <translation>95 % интервал</translation>
+    </message>
+    <message numerus="yes">
+        <source>Controller changes (marked): %n</source>
+        <translation>
+            <numerusform>Смены регулятора (отмечены): %n</numerusform>
+            <numerusform>Смены регулятора (отмечены): %n</numerusform>
+            <numerusform>Смены регулятора (отмечены): %n</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The controller changes of these runs could not be read: %1</source>
+        <translation>Смены регулятора этих серий не прочитаны: %1</translation>
     </message>
 </context>
 <context>

@@ -63,6 +63,7 @@ PointReport pointReportOf(const storage::PointReadings& readings, const core::Po
     report.series.valuesMm = readings.valuesMm;
     report.series.partNumbers = readings.partNumbers;
     report.series.timesS = readings.timesS;
+    report.runStarts = readings.runStarts;
     core::PointAnalysisSettings pointSettings = settings;
     pointSettings.spec = report.spec;
     try {

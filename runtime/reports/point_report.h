@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/common/tolerance.h"
+#include "core/ports/adaptation_record.h"
 #include "core/quality/point_analysis.h"
 #include "core/storage/measurement_query.h"
 
@@ -50,6 +51,13 @@ std::vector<PointRows> rowsByPoint(const std::vector<storage::MeasurementRow>& r
 /// nominal as target; none when no reading has a tolerance.
 std::optional<core::SpecLimits> specOf(const PointRows& point);
 
+/// A change of the loop's controller (an adaptation record of a run) placed on a point's control chart.
+struct ChartAdaptation {
+    std::int64_t runId = 0;
+    std::size_t chartPoint = 0;  ///< 0-based chart point (the part's own, or its subgroup's)
+    core::AdaptationRecord record;
+};
+
 /// The report of one control point: where it is, its tolerance, the verdict counts and core/quality's
 /// chart, run rules and capability (analysePoint).
 struct PointReport {
@@ -59,7 +67,9 @@ struct PointReport {
     std::optional<core::SpecLimits> spec;
     core::VerdictCounts verdicts;
     core::MeasuredSeries series;
+    std::vector<storage::RunStart> runStarts;  ///< where each run's readings begin in `series`
     core::PointAnalysis analysis;
+    std::vector<ChartAdaptation> adaptations;  ///< placeAdaptations: the controller's changes on the chart
 };
 
 /// The report of one control point from its readings (storage::queryPointReadings): the specification limits

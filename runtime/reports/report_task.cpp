@@ -5,6 +5,7 @@
 #include <exception>
 
 #include "core/storage/history_store.h"
+#include "runtime/reports/chart_adaptations.h"
 #include "runtime/reports/report_files.h"
 
 namespace tt::runtime {
@@ -18,6 +19,20 @@ ReportProgress progressOf(QPromise<ReportTaskResult>& promise, int from, int to)
         promise.setProgressValue(from + static_cast<int>(share * (to - from)));
         return !promise.isCanceled();
     };
+}
+
+/// The adaptations of the runs whose readings are in `readings`, into `byRun`; returns the storage's message when
+/// they cannot be read: the report stands without them.
+QString readAdaptations(storage::SqlHistoryStore& store, const std::vector<storage::PointReadings>& readings,
+                        RunAdaptations& byRun) {
+    try {
+        for (const std::int64_t run : reportRuns(readings))
+            byRun[run] = store.adaptations(run);
+        return {};
+    } catch (const std::exception& e) {
+        byRun.clear();
+        return QString::fromStdString(e.what());
+    }
 }
 
 }  // namespace
@@ -66,6 +81,7 @@ void ReportTask::analyse(const storage::DatabaseConfig& config, const storage::M
                          const core::PointAnalysisSettings& settings) {
     run([config, filter, settings](QPromise<ReportTaskResult>& promise, ReportTaskResult& result) {
         std::vector<storage::PointReadings> readings;
+        RunAdaptations byRun;
         {
             storage::Database db(config);  // this thread's own connection (QtSql)
             readings = storage::queryPointReadings(db, filter);
@@ -75,9 +91,12 @@ void ReportTask::analyse(const storage::DatabaseConfig& config, const storage::M
             result.rows = storage::queryMeasurements(db, filter);
             promise.setProgressValue(50);
             if (promise.isCanceled()) throw ReportCancelled();
-            result.runs = storage::SqlHistoryStore(db).runs();
+            storage::SqlHistoryStore store(db);
+            result.runs = store.runs();
+            result.adaptationsError = readAdaptations(store, readings, byRun);
         }
         result.points = analyseReport(readings, settings, progressOf(promise, 50, 100));
+        placeAdaptations(result.points, byRun);
     });
 }
 

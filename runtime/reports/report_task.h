@@ -18,6 +18,7 @@ struct ReportTaskResult {
     std::vector<storage::MeasurementRow> rows;
     std::vector<PointReport> points;
     std::vector<core::RunSummary> runs;
+    QString adaptationsError;  ///< why the adaptations of the runs could not be read (the report stands without them)
     QString writtenFile;
     QString error;  ///< the storage's or the statistics' message when it failed
 };

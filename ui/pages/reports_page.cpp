@@ -177,7 +177,7 @@ void ReportsPage::finished(const runtime::ReportTaskResult& result, bool cancell
     } else {
         const std::size_t rows = result.rows.size();
         m_runs = result.runs;
-        m_views->show(result.rows, result.points);
+        m_views->show(result.rows, result.points, result.adaptationsError);
         m_stack->setCurrentWidget(m_views);
         m_status->setText(tr("%n readings", nullptr, static_cast<int>(rows)));
     }

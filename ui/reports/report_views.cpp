@@ -99,8 +99,17 @@ void ReportViews::buildLayout() {
     chartCharts->addWidget(m_spread, 2);
     auto* chartTab = new QHBoxLayout;
     chartTab->addLayout(chartCharts, 1);
-    m_violations->setFixedWidth(210);
-    chartTab->addWidget(m_violations);
+    // The controller's changes and the rule violations scroll when they are longer than the charts are high.
+    auto* notes = new QScrollArea(this);
+    notes->setObjectName(QStringLiteral("reportNotes"));
+    notes->setWidget(m_violations);
+    notes->setWidgetResizable(true);
+    notes->setFrameShape(QFrame::NoFrame);
+    notes->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    notes->setFixedWidth(226);
+    notes->viewport()->setAutoFillBackground(false);  // the tab's own background, as the charts'
+    m_violations->setAutoFillBackground(false);       // (setWidget turned it on)
+    chartTab->addWidget(notes);
 
     auto* distributionTab = new QHBoxLayout;
     distributionTab->addWidget(m_histogram, 1);
@@ -131,9 +140,11 @@ void ReportViews::buildLayout() {
     layout->addWidget(m_tabs, 1);
 }
 
-void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points) {
+void ReportViews::show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points,
+                       QString adaptationsError) {
     m_rows = std::move(rows);
     m_points = std::move(points);
+    m_adaptationsError = std::move(adaptationsError);
     m_parts.clear();
     std::set<std::pair<std::int64_t, std::int64_t>> seen;
     for (const storage::MeasurementRow& r : m_rows)
@@ -163,9 +174,15 @@ void ReportViews::showPoint(int index) {
     reports::ReportCharts::showLocation(*m_location, p);
     reports::ReportCharts::showSpread(*m_spread, p);
     reports::ReportCharts::showHistogram(*m_histogram, p);
-    QStringList lines{
-        tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size()))};
-    lines << reports::ReportCharts::violationLines(p, 8);
+    // The controller's changes first (a few lines), then the rule violations in the room left.
+    QStringList lines;
+    if (!p.adaptations.empty())
+        lines << tr("Controller changes (marked): %n", nullptr, static_cast<int>(p.adaptations.size()))
+              << reports::ReportCharts::adaptationLines(p, 3);
+    if (!m_adaptationsError.isEmpty())
+        lines << tr("The controller changes of these runs could not be read: %1").arg(m_adaptationsError);
+    lines << tr("Rule violations (Western Electric): %n", nullptr, static_cast<int>(p.analysis.violations.size()))
+          << reports::ReportCharts::violationLines(p, lines.isEmpty() ? 8 : 4);
     m_violations->setText(lines.join(QLatin1Char('\n')));
     const std::vector<reports::CapabilityLine> table = reports::ReportCharts::capabilityLines(p);
     m_capability->clearSpans();

@@ -29,8 +29,10 @@ class ReportViews : public QWidget {
 public:
     explicit ReportViews(QWidget* parent = nullptr);
 
-    /// Shows a new report (the readings for the part profiles).
-    void show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points);
+    /// Shows a new report (the readings for the part profiles); `adaptationsError`: why the controller changes of the
+    /// runs could not be read (empty: they were).
+    void show(std::vector<storage::MeasurementRow> rows, std::vector<runtime::PointReport> points,
+              QString adaptationsError = {});
     /// The point shown in the chart and distribution tabs (index into points()).
     void showPoint(int index);
     /// The part (1-based, in production order over the chosen runs) whose profile is shown.
@@ -71,6 +73,7 @@ private:
     plot::Chart* m_location;
     plot::Chart* m_spread;
     QLabel* m_violations;
+    QString m_adaptationsError;
     plot::Chart* m_histogram;
     QTableWidget* m_capability;
     QLabel* m_partLabel;

@@ -7,6 +7,10 @@
 
 #include <QComboBox>
 #include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QProcess>
 #include <QPushButton>
@@ -17,6 +21,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
+#include <algorithm>
 #include <set>
 
 #include "core/quality/point_analysis.h"
@@ -186,6 +191,73 @@ TEST_F(ReportsPageTest, ChartsAndCapabilityOfTheStoredRunAreCoreQualitysFigures)
     EXPECT_EQ(views->location()->pointCount(QStringLiteral("baseline")), 2);
     views->tabs()->setCurrentIndex(0);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_xbar_r_en")));
+}
+
+// The adaptive loop's controller changes on the control chart (issue "Adaptive control", item 5): a second run on a
+// plant of twice the model's gain (`simulate --plant-gain 2`, the default action adapt) changes the controller; the
+// chart marks every applied change from the command's own JSON at that part's chart point (after the first run's
+// 150 readings), lists them under the rule violations, and the PDF prints them.
+TEST_F(ReportsPageTest, MarksTheAdaptiveLoopsControllerChangesOnTheChart) {
+    QProcess simulate;
+    simulate.start(QStringLiteral(TRUETURN_EXE),
+                   {"simulate", "--preset", "paper-2012", "--delay", "1", "--plant-gain", "2", "--parts", "400",
+                    "--warmup", "0", "--seed", "1", "--machine", "lathe-7", "--db", context.databasePath, "--json"});
+    ASSERT_TRUE(simulate.waitForFinished(tt::test::kPatientWaitMs));
+    ASSERT_EQ(simulate.exitCode(), 0) << simulate.readAllStandardError().toStdString();
+    std::vector<std::int64_t> changedAt;  // the parts where the controller changed, from the command's JSON
+    for (const QJsonValue& a : QJsonDocument::fromJson(simulate.readAllStandardOutput())["adaptations"].toArray())
+        if (a[QStringLiteral("applied")].toBool()) changedAt.push_back(a[QStringLiteral("part")].toInteger());
+    ASSERT_GE(changedAt.size(), 2u) << "the fallback and the adapted LQG";
+
+    ASSERT_TRUE(language.apply(QStringLiteral("en")));  // English plurals ("1 part")
+    MainWindow window(context);
+    ReportsPage* page = showReports(window);
+    ASSERT_NE(page, nullptr);
+    ReportViews* views = page->views();
+    for (int point = 0; point < 5; ++point) {
+        views->showPoint(point);
+        const runtime::PointReport& shown = views->points()[static_cast<std::size_t>(point)];
+        ASSERT_EQ(shown.adaptations.size(), changedAt.size()) << "point " << point + 1;
+        for (std::size_t i = 0; i < changedAt.size(); ++i) {
+            const runtime::ChartAdaptation& mark = shown.adaptations[i];
+            EXPECT_EQ(mark.runId, 2);
+            EXPECT_EQ(mark.record.partNumber, changedAt[i]);
+            EXPECT_GE(mark.chartPoint, 150u) << "after the first run's readings";
+            EXPECT_EQ(shown.series.partNumbers[mark.chartPoint], changedAt[i]) << "I-MR: one chart point per part";
+        }
+        EXPECT_EQ(views->location()->pointCount(QStringLiteral("adaptations")), 3 * static_cast<int>(changedAt.size()));
+    }
+    const QString text = views->violations()->text();
+    EXPECT_TRUE(text.contains(QStringLiteral("Controller changes (marked): %1")
+                                  .arg(changedAt.size())))
+        << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("Run 2, part %1: EWMA fallback").arg(changedAt.front())))
+        << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral(": LQG adapted, delay 1 part\n"))) << text.toStdString();
+    views->tabs()->setCurrentIndex(0);
+    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_adaptations_en")));
+
+    // Subgroups of 5: each mark on the subgroup that holds its part.
+    page->filterBar()->subgroup()->setValue(5);
+    analyseAgain(page);
+    const runtime::PointReport& grouped = views->points().front();
+    ASSERT_EQ(grouped.adaptations.size(), changedAt.size());
+    for (const runtime::ChartAdaptation& mark : grouped.adaptations) {
+        const auto reading = std::find(grouped.series.partNumbers.begin() + 150, grouped.series.partNumbers.end(),
+                                       mark.record.partNumber);
+        EXPECT_EQ(mark.chartPoint, static_cast<std::size_t>(reading - grouped.series.partNumbers.begin()) / 5);
+    }
+    const QString pdf = dir.filePath(QStringLiteral("adaptations.pdf"));
+    EXPECT_TRUE(page->exportPdf(pdf));
+    EXPECT_GT(QFileInfo(pdf).size(), 0);
+
+    ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+    views->showPoint(0);
+    const QStringList data{QStringLiteral("lathe-7"), QStringLiteral("I-MR"), QStringLiteral("EWMA"),
+                           QStringLiteral("LQG"), QStringLiteral("WE")};
+    EXPECT_TRUE(test::englishIn(views->violations(), data).isEmpty())
+        << qPrintable(test::englishIn(views->violations(), data).join(QStringLiteral("; ")));
+    EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_adaptations_ru")));
 }
 
 TEST_F(ReportsPageTest, ExportsPdfCsvAndDfq) {
