@@ -55,9 +55,10 @@ void drawAdaptations(plot::Chart& chart, const runtime::PointReport& point, doub
         ys.insert(ys.end(), {low, high, std::numeric_limits<double>::quiet_NaN()});
     }
     if (!xs.empty())
-        chart.setSeries(QStringLiteral("adaptations"),
-                        compact ? QString() : QCoreApplication::translate("tt::reports::ReportCharts", "controller changed"),
-                        xs, ys, kAdaptation);
+        chart.setSeries(
+            QStringLiteral("adaptations"),
+            compact ? QString() : QCoreApplication::translate("tt::reports::ReportCharts", "controller changed"), xs,
+            ys, kAdaptation);
 }
 
 QString number(double v, int decimals = 4) {
@@ -152,7 +153,8 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
     chart.setAxisTitles(individuals ? tr("part in order") : tr("subgroup"), compact ? tr("mm") : tr("diameter, mm"));
     const ChartSeries values = decimateMinMax(xs, c.locationMm, columns);
     chart.setSeries(QStringLiteral("values"), compact ? QString() : (individuals ? tr("diameter") : tr("mean")),
-                    values.xs, values.ys, kData, compact ? plot::Chart::Style::Line : plot::Chart::Style::LineAndPoints);
+                    values.xs, values.ys, kData,
+                    compact ? plot::Chart::Style::Line : plot::Chart::Style::LineAndPoints);
     horizontal(chart, QStringLiteral("centre"), compact ? QString() : tr("centre line"), 1.0, last,
                c.limits.location.centreMm, kCentre);
     horizontal(chart, QStringLiteral("ucl"), compact ? QString() : tr("control limits"), 1.0, last,
@@ -167,10 +169,10 @@ void ReportCharts::showLocation(plot::Chart& chart, const runtime::PointReport& 
     chart.setSeries(QStringLiteral("violations"), compact ? QString() : tr("rule violations"), marked.xs, marked.ys,
                     kViolation, compact ? plot::Chart::Style::SmallPoints : plot::Chart::Style::Points);
     const auto [lowest, highest] = std::minmax_element(c.locationMm.begin(), c.locationMm.end());
-    const double low = lowest == c.locationMm.end() ? c.limits.location.lowerMm
-                                                    : std::min(*lowest, c.limits.location.lowerMm);
-    const double high = highest == c.locationMm.end() ? c.limits.location.upperMm
-                                                       : std::max(*highest, c.limits.location.upperMm);
+    const double low =
+        lowest == c.locationMm.end() ? c.limits.location.lowerMm : std::min(*lowest, c.limits.location.lowerMm);
+    const double high =
+        highest == c.locationMm.end() ? c.limits.location.upperMm : std::max(*highest, c.limits.location.upperMm);
     const std::size_t baseline = c.limits.baselineFirstPoint + c.limits.baselinePointCount;
     if (!compact && baseline < c.locationMm.size()) {  // phase I | phase II
         const double x = static_cast<double>(baseline) + 0.5;
@@ -203,7 +205,8 @@ void ReportCharts::showSpread(plot::Chart& chart, const runtime::PointReport& po
     chart.setAxisTitles(c.limits.kind == core::ChartKind::IndividualsMovingRange ? tr("part in order") : tr("subgroup"),
                         tr("spread, mm"));
     const ChartSeries values = decimateMinMax(xs, c.spreadMm, columns);
-    chart.setSeries(QStringLiteral("values"), QString(), values.xs, values.ys, kData, plot::Chart::Style::LineAndPoints);
+    chart.setSeries(QStringLiteral("values"), QString(), values.xs, values.ys, kData,
+                    plot::Chart::Style::LineAndPoints);
     horizontal(chart, QStringLiteral("centre"), QString(), first, last, c.limits.spread.centreMm, kCentre);
     horizontal(chart, QStringLiteral("ucl"), QString(), first, last, c.limits.spread.upperMm, kLimit);
     if (c.limits.spread.lowerMm > 0.0)
@@ -318,8 +321,7 @@ QString ReportCharts::verdictText(const core::VerdictCounts& verdicts) {
 
 QString ReportCharts::adaptationText(const core::AdaptationRecord& a) {
     namespace kind = core::adaptation_kind;
-    if (a.kind == kind::kFallback)
-        return tr("EWMA fallback (weight %1)").arg(a.fallbackWeight, 0, 'f', 2);
+    if (a.kind == kind::kFallback) return tr("EWMA fallback (weight %1)").arg(a.fallbackWeight, 0, 'f', 2);
     const QString delay = a.modelAfter ? tr(", delay %n part(s)", nullptr, a.modelAfter->delayParts) : QString();
     if (a.kind == kind::kAccepted) return tr("proposed LQG applied%1").arg(delay);
     if (a.kind == kind::kRefined) return tr("LQG refined%1").arg(delay);

@@ -64,7 +64,8 @@ public:
     /// The location chart (X-bar or individuals) with centre line, control limits and the chart points of
     /// rule violations marked; `compact` for a small multiple (titled with the point, no legend).
     /// `columns` > 0: the series decimated to that many pixel columns (decimateMinMax; the printed report).
-    static void showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact = false, int columns = 0);
+    static void showLocation(plot::Chart& chart, const runtime::PointReport& point, bool compact = false,
+                             int columns = 0);
     /// The spread chart (R, s or moving range) with its centre line and limits; `columns` as for showLocation.
     static void showSpread(plot::Chart& chart, const runtime::PointReport& point, int columns = 0);
     /// The histogram with the specification limits, the nominal and the fitted normal density (mean and

@@ -129,9 +129,11 @@ QString alarmKindJson(const std::string& kind) {
 /// statistic, limit, window_parts, held, message}] and the settings of the plant and the controller.
 void addRobustJson(QJsonObject& out, const core::LatheStudyResult& r, const config::LoopScenario& scenario) {
     const core::PlantMismatch& m = scenario.plantMismatch;
-    out.insert(QStringLiteral("plant"),
-               QJsonObject{{QStringLiteral("gain_factor"), m.gainFactor},
-                           {QStringLiteral("delay"), m.delayParts.value_or(scenario.delay())}});
+    QJsonObject plant{{QStringLiteral("gain_factor"), m.gainFactor},
+                      {QStringLiteral("delay"), m.delayParts.value_or(scenario.delay())}};
+    // The statistical plant only: the analytic k_eff of the LQG designed for the plant as simulated.
+    if (!scenario.lathe) plant.insert(QStringLiteral("lqg_k_eff_analytic"), config::finiteOrNull(r.kEffTruePlantLqg));
+    out.insert(QStringLiteral("plant"), plant);
     out.insert(QStringLiteral("integral"),
                scenario.control.integral.enabled && r.controller == core::ControllerKind::Lqg
                    ? QJsonValue(QJsonObject{{QStringLiteral("weight"), scenario.control.integral.weight}})

@@ -129,6 +129,18 @@ void takeSystematicError(LatheStudyResult& result, const LatheRunRecord& closed,
 
 }  // namespace
 
+double truePlantLqgKEff(const ShaftScenario& scenario) {
+    if (scenario.lathe) return kNaN;
+    RunToRunPlantSpec spec = scenario.control.plant;
+    for (ControlPointSpec& p : spec.points)
+        p.gain *= scenario.plantMismatch.gainFactor;
+    spec.delay = scenario.plantMismatch.delayParts.value_or(spec.delay);
+    const RunToRunPlant plant = buildRunToRunPlant(spec);
+    const SteadyStateVariances v =
+        analyseSteadyState(plant, lqgControllerModel(plant, designLqg(plant, scenario.control.weights)));
+    return v.available ? v.kEffOverall : kNaN;
+}
+
 LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed, const LatheStudyOptions& options) {
     checkRunParts(options.parts, options.warmupParts);
     const std::int64_t total = options.warmupParts + options.parts;
@@ -173,6 +185,7 @@ LatheStudyResult runLatheStudy(const ShaftScenario& scenario, std::uint64_t seed
     }
     result.kEff = varianceRatio(varOpen.sum(), varClosed.sum());
     result.kEffAnalytic = analytic.available ? analytic.kEffOverall : kNaN;
+    result.kEffTruePlantLqg = truePlantLqgKEff(scenario);
 
     if (!options.profileZMm.empty()) {
         // After the loop's start-up: the first 2z + 5 parts (z parts before the first measurement

@@ -76,6 +76,11 @@ inline constexpr int kStepSettleFactor = 3;
 inline constexpr int kStepSettleParts = 5;
 inline constexpr int kStepAveragedParts = 20;
 
+/// The analytic k_eff (closed-loop Lyapunov, summed over the points) of the LQG designed, with the scenario's
+/// weights, for the simulated statistical plant itself: the scenario's plant with its gain factor and delay
+/// (PlantMismatch). NaN on the physical lathe (no linear model of it) or when the open loop is not stationary.
+double truePlantLqgKEff(const ShaftScenario& scenario);
+
 /// Result of a study: variances and k_eff at the control points, and the profile of the finished parts.
 struct LatheStudyResult {
     ControllerKind controller = ControllerKind::Lqg;
@@ -86,6 +91,8 @@ struct LatheStudyResult {
     std::vector<LatheStudyPoint> points;
     double kEff = 0.0;          ///< sum open / sum closed; NaN when either is below 1e-12 mm² (no variation)
     double kEffAnalytic = 0.0;  ///< NaN when unavailable
+    /// The LQG designed for the simulated plant itself (truePlantLqgKEff): what an adaptive loop is judged against.
+    double kEffTruePlantLqg = 0.0;
     std::int64_t rejectedValues = 0;
     VerdictCounts verdicts;            ///< the closed run's measured parts by tolerance verdict (warm-up included)
     VerdictCounts warmupVerdicts;      ///< the warm-up's share of `verdicts`

@@ -63,7 +63,7 @@ struct PointReadings {
     double limitsNominalMm = 0.0;  ///< nominal diameter of that latest reading (the capability's target)
     std::vector<double> valuesMm;
     std::vector<std::int64_t> partNumbers;
-    std::vector<double> timesS;    ///< when each reading arrived on the loop's clock, s
+    std::vector<double> timesS;       ///< when each reading arrived on the loop's clock, s
     std::vector<RunStart> runStarts;  ///< one per run in the readings, ascending run
     core::VerdictCounts verdicts;     ///< of these readings; readings without a verdict are not counted
 };

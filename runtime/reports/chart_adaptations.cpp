@@ -13,7 +13,8 @@ std::optional<std::pair<std::size_t, std::size_t>> runReadings(const PointReport
     const auto& starts = point.runStarts;
     const auto it = std::find_if(starts.begin(), starts.end(), [runId](const auto& s) { return s.runId == runId; });
     if (it == starts.end()) return std::nullopt;
-    const std::size_t last = std::next(it) == starts.end() ? point.series.partNumbers.size() : std::next(it)->firstReading;
+    const std::size_t last =
+        std::next(it) == starts.end() ? point.series.partNumbers.size() : std::next(it)->firstReading;
     return std::make_pair(it->firstReading, last);
 }
 
@@ -27,7 +28,8 @@ std::optional<std::size_t> chartPointOf(const PointReport& point, std::int64_t r
     const auto at = std::lower_bound(first, last, partNumber);
     if (at == last) return std::nullopt;
     const auto reading = static_cast<std::size_t>(at - parts.begin());
-    const std::size_t chartPoint = reading / static_cast<std::size_t>(std::max(1, point.analysis.chart.limits.subgroupSize));
+    const std::size_t chartPoint =
+        reading / static_cast<std::size_t>(std::max(1, point.analysis.chart.limits.subgroupSize));
     if (chartPoint >= point.analysis.chart.locationMm.size()) return std::nullopt;
     return chartPoint;
 }

@@ -8,11 +8,11 @@
 #include <QStackedWidget>
 #include <QVBoxLayout>
 
+#include "reports/report_pdf.h"
 #include "ui/empty_state.h"
 #include "ui/pages/planned_page.h"
 #include "ui/prompt.h"
 #include "ui/reports/report_filter_bar.h"
-#include "reports/report_pdf.h"
 #include "ui/reports/report_views.h"
 
 namespace tt::ui {
@@ -218,12 +218,13 @@ bool ReportsPage::exportPdf(const QString& path) {
     m_status->setText(tr("Writing the PDF…"));
     bool written = false;
     try {
-        reports::ReportPdf::write(path, reports::reportHeaderOf(m_views->rows(), m_runs), m_views->points(),
-                         [this](std::size_t done, std::size_t total) {
-                             m_progress->setValue(static_cast<int>(100 * done / std::max<std::size_t>(total, 1)));
-                             QCoreApplication::processEvents();
-                             return !m_cancelPdf;
-                         });
+        reports::ReportPdf::write(
+            path, reports::reportHeaderOf(m_views->rows(), m_runs), m_views->points(),
+            [this](std::size_t done, std::size_t total) {
+                m_progress->setValue(static_cast<int>(100 * done / std::max<std::size_t>(total, 1)));
+                QCoreApplication::processEvents();
+                return !m_cancelPdf;
+            });
         m_status->setText(tr("Written: %1").arg(path));
         written = true;
     } catch (const runtime::ReportCancelled&) {

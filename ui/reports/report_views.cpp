@@ -169,8 +169,8 @@ void ReportViews::fillPointChoice() {
 void ReportViews::showPoint(int index) {
     if (index < 0 || index >= static_cast<int>(m_points.size())) return;
     const runtime::PointReport& p = m_points[static_cast<std::size_t>(index)];
-    m_summary->setText(
-        QStringLiteral("%1 · %2").arg(reports::ReportCharts::chartDescription(p), reports::ReportCharts::verdictText(p.verdicts)));
+    m_summary->setText(QStringLiteral("%1 · %2").arg(reports::ReportCharts::chartDescription(p),
+                                                     reports::ReportCharts::verdictText(p.verdicts)));
     reports::ReportCharts::showLocation(*m_location, p);
     reports::ReportCharts::showSpread(*m_spread, p);
     reports::ReportCharts::showHistogram(*m_histogram, p);
@@ -207,7 +207,8 @@ void ReportViews::showPart(int number) {
     const auto [run, part] = m_parts[static_cast<std::size_t>(number - 1)];
     const QString name = tr("run %1, part %2").arg(run).arg(part);
     m_partName->setText(name);
-    reports::ReportCharts::showProfile(*m_profile, reports::partProfileOf(m_rows, run, part), tr("Profile of %1").arg(name));
+    reports::ReportCharts::showProfile(*m_profile, reports::partProfileOf(m_rows, run, part),
+                                       tr("Profile of %1").arg(name));
 }
 
 void ReportViews::showMultiples() {

@@ -12,7 +12,6 @@
 #include "core/run/shaft_run_builder.h"
 #include "core/run/shaft_study.h"
 #include "core/run/simulated_lathe.h"
-#include "core/sim/statistics/run_to_run_analysis.h"
 #include "tests/core/support/loop_test_support.h"
 #include "tests/core/support/lqg_test_support.h"
 
@@ -208,19 +207,6 @@ TEST(AdaptiveLoop, MatchingPlantDoesNotAdapt) {
     }
 }
 
-/// The analytic k_eff of the LQG designed for the simulated plant itself (the model's gains times the plant's gain
-/// factor, the plant's delay): the closed-loop Lyapunov analysis of core/sim/statistics/run_to_run_analysis.
-double truePlantLqgKEff(const ShaftScenario& s) {
-    RunToRunPlantSpec spec = s.control.plant;
-    for (ControlPointSpec& p : spec.points)
-        p.gain *= s.plantMismatch.gainFactor;
-    spec.delay = s.plantMismatch.delayParts.value_or(spec.delay);
-    const RunToRunPlant plant = buildRunToRunPlant(spec);
-    const SteadyStateVariances v = analyseSteadyState(plant, lqgControllerModel(plant, designLqg(plant, s.control.weights)));
-    EXPECT_TRUE(v.available);
-    return v.kEffOverall;
-}
-
 // The must-show of the plant unlike the model: after adapting, the k_eff of the last 1,000 of 3,000 parts is within
 // 15 % of the analytic k_eff of the LQG designed for the true plant (one part more of delay, half and twice the gain;
 // seed 1; the full grid z = 1..4 x 3 kinds is scripts/adaptive-grid.py mismatch, ratios 1.002 .. 1.013 measured).
@@ -236,7 +222,7 @@ TEST(AdaptiveLoop, AfterAdaptingKEffIsWithinFifteenPercentOfTheTruePlantsLqg) {
         options.parts = 1000;
         options.warmupParts = 2000;
         const LatheStudyResult r = runLatheStudy(s, 1, options);
-        const double reference = truePlantLqgKEff(s);
+        const double reference = r.kEffTruePlantLqg;
         SCOPED_TRACE("z = " + std::to_string(c.z) + ", gain x " + std::to_string(c.gainFactor) + ", plant delay " +
                      std::to_string(c.plantDelay.value_or(c.z)));
         ASSERT_FALSE(r.adaptations.empty());

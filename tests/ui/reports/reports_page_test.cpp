@@ -26,8 +26,10 @@
 
 #include "core/quality/point_analysis.h"
 #include "core/storage/database.h"
-#include "runtime/devices/device_hub.h"
 #include "english_words.h"
+#include "plot/chart.h"
+#include "reports/report_charts.h"
+#include "runtime/devices/device_hub.h"
 #include "screenshots.h"
 #include "scripted_prompt.h"
 #include "tests/support/patient_wait.h"
@@ -35,8 +37,6 @@
 #include "ui/language.h"
 #include "ui/main_window.h"
 #include "ui/pages/reports_page.h"
-#include "plot/chart.h"
-#include "reports/report_charts.h"
 #include "ui/reports/report_filter_bar.h"
 #include "ui/reports/report_views.h"
 
@@ -228,8 +228,7 @@ TEST_F(ReportsPageTest, MarksTheAdaptiveLoopsControllerChangesOnTheChart) {
         EXPECT_EQ(views->location()->pointCount(QStringLiteral("adaptations")), 3 * static_cast<int>(changedAt.size()));
     }
     const QString text = views->violations()->text();
-    EXPECT_TRUE(text.contains(QStringLiteral("Controller changes (marked): %1")
-                                  .arg(changedAt.size())))
+    EXPECT_TRUE(text.contains(QStringLiteral("Controller changes (marked): %1").arg(changedAt.size())))
         << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("Run 2, part %1: EWMA fallback").arg(changedAt.front())))
         << text.toStdString();
