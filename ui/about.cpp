@@ -23,6 +23,7 @@ constexpr const char* kImplemented[] = {
     QT_TRANSLATE_NOOP("tt::ui::About", "Integral action, double EWMA and model-mismatch detection"),
     QT_TRANSLATE_NOOP("tt::ui::About", "ARMA identification of the disturbance from the history"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Adaptive control: a robust fallback and a new design on a mismatch"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "The controller's changes on the Reports page's control chart"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Users, roles, log-in and the audit trail"),
     QT_TRANSLATE_NOOP("tt::ui::About", "Kiosk mode and an on-screen keypad"),
     QT_TRANSLATE_NOOP("tt::ui::About", "One run request for the Run page, CLI and resume"),
@@ -34,7 +35,7 @@ constexpr const char* kImplemented[] = {
 
 // What is not implemented yet (the About box's "Not yet" list). Remove an item when it lands.
 constexpr const char* kNotYet[] = {
-    QT_TRANSLATE_NOOP("tt::ui::About", "The adaptations on the Reports page's control chart"),
+    QT_TRANSLATE_NOOP("tt::ui::About", "Adapting to the tool's wear and the lathe's warm-up"),
 };
 
 template <std::size_t N>

@@ -2935,7 +2935,11 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The adaptations on the Reports page&apos;s control chart</source>
+        <source>The controller&apos;s changes on the Reports page&apos;s control chart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Adapting to the tool&apos;s wear and the lathe&apos;s warm-up</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2947,8 +2947,12 @@
         <translation>Адаптивное управление: резервный регулятор и новый расчёт</translation>
     </message>
     <message>
-        <source>The adaptations on the Reports page&apos;s control chart</source>
-        <translation>Адаптации на контрольной карте страницы «Отчёты»</translation>
+        <source>The controller&apos;s changes on the Reports page&apos;s control chart</source>
+        <translation>Смены регулятора на контрольной карте отчётов</translation>
+    </message>
+    <message>
+        <source>Adapting to the tool&apos;s wear and the lathe&apos;s warm-up</source>
+        <translation>Адаптация к износу резца и прогреву станка</translation>
     </message>
 </context>
 <context>
