@@ -44,6 +44,8 @@ core::MismatchMonitorConfig mismatchMonitorFromPreset(const QJsonObject& preset)
     c.windowParts = s.integer(QStringLiteral("window_parts"), c.windowParts, 10, 1000);
     c.minParts = s.integer(QStringLiteral("min_parts"), c.minParts, 5, 1000);
     c.falseAlarmProbability = s.number(QStringLiteral("false_alarm_probability"), c.falseAlarmProbability, 1e-12, 1e-2);
+    c.pointCorrelation =
+        s.number(QStringLiteral("point_correlation"), c.pointCorrelation, 0.0, core::kMaxPointCorrelation);
     try {
         c.action = core::mismatchActionFromName(s.text(QStringLiteral("action"), "adapt"));
         c.validate();

@@ -41,6 +41,10 @@ void MismatchMonitorConfig::validate() const {
     if (!std::isfinite(falseAlarmProbability) || falseAlarmProbability < 1e-12 || falseAlarmProbability > 1e-2)
         throw std::invalid_argument("the mismatch false-alarm probability must be 1e-12 .. 0.01, got " +
                                     formatSignificant(falseAlarmProbability, 3));
+    if (!std::isfinite(pointCorrelation) || pointCorrelation < 0.0 || pointCorrelation > kMaxPointCorrelation)
+        throw std::invalid_argument("the points' expected correlation must be 0 .. " +
+                                    formatSignificant(kMaxPointCorrelation, 3) + ", got " +
+                                    formatSignificant(pointCorrelation, 3));
 }
 
 double correlationStatistic(const Eigen::Matrix2d& M, const Eigen::Vector2d& b) {
@@ -159,7 +163,17 @@ std::optional<MismatchMonitor::PartTerms> MismatchMonitor::terms(const Innovatio
 
 std::optional<MismatchFinding> MismatchMonitor::add(const Innovation& innovation) {
     if (!m_config.enabled || m_tripped) return std::nullopt;
-    std::optional<PartTerms> t = terms(innovation);
+    std::optional<PartTerms> t;
+    if (innovation.correlation.size() == 0 && m_config.pointCorrelation > 0.0) {
+        // The lathe's points move together: every pair correlated alike (a common share of the variation).
+        Innovation expected = innovation;
+        const Eigen::Index m = innovation.valueMm.size();
+        expected.correlation = Eigen::MatrixXd::Constant(m, m, m_config.pointCorrelation);
+        expected.correlation.diagonal().setOnes();
+        t = terms(expected);
+    } else {
+        t = terms(innovation);
+    }
     if (!t) return std::nullopt;
     m_window.push_back(std::move(*t));
     while (m_window.size() > static_cast<std::size_t>(m_config.windowParts))

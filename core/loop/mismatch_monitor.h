@@ -42,10 +42,17 @@ struct MismatchMonitorConfig {
     /// per part, so the expected false alarms of a matching plant are at most 2 x this per part.
     double falseAlarmProbability = 1e-6;
     MismatchAction action = MismatchAction::Adapt;
+    /// The correlation of the points' innovations the monitor expects when the controller's model gives none
+    /// (0: independent points, the preset's model; at most kMaxPointCorrelation): a lathe whose points move together
+    /// (a tool offset moves the whole shaft). An identified model's own correlation takes precedence.
+    double pointCorrelation = 0.0;
 
     /// Throws std::invalid_argument naming the value and its range.
     void validate() const;
 };
+
+/// Largest expected correlation between the points' innovations (MismatchMonitorConfig::pointCorrelation).
+inline constexpr double kMaxPointCorrelation = 0.95;
 
 /// Which test of the mismatch monitor found a mismatch.
 enum class MismatchTest {

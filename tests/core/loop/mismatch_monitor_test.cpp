@@ -89,6 +89,48 @@ TEST(MismatchMonitor, FindsATooLargeDisturbance) {
     EXPECT_GT(f->statistic, f->threshold);
 }
 
+/// Feeds `parts` parts of innovations whose points share `common` of their variance (a lathe whose points move
+/// together), the corrections unrelated to them.
+std::optional<MismatchFinding> feedTogether(MismatchMonitor& monitor, int parts, std::uint64_t seed, double common) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    constexpr int kPoints = 5;
+    monitor.partStarted(0, std::vector<double>(kPoints, 0.0));
+    for (int k = 1; k <= parts; ++k) {
+        std::vector<double> u(kPoints);
+        for (double& x : u)
+            x = n01(rng);
+        monitor.partStarted(k, u);
+        Innovation inn{k, Eigen::VectorXd(kPoints), Eigen::VectorXd::Ones(kPoints)};
+        const double shared = n01(rng);
+        for (int i = 0; i < kPoints; ++i)
+            inn.valueMm(i) = std::sqrt(common) * shared + std::sqrt(1.0 - common) * n01(rng);
+        if (auto f = monitor.add(inn)) return f;
+    }
+    return std::nullopt;
+}
+
+// Points that move together (80 % of the variance common, as on the physical lathe) fail the independence test of a
+// model of independent points within 20 parts; a monitor told to expect that correlation (point_correlation 0.8)
+// stays quiet over 20,000 parts, and finds points that do not move together when it expects them to (whitened with
+// the wrong correlation their normalised sum of squares is too large).
+TEST(MismatchMonitor, ExpectsThePointsToMoveTogetherWhenToldSo) {
+    MismatchMonitor independent(MismatchMonitorConfig{});
+    const auto f = feedTogether(independent, 50, 21, 0.8);
+    ASSERT_TRUE(f);
+    EXPECT_EQ(f->test, MismatchTest::Independence);
+    EXPECT_LE(f->partNumber, 20);
+
+    MismatchMonitorConfig together;
+    together.pointCorrelation = 0.8;
+    MismatchMonitor expecting(together);
+    EXPECT_FALSE(feedTogether(expecting, 20000, 22, 0.8));
+    MismatchMonitor wrong(together);
+    const auto g = feedTogether(wrong, 200, 23, 0.0);  // whitened with the wrong correlation: the variance test
+    ASSERT_TRUE(g);
+    EXPECT_LE(g->partNumber, 50);
+}
+
 TEST(MismatchMonitor, RefusesBadSettings) {
     MismatchMonitorConfig c;
     c.windowParts = 5;
@@ -96,6 +138,11 @@ TEST(MismatchMonitor, RefusesBadSettings) {
     c = {};
     c.falseAlarmProbability = 0.5;
     EXPECT_THROW(c.validate(), std::invalid_argument);
+    for (double bad : {-0.1, 0.96, std::nan("")}) {
+        c = {};
+        c.pointCorrelation = bad;
+        EXPECT_THROW(c.validate(), std::invalid_argument) << bad;
+    }
     EXPECT_THROW(mismatchActionFromName("stop"), std::invalid_argument);
 }
 
