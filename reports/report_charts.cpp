@@ -322,7 +322,7 @@ QString ReportCharts::verdictText(const core::VerdictCounts& verdicts) {
 QString ReportCharts::adaptationText(const core::AdaptationRecord& a) {
     namespace kind = core::adaptation_kind;
     if (a.kind == kind::kFallback) return tr("EWMA fallback (weight %1)").arg(a.fallbackWeight, 0, 'f', 2);
-    const QString delay = a.modelAfter ? tr(", delay %n part(s)", nullptr, a.modelAfter->delayParts) : QString();
+    const QString delay = a.modelAfter ? tr(", delay z = %1").arg(a.modelAfter->delayParts) : QString();
     if (a.kind == kind::kAccepted) return tr("proposed LQG applied%1").arg(delay);
     if (a.kind == kind::kRefined) return tr("LQG refined%1").arg(delay);
     return tr("LQG adapted%1").arg(delay);

@@ -75,7 +75,7 @@ public:
     static void showProfile(plot::Chart& chart, const PartProfile& profile, const QString& title);
     /// Cp, Cpk, Cpm, Pp, Ppk with their intervals, then the method, the normality p, sigma within and overall.
     static std::vector<CapabilityLine> capabilityLines(const runtime::PointReport& point);
-    /// A controller change in a few words: "LQG adapted, delay 2 parts" (to the plant identified from the run).
+    /// A controller change in a few words: "LQG adapted, delay z = 2" (to the plant identified from the run).
     static QString adaptationText(const core::AdaptationRecord& record);
     /// One line per controller change on the point's chart ("Run 3, part 154: …"), at most `maxLines` and a last
     /// line saying how many more.

@@ -10,6 +10,7 @@
 #include <QString>
 #include <QTimeZone>
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 #include <map>
 #include <memory>
@@ -23,6 +24,7 @@
 #include "core/storage/history_store.h"
 #include "core/storage/measurement_query.h"
 #include "reports/report_pdf.h"
+#include "runtime/reports/chart_adaptations.h"
 #include "runtime/reports/point_report.h"
 #include "runtime/reports/report_files.h"
 
@@ -61,6 +63,17 @@ std::pair<QJsonArray, QJsonObject> violationsJson(const core::PointAnalysis& a, 
     for (const auto& [rule, n] : byRule)
         counts.insert(QString::fromStdString(rule), n);
     return {violations, counts};
+}
+
+/// [{run, part, kind, chart_point}]: where the adaptive loop changed the controller (chart_point 1-based).
+QJsonArray controllerChangesJson(const runtime::PointReport& point) {
+    QJsonArray changes;
+    for (const runtime::ChartAdaptation& a : point.adaptations)
+        changes.append(QJsonObject{{QStringLiteral("run"), static_cast<qint64>(a.runId)},
+                                   {QStringLiteral("part"), static_cast<qint64>(a.record.partNumber)},
+                                   {QStringLiteral("kind"), QString::fromStdString(a.record.kind)},
+                                   {QStringLiteral("chart_point"), static_cast<qint64>(a.chartPoint + 1)}});
+    return changes;
 }
 
 QJsonObject pointJson(const runtime::PointReport& point, std::size_t violationsListed) {
@@ -103,6 +116,7 @@ QJsonObject pointJson(const runtime::PointReport& point, std::size_t violationsL
         {QStringLiteral("violation_count"), static_cast<qint64>(a.violations.size())},
         {QStringLiteral("violations_by_rule"), violationCounts},
         {QStringLiteral("verdicts"), verdictsJson(point.verdicts)},
+        {QStringLiteral("controller_changes"), controllerChangesJson(point)},
     };
 }
 
@@ -141,6 +155,18 @@ void printText(const QJsonArray& points) {
 
 /// A --from/--to value as the stored UTC text: YYYY-MM-DD (the day's start; with `endOfDay` the next day's) or
 /// an ISO 8601 date and time (UTC when it names no zone). Throws UsageError naming the option.
+/// The adaptive loop's controller changes on each point's chart (the JSON's controller_changes, the PDF's marks); when
+/// they cannot be read the report is written without them and stderr says why.
+void markAdaptations(storage::Database& db, const std::vector<storage::PointReadings>& readings,
+                     std::vector<runtime::PointReport>& reports) {
+    try {
+        storage::SqlHistoryStore store(db);
+        runtime::placeAdaptations(reports, runtime::readRunAdaptations(store, readings));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "trueturn report: the controller changes are not marked: %s\n", e.what());
+    }
+}
+
 std::string utcBound(const QString& option, const QString& value, bool endOfDay) {
     QDateTime t;
     const QDate day = QDate::fromString(value, Qt::ISODate);
@@ -290,7 +316,8 @@ int run(const QStringList& arguments) {
     if (readings.empty() || (files && rows.empty()))
         throw UsageError("the history holds no measured part for this choice of run, machine, dates and point");
 
-    const std::vector<runtime::PointReport> reports = runtime::analyseReport(readings, settings);
+    std::vector<runtime::PointReport> reports = runtime::analyseReport(readings, settings);
+    markAdaptations(*db, readings, reports);
     QJsonArray points;
     for (const runtime::PointReport& point : reports)
         points.append(pointJson(point, violationsListed));

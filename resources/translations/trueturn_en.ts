@@ -2514,13 +2514,6 @@
         <source>EWMA fallback (weight %1)</source>
         <translation type="unfinished"></translation>
     </message>
-    <message numerus="yes">
-        <source>, delay %n part(s)</source>
-        <translation>
-            <numerusform>, delay %n part</numerusform>
-            <numerusform>, delay %n parts</numerusform>
-        </translation>
-    </message>
     <message>
         <source>proposed LQG applied%1</source>
         <translation type="unfinished"></translation>
@@ -2535,6 +2528,10 @@
     </message>
     <message>
         <source>Run %1, part %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, delay z = %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

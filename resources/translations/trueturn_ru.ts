@@ -2520,14 +2520,6 @@
         <source>EWMA fallback (weight %1)</source>
         <translation>резервный EWMA (вес %1)</translation>
     </message>
-    <message numerus="yes">
-        <source>, delay %n part(s)</source>
-        <translation>
-            <numerusform>, запазд. %n деталь</numerusform>
-            <numerusform>, запазд. %n детали</numerusform>
-            <numerusform>, запазд. %n деталей</numerusform>
-        </translation>
-    </message>
     <message>
         <source>proposed LQG applied%1</source>
         <translation>применён предложенный LQG%1</translation>
@@ -2543,6 +2535,10 @@
     <message>
         <source>Run %1, part %2: %3</source>
         <translation>Серия %1, деталь %2: %3</translation>
+    </message>
+    <message>
+        <source>, delay z = %1</source>
+        <translation>, запазд. z = %1</translation>
     </message>
 </context>
 <context>

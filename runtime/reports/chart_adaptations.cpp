@@ -44,6 +44,13 @@ std::vector<std::int64_t> reportRuns(const std::vector<storage::PointReadings>& 
     return {runs.begin(), runs.end()};
 }
 
+RunAdaptations readRunAdaptations(core::HistoryStore& store, const std::vector<storage::PointReadings>& readings) {
+    RunAdaptations byRun;
+    for (const std::int64_t run : reportRuns(readings))
+        byRun[run] = store.adaptations(run);
+    return byRun;
+}
+
 void placeAdaptations(std::vector<PointReport>& points, const RunAdaptations& byRun) {
     for (PointReport& point : points) {
         point.adaptations.clear();

@@ -26,8 +26,7 @@ ReportProgress progressOf(QPromise<ReportTaskResult>& promise, int from, int to)
 QString readAdaptations(storage::SqlHistoryStore& store, const std::vector<storage::PointReadings>& readings,
                         RunAdaptations& byRun) {
     try {
-        for (const std::int64_t run : reportRuns(readings))
-            byRun[run] = store.adaptations(run);
+        byRun = readRunAdaptations(store, readings);
         return {};
     } catch (const std::exception& e) {
         byRun.clear();

@@ -79,9 +79,26 @@ TEST_F(ReportTest, JsonPerPointHasTheIssuesFieldsAndTheTextbookFigures) {
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     const QJsonArray points = r.json()["points"].toArray();
     ASSERT_EQ(points.size(), 5);
-    const QStringList keys{"cp",       "cpk",         "cpk_ci", "cpm", "limits", "mean_mm",          "method",
-                           "n",        "normality_p", "point",  "pp",  "ppk",    "sigma_overall_mm", "sigma_within_mm",
-                           "verdicts", "violation_count", "violations", "violations_by_rule", "x_mm"};
+    const QStringList keys{"cp",
+                           "cpk",
+                           "cpk_ci",
+                           "cpm",
+                           "limits",
+                           "mean_mm",
+                           "method",
+                           "n",
+                           "normality_p",
+                           "point",
+                           "pp",
+                           "ppk",
+                           "sigma_overall_mm",
+                           "sigma_within_mm",
+                           "verdicts",
+                           "violation_count",
+                           "violations",
+                           "violations_by_rule",
+                           "x_mm",
+                           "controller_changes"};
     for (int i = 1; i <= 5; ++i) {
         const QJsonObject p = points[i - 1].toObject();
         QStringList have = p.keys();
@@ -139,9 +156,13 @@ TEST_F(ReportTest, JsonPerPointHasTheIssuesFieldsAndTheTextbookFigures) {
     }
     // The list is as long as asked: --violations N or all.
     const QJsonObject all = runTrueturn({"report", "--db", db, "--point", "1", "--violations", "all", "--json"})
-                                .json()["points"].toArray()[0].toObject();
+                                .json()["points"]
+                                .toArray()[0]
+                                .toObject();
     const QJsonObject one = runTrueturn({"report", "--db", db, "--point", "1", "--violations", "1", "--json"})
-                                .json()["points"].toArray()[0].toObject();
+                                .json()["points"]
+                                .toArray()[0]
+                                .toObject();
     ASSERT_GT(all["violation_count"].toInteger(), 1);
     EXPECT_EQ(all["violations"].toArray().size(), all["violation_count"].toInteger());
     EXPECT_EQ(one["violations"].toArray().size(), 1);
@@ -231,6 +252,46 @@ TEST_F(ReportTest, DfqForQdasHasTheCharacteristicsAndEveryValue) {
     EXPECT_EQ(dates, static_cast<int>(x.size()));
     for (std::size_t i = 0; i < x.size(); ++i)
         EXPECT_NEAR(values[i], x[i], 5e-5) << "four decimals (K2022)";
+}
+
+// The adaptive loop's controller changes: a run on a plant of twice the model's gain adapts (simulate's own JSON
+// lists where the controller changed); report --json gives each point the same changes at their chart points, with
+// subgroups of 5 at the subgroup holding the part; the PDF is written. A damaged adaptations table leaves the report
+// standing without them and says so on stderr.
+TEST_F(ReportTest, ListsTheAdaptiveLoopsControllerChangesAtTheirChartPoints) {
+    const QString db = path("adaptive.sqlite");
+    const CliResult sim = runTrueturn({"simulate", "--preset", "paper-2012", "--delay", "1", "--plant-gain", "2",
+                                       "--parts", "400", "--warmup", "0", "--seed", "1", "--db", db, "--json"});
+    ASSERT_EQ(sim.exitCode, 0) << qPrintable(sim.err);
+    std::vector<qint64> changedAt;
+    for (const QJsonValue& a : sim.json()["adaptations"].toArray())
+        if (a["applied"].toBool()) changedAt.push_back(a["part"].toInteger());
+    ASSERT_GE(changedAt.size(), 2u);
+    for (const int subgroup : {1, 5}) {
+        const CliResult r = runTrueturn(
+            {"report", "--db", db, "--subgroup", QString::number(subgroup), "--json", "--pdf", path("adaptive.pdf")});
+        ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
+        EXPECT_TRUE(r.err.isEmpty()) << qPrintable(r.err);
+        for (const QJsonValue& p : r.json()["points"].toArray()) {
+            const QJsonArray changes = p["controller_changes"].toArray();
+            ASSERT_EQ(static_cast<std::size_t>(changes.size()), changedAt.size());
+            for (qsizetype i = 0; i < changes.size(); ++i) {
+                EXPECT_EQ(changes[i]["run"].toInteger(), 1);
+                EXPECT_EQ(changes[i]["part"].toInteger(), changedAt[static_cast<std::size_t>(i)]);
+                // Every part measured and plausible here: part p is reading p, chart point ceil(p / n).
+                EXPECT_EQ(changes[i]["chart_point"].toInteger(),
+                          (changedAt[static_cast<std::size_t>(i)] - 1) / subgroup + 1);
+            }
+        }
+    }
+    {
+        storage::Database history(storage::DatabaseConfig::sqlite(db));
+        history.exec(QStringLiteral("UPDATE adaptations SET model_before = '{\"points\": 3}'"));
+    }
+    const CliResult damaged = runTrueturn({"report", "--db", db, "--json"});
+    ASSERT_EQ(damaged.exitCode, 0) << qPrintable(damaged.err);
+    EXPECT_TRUE(damaged.err.contains("the controller changes are not marked")) << qPrintable(damaged.err);
+    EXPECT_TRUE(damaged.json()["points"].toArray()[0].toObject()["controller_changes"].toArray().isEmpty());
 }
 
 // A plant-wide history: runs tagged with their machine; the report reads one machine, or a date range.

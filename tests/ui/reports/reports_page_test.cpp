@@ -209,7 +209,6 @@ TEST_F(ReportsPageTest, MarksTheAdaptiveLoopsControllerChangesOnTheChart) {
         if (a[QStringLiteral("applied")].toBool()) changedAt.push_back(a[QStringLiteral("part")].toInteger());
     ASSERT_GE(changedAt.size(), 2u) << "the fallback and the adapted LQG";
 
-    ASSERT_TRUE(language.apply(QStringLiteral("en")));  // English plurals ("1 part")
     MainWindow window(context);
     ReportsPage* page = showReports(window);
     ASSERT_NE(page, nullptr);
@@ -232,7 +231,7 @@ TEST_F(ReportsPageTest, MarksTheAdaptiveLoopsControllerChangesOnTheChart) {
         << text.toStdString();
     EXPECT_TRUE(text.contains(QStringLiteral("Run 2, part %1: EWMA fallback").arg(changedAt.front())))
         << text.toStdString();
-    EXPECT_TRUE(text.contains(QStringLiteral(": LQG adapted, delay 1 part\n"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral(": LQG adapted, delay z = 1\n"))) << text.toStdString();
     views->tabs()->setCurrentIndex(0);
     EXPECT_TRUE(test::saveScreenshot(window, QStringLiteral("reports_adaptations_en")));
 
