@@ -70,6 +70,7 @@ core::AdaptationConfig adaptationFromPreset(const QJsonObject& preset) {
     c.minDelayEvidence = s.number(QStringLiteral("min_delay_evidence"), c.minDelayEvidence, 0.0, 1e6);
     c.minParts = s.integer(QStringLiteral("min_parts"), c.minParts, 70, 100000);
     c.refineBelow = s.number(QStringLiteral("refine_below"), c.refineBelow, 0.0, 1.0);
+    c.minGainMargin = s.number(QStringLiteral("min_gain_margin"), c.minGainMargin, 1.05, core::kMaxMinGainMargin);
     c.refineParts = s.integer(QStringLiteral("refine_parts"), c.refineParts, 10, 100000);
     try {
         c.criterion = core::informationCriterionFromName(s.text(QStringLiteral("criterion"), "bic"));

@@ -97,11 +97,12 @@ ControllerModel controllerModelFrom(const PlantIdentification& id, std::string s
     return model;
 }
 
-double requiredGainFactor(const std::vector<double>& gain, const std::vector<double>& gainStdErr) {
+double requiredGainFactor(const std::vector<double>& gain, const std::vector<double>& gainStdErr,
+                          double minGainMargin) {
     double worstShare = 0.0;
     for (std::size_t i = 0; i < gain.size() && i < gainStdErr.size(); ++i)
         if (std::isfinite(gainStdErr[i]) && gain[i] > 0.0) worstShare = std::max(worstShare, gainStdErr[i] / gain[i]);
-    return 1.0 + std::max(kMinGainUncertainty, kGainSigmas * worstShare);
+    return std::max(minGainMargin, 1.0 + kGainSigmas * worstShare);
 }
 
 double worstGainShare(const PlantModelRecord& model, bool joint) {
@@ -113,7 +114,8 @@ double worstGainShare(const PlantModelRecord& model, bool joint) {
     return worst;
 }
 
-AdaptedDesign designAdapted(const RunToRunSetup& current, const PlantIdentification& id, const std::string& source) {
+AdaptedDesign designAdapted(const RunToRunSetup& current, const PlantIdentification& id, const std::string& source,
+                            double minGainMargin) {
     RunToRunSetup next = current;
     next.model = controllerModelFrom(id, source);
     // The margins cover the identified gains' uncertainty as the identification chose the model (given the
@@ -123,7 +125,7 @@ AdaptedDesign designAdapted(const RunToRunSetup& current, const PlantIdentificat
         gain.push_back(p.fit.gain);
         stdErr.push_back(p.fit.gainStdErr);
     }
-    return designForModel(next, requiredGainFactor(gain, stdErr));
+    return designForModel(next, requiredGainFactor(gain, stdErr, minGainMargin));
 }
 
 AdaptedDesign designForModel(const RunToRunSetup& withModel, double required) {

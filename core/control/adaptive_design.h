@@ -50,6 +50,9 @@ inline constexpr double kDetuneFactors[] = {1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 
 /// cannot tell a gain at all).
 double worstGainShare(const PlantModelRecord& model, bool joint = false);
 
+/// The gain change a new design's margins must cover by default: 1 + kMinGainUncertainty.
+inline constexpr double kDefaultMinGainMargin = 1.0 + kMinGainUncertainty;
+
 /// An LQG design for an identified plant with its margins checked.
 struct AdaptedDesign {
     RunToRunSetup setup;              ///< the setup with the identified model (and the R2 finally used)
@@ -65,15 +68,18 @@ struct AdaptedDesign {
 ControllerModel controllerModelFrom(const PlantIdentification& id, std::string source);
 
 /// Re-synthesises the LQG of `current` (its weights, limits, integral action) for the identified plant and checks
-/// its margins (see kMinGainUncertainty). Throws std::invalid_argument when the plant cannot be built.
-AdaptedDesign designAdapted(const RunToRunSetup& current, const PlantIdentification& id, const std::string& source);
+/// its margins: they cover a gain change of requiredGainFactor(..., minGainMargin). Throws std::invalid_argument
+/// when the plant cannot be built.
+AdaptedDesign designAdapted(const RunToRunSetup& current, const PlantIdentification& id, const std::string& source,
+                            double minGainMargin = kDefaultMinGainMargin);
 
 /// The same for a setup that already carries its model (setup.model), with the margins covering a gain change
 /// `requiredGainFactor` (>= 1) up and down (a resumed run designs again what it recorded).
 AdaptedDesign designForModel(const RunToRunSetup& withModel, double requiredGainFactor);
 
-/// 1 + max(kMinGainUncertainty, kGainSigmas x the largest relative standard error of the gains).
-double requiredGainFactor(const std::vector<double>& gain, const std::vector<double>& gainStdErr);
+/// max(minGainMargin, 1 + kGainSigmas x the largest relative standard error of the gains).
+double requiredGainFactor(const std::vector<double>& gain, const std::vector<double>& gainStdErr,
+                          double minGainMargin = kDefaultMinGainMargin);
 
 /// The adapted LQG controller of a design (makeRunToRunController on its setup).
 std::unique_ptr<RunToRunController> makeAdaptedController(const RunToRunSetup& adapted);

@@ -53,6 +53,10 @@ void AdaptationConfig::validate() const {
         throw std::invalid_argument("the largest standard error of an identified gain must be in (0, 1] of the gain");
     if (!std::isfinite(minDelayEvidence) || minDelayEvidence < 0.0)
         throw std::invalid_argument("the evidence the identified delay needs must be >= 0");
+    if (!std::isfinite(minGainMargin) || minGainMargin < 1.05 || minGainMargin > kMaxMinGainMargin)
+        throw std::invalid_argument("the gain margin a new design must have must be 1.05 .. " +
+                                    formatSignificant(kMaxMinGainMargin, 3) + ", got " +
+                                    formatSignificant(minGainMargin, 3));
 }
 
 }  // namespace tt::core

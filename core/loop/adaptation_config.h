@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/control/adaptive_design.h"
 #include "core/control/plant_identification.h"
 #include "core/control/run_to_run_plant.h"
 
@@ -24,7 +25,10 @@ struct AdaptationConfig {
     double refineBelow = 0.05;
     int refineParts = 200;
     double minDelayEvidence = 10.0;  ///< criterion difference the chosen delay needs over the next
-    int minParts = 150;              ///< consecutive measured parts the identification needs at least
+    /// The gain change (up, and its inverse down) a new design's margins must cover at least, beyond what the
+    /// identified gains' uncertainty asks (1.05 .. kMaxMinGainMargin): a commissioning engineer's demand.
+    double minGainMargin = kDefaultMinGainMargin;
+    int minParts = 150;  ///< consecutive measured parts the identification needs at least
 
     /// The identification options for a loop of delay `loopDelay` starting from the model `model` (its gains and, in
     /// ARMA form, its disturbances).
@@ -32,6 +36,9 @@ struct AdaptationConfig {
     /// Throws std::invalid_argument naming the value and its range.
     void validate() const;
 };
+
+/// Largest gain margin a preset may demand of a new design.
+inline constexpr double kMaxMinGainMargin = 100.0;
 
 /// Largest dither share of the tolerance zone.
 inline constexpr double kMaxDitherShare = 0.5;

@@ -218,7 +218,7 @@ AdaptationStep AdaptiveLoop::refine(std::int64_t part, double timeS) {
             const double spread = std::hypot(now.gainStdErrJoint, next.gainStdErrJoint);
             if (std::isfinite(spread) && std::abs(next.gain - now.gain) > kRefineConsistency * spread) return {};
         }
-    const AdaptedDesign design = designAdapted(m_setup, id, source);
+    const AdaptedDesign design = designAdapted(m_setup, id, source, m_config.minGainMargin);
     if (!design.passes) return {};
     AdaptationRecord r = record(adaptation_kind::kRefined, part, timeS);
     r.modelAfter = model;
@@ -290,7 +290,7 @@ AdaptationStep AdaptiveLoop::identifyAndDesign(std::int64_t part, double timeS) 
     const std::string source = "parts " + std::to_string(history.firstPart) + " .. " +
                                std::to_string(history.firstPart + static_cast<std::int64_t>(history.size()) - 1) +
                                " of the run";
-    const AdaptedDesign design = designAdapted(m_setup, id, source);
+    const AdaptedDesign design = designAdapted(m_setup, id, source, m_config.minGainMargin);
     const bool propose = m_action == MismatchAction::Propose;
     AdaptationRecord r = record(!design.passes ? adaptation_kind::kRefused
                                 : propose      ? adaptation_kind::kProposed
@@ -397,7 +397,7 @@ std::unique_ptr<RunToRunController> AdaptiveLoop::restore(const std::vector<Adap
                 gain.push_back(p.gain);
                 stdErr.push_back(p.gainStdErr);
             }
-            m_setup = designForModel(next, requiredGainFactor(gain, stdErr)).setup;
+            m_setup = designForModel(next, requiredGainFactor(gain, stdErr, m_config.minGainMargin)).setup;
             m_modelRecord = *r.modelAfter;
             controller = makeAdaptedController(m_setup);
             m_phase = Phase::Model;

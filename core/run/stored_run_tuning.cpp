@@ -67,7 +67,7 @@ StoredRunTuning tuneFromStoredRun(HistoryStore& history, std::int64_t runId, con
     const std::string source =
         "run " + std::to_string(runId) + ", parts " + std::to_string(t.firstPart) + " .. " + std::to_string(t.lastPart);
     t.model = modelRecord(t.identification, source);
-    t.design = designAdapted(setup, t.identification, source);
+    t.design = designAdapted(setup, t.identification, source, config.minGainMargin);
     // The identified plant as the truth: its delay z + lag, gains and disturbances.
     const RunToRunPlant truth = buildRunToRunPlant(designPlantSpec(t.design.setup));
     t.current = onPlant(truth, setup);

@@ -81,6 +81,22 @@ TEST(AdaptiveCli, RefusesBadAdaptationOptions) {
         EXPECT_EQ(r.exitCode, 2) << qPrintable(bad.join(' '));
         EXPECT_TRUE(r.err.contains(bad.first())) << qPrintable(r.err);
     }
+    // The preset's own settings of the monitor and the adaptation, named with their section.
+    QTemporaryDir dir;
+    for (const char* section :
+         {R"({"adaptation": {"min_gain_margin": 1.0}})", R"({"adaptation": {"min_gain_margin": 500}})",
+          R"({"mismatch_monitor": {"point_correlation": 0.99}})",
+          R"({"mismatch_monitor": {"point_correlation": -0.2}})"}) {
+        QFile preset(dir.filePath(QStringLiteral("bad.json")));
+        ASSERT_TRUE(preset.open(QIODevice::WriteOnly));
+        preset.write(QByteArray(R"({"based_on": "paper-2012", "loop": )") + section + "}");
+        preset.close();
+        const CliResult r = runTrueturn({"simulate", "--preset", preset.fileName(), "--parts", "100", "--json"});
+        EXPECT_EQ(r.exitCode, 2) << section;
+        EXPECT_TRUE(
+            r.err.contains(QString::fromLatin1(section).contains("margin") ? "min_gain_margin" : "point_correlation"))
+            << qPrintable(r.err);
+    }
 }
 
 // Commissioning: a run stored with the plant at half the model's gain (alarm only: the LQG of the preset's model

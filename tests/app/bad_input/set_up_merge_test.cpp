@@ -113,10 +113,19 @@ TEST_F(SetUpMerge, DumpPresetRunsNothingAndRefusesAHistory) {
 
 TEST_F(SetUpMerge, TheReadmeExampleKeepsTheMismatchMonitorAndRuns) {
     // Before the merge the base's whole loop section was lost: with seed 4 and z = 4 the monitor's default
-    // (hold) froze the correction at part 13. The base's "alarm" now stays: the alarm at part 13 only alarms.
+    // (then hold) froze the correction at part 13. The base's monitor section now stays whole: its "alarm" and the
+    // points' expected correlation (with it that run no longer alarms at all). A plant one part slower than the
+    // model (--plant-delay 5) makes the monitor fire: the alarm only alarms.
     const QString file = preset(QStringLiteral("h7.json"), object(R"({"based_on": "paper-2012-group1",
                                                                         "loop": {"tolerance": {"fit": "h7"}}})"));
-    const QStringList run{"simulate", "--preset", file, "--delay", "4", "--parts", "100", "--seed", "4", "--json"};
+    const QJsonObject monitor = dump(file).value("loop").toObject().value("mismatch_monitor").toObject();
+    EXPECT_EQ(monitor.value("action").toString(), QStringLiteral("alarm"));
+    EXPECT_EQ(monitor.value("point_correlation").toDouble(), 0.8);
+    const QStringList quiet{"simulate", "--preset", file, "--delay", "4", "--parts", "100", "--seed", "4", "--json"};
+    const CliResult calm = runTrueturn(quiet);
+    ASSERT_EQ(calm.exitCode, 0) << qPrintable(calm.err);
+    EXPECT_TRUE(calm.json().value("alarms").toArray().isEmpty());
+    const QStringList run = quiet + QStringList{"--plant-delay", "5"};
     const CliResult r = runTrueturn(run);
     ASSERT_EQ(r.exitCode, 0) << qPrintable(r.err);
     const QJsonArray alarms = r.json().value("alarms").toArray();

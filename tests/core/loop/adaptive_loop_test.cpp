@@ -185,6 +185,34 @@ TEST(AdaptiveLoop, ProposesAndTakesTheEngineersApply) {
     EXPECT_NE(engine->controllerDescription().find("LQG adapted"), std::string::npos);
 }
 
+// A design whose margins fail is not applied (item 3): with a commissioning demand no LQG can meet (a gain margin of
+// 100, loop.adaptation.min_gain_margin), every identification's design is refused with the margin named, the
+// fallback stays in charge (only its switch happened), is retried later, and the operator's notice says why.
+TEST(AdaptiveLoop, ADesignThatFailsItsMarginsIsNotAppliedAndTheFallbackStays) {
+    ShaftScenario s = paperScenario(1, 2.0, std::nullopt, MismatchAction::Adapt);
+    s.adaptation.minGainMargin = 100.0;
+    Watch w;
+    const LatheRunRecord r = run(s, 800, w);
+    SCOPED_TRACE(sequence(r));
+    ASSERT_TRUE(r.outcome.complete) << r.outcome.stopReason;
+    ASSERT_GE(r.adaptations.size(), 3u) << "the fallback, then a refused design retried later";
+    EXPECT_EQ(r.adaptations.front().kind, adaptation_kind::kFallback);
+    int refused = 0;
+    for (std::size_t i = 1; i < r.adaptations.size(); ++i) {
+        const AdaptationRecord& a = r.adaptations[i];
+        EXPECT_EQ(a.kind, adaptation_kind::kRefused);
+        EXPECT_FALSE(a.applied);
+        EXPECT_NE(a.reason.find("gain margin"), std::string::npos) << a.reason;
+        EXPECT_NE(a.reason.find("the 100 the identified gain's uncertainty needs"), std::string::npos) << a.reason;
+        EXPECT_EQ(a.notice.kind, NoticeKind::AdaptationRefused);
+        EXPECT_EQ(a.notice.cause, a.reason);
+        ++refused;
+    }
+    EXPECT_GE(refused, 2);
+    EXPECT_EQ(r.switches, 1) << "only the fallback took over";
+    expectBumpless(w, r, s.control.limits.maxStepMm);
+}
+
 // Hold and alarm keep their meaning: no adaptation.
 TEST(AdaptiveLoop, HoldAndAlarmDoNotAdapt) {
     for (MismatchAction action : {MismatchAction::Hold, MismatchAction::AlarmOnly}) {
