@@ -4042,6 +4042,22 @@ L/d %4</source>
         <source>Drive</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paper&apos;s drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Soft drives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paper&apos;s drives: the 1V340F30 lathe of paper 002 (Kv 16.7 1/s), where drifts of the inertia hardly move the best pulse. Soft drives: the same lathe with half the position loop gain (Kv 8.35 1/s) and a slow cross slide (50 ms), where they do.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::DeformationModelPanel</name>

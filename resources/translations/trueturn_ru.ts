@@ -4064,6 +4064,22 @@ L/d %4</translation>
         <source>Drive</source>
         <translation>Привод</translation>
     </message>
+    <message>
+        <source>Machine</source>
+        <translation>Станок</translation>
+    </message>
+    <message>
+        <source>Paper&apos;s drives</source>
+        <translation>Приводы статьи</translation>
+    </message>
+    <message>
+        <source>Soft drives</source>
+        <translation>Мягкие приводы</translation>
+    </message>
+    <message>
+        <source>Paper&apos;s drives: the 1V340F30 lathe of paper 002 (Kv 16.7 1/s), where drifts of the inertia hardly move the best pulse. Soft drives: the same lathe with half the position loop gain (Kv 8.35 1/s) and a slow cross slide (50 ms), where they do.</source>
+        <translation>Приводы статьи: токарный станок 1В340Ф30 из статьи 002 (Kv 16,7 1/с), на котором дрейф момента инерции почти не меняет лучший импульс. Мягкие приводы: тот же станок с вдвое меньшим коэффициентом контура положения (Kv 8,35 1/с) и медленным поперечным суппортом (50 мс), на котором меняет.</translation>
+    </message>
 </context>
 <context>
     <name>tt::ui::DeformationModelPanel</name>

@@ -53,6 +53,8 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
     : ProcessTool(parent),
       m_curve(std::make_shared<LiveCurve>()),
       m_job(new CornerJob(this)),
+      m_machineLabel(new QLabel(this)),
+      m_machine(new QComboBox(this)),
       m_editor(new CornerMoveEditor(this)),
       m_simulate(new QPushButton(this)),
       m_summary(new QLabel(this)),
@@ -81,15 +83,13 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_driftText(wrapped(this)),
       m_driftChart(new plot::Chart(this)) {
     (void)context;  // the tool needs no device and no history: it works on the simulator
-    try {
-        m_scenario = config::loadCornerScenario(config::kDefaultCornerPreset);
-    } catch (const std::exception& e) {
-        m_scenarioProblem = QString::fromStdString(e.what());
-    }
+    loadScenario(config::kDefaultCornerPreset);
     buildLayout();
     m_editor->setPulse(m_scenario.pulse);
     m_editor->setSamples(
         core::drawCornerMoves(m_scenario.xSpeeds, m_scenario.zSpeeds, kSampleCorners, m_scenario.training.seed + 1));
+    connect(m_machine, &QComboBox::activated, this,
+            [this](int index) { setMachine(m_machine->itemData(index).toString()); });
     connect(m_simulate, &QPushButton::clicked, this, &CornerTool::simulate);
     connect(m_editor, &CornerMoveEditor::changed, this, &CornerTool::simulate);
     connect(m_zoom, &QCheckBox::toggled, this, [this] {
@@ -107,6 +107,44 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
 }
 
 CornerTool::~CornerTool() = default;
+
+void CornerTool::loadScenario(const QString& name) {
+    try {
+        m_scenario = config::loadCornerScenario(name);
+        m_scenarioProblem.clear();
+    } catch (const std::exception& e) {
+        m_scenarioProblem = QString::fromStdString(e.what());
+    }
+}
+
+bool CornerTool::setMachine(const QString& name) {
+    const int index = m_machine->findData(name);
+    if (busy() || index < 0) {
+        m_machine->setCurrentIndex(m_machine->findData(QString::fromStdString(m_scenario.name)));
+        return false;
+    }
+    const core::CornerScenario before = m_scenario;
+    loadScenario(name);
+    if (!m_scenarioProblem.isEmpty()) {
+        m_scenario = before;
+        m_machine->setCurrentIndex(m_machine->findData(QString::fromStdString(before.name)));
+        m_summary->setText(tr("The corner preset cannot be read: %1").arg(m_scenarioProblem));
+        m_scenarioProblem.clear();
+        return false;
+    }
+    m_machine->setCurrentIndex(index);
+    m_net.reset();
+    m_lastRun.reset();
+    m_lastStatus.clear();
+    m_trainingChart->clear();
+    m_driftChart->clear();
+    m_trainingMoves->setValue(m_scenario.training.moves);
+    m_editor->setPulse(m_scenario.pulse);
+    m_editor->setSamples(
+        core::drawCornerMoves(m_scenario.xSpeeds, m_scenario.zSpeeds, kSampleCorners, m_scenario.training.seed + 1));
+    retranslate();
+    return true;
+}
 
 QString CornerTool::title() const {
     return tr("Corner pulse");
@@ -214,6 +252,15 @@ void CornerTool::buildLayout() {
     auto* jobRow = new QHBoxLayout;
     jobRow->addWidget(m_progress, 1);
     jobRow->addWidget(m_cancel);
+    m_machine->setObjectName(QStringLiteral("cornerMachine"));
+    m_machine->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_machine->addItem(QString(), QStringLiteral("1v340-feed-drives"));
+    m_machine->addItem(QString(), QStringLiteral("1v340-soft-drives"));
+    auto* machineBox = new QWidget(this);
+    auto* machineRow = new QHBoxLayout(machineBox);
+    machineRow->setContentsMargins(8, 0, 4, 2);
+    machineRow->addWidget(m_machineLabel);
+    machineRow->addWidget(m_machine);
     auto* left = new QVBoxLayout;
     left->setSpacing(4);
     left->addWidget(m_editor);
@@ -230,6 +277,7 @@ void CornerTool::buildLayout() {
     m_views->addTab(buildCornerView(), QString());
     m_views->addTab(buildNetworkView(), QString());
     m_views->addTab(buildDriftView(), QString());
+    m_views->setCornerWidget(machineBox, Qt::TopRightCorner);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(leftBox);
@@ -238,6 +286,13 @@ void CornerTool::buildLayout() {
 
 void CornerTool::retranslate() {
     m_editor->retranslate();
+    m_machineLabel->setText(tr("Machine"));
+    m_machine->setItemText(0, tr("Paper's drives"));
+    m_machine->setItemText(1, tr("Soft drives"));
+    m_machine->setToolTip(
+        tr("Paper's drives: the 1V340F30 lathe of paper 002 (Kv 16.7 1/s), where drifts of the "
+           "inertia hardly move the best pulse. Soft drives: the same lathe with half the position "
+           "loop gain (Kv 8.35 1/s) and a slow cross slide (50 ms), where they do."));
     m_simulate->setText(tr("Simulate"));
     m_cancel->setText(tr("Cancel"));
     m_views->setTabText(0, tr("Paths"));
@@ -459,6 +514,7 @@ void CornerTool::updateEnabled() {
     m_simulate->setEnabled(ok);
     m_train->setEnabled(idle && ok);
     m_trainingMoves->setEnabled(idle);
+    m_machine->setEnabled(idle);
     m_run->setEnabled(idle && m_net.has_value());
     m_retrain->setEnabled(idle && m_net && m_lastRun && !m_lastRun->recent.empty());
     m_driftKind->setEnabled(idle);

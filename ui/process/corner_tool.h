@@ -67,6 +67,10 @@ public:
     bool retrainNow();
     /// Cancels the running job (the network of before is kept).
     void cancel();
+    /// Switches to the corner preset `name` (1v340-feed-drives, the paper's drives, or 1v340-soft-drives);
+    /// the network, the run and the samples belong to the machine and start afresh. False when busy or when
+    /// the preset cannot be read (the machine of before stays, the summary says why).
+    bool setMachine(const QString& name);
     /// Whether a job runs.
     bool busy() const;
 
@@ -80,6 +84,7 @@ public:
     QPushButton* retrainButton() const { return m_retrain; }
     QSpinBox* trainingMovesBox() const { return m_trainingMoves; }
     QSpinBox* cornersBox() const { return m_corners; }
+    QComboBox* machineBox() const { return m_machine; }
     QComboBox* driftKindBox() const { return m_driftKind; }
     QComboBox* driftAxisBox() const { return m_driftAxis; }
     QDoubleSpinBox* driftFactorBox() const { return m_driftFactor; }
@@ -111,6 +116,7 @@ private:
     QWidget* buildNetworkView();
     QWidget* buildDriftView();
     void buildLayout();
+    void loadScenario(const QString& name);
     void updateEnabled();
     void showProgress(const QString& stage, int done, int total);
     void finishJob(bool cancelled, const QString& error);
@@ -129,6 +135,8 @@ private:
     QString m_lastStatus;
     CornerJob* m_job;
 
+    QLabel* m_machineLabel;
+    QComboBox* m_machine;
     CornerMoveEditor* m_editor;
     QPushButton* m_simulate;
     QLabel* m_summary;
