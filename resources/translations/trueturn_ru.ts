@@ -224,7 +224,7 @@
     </message>
     <message>
         <source>Measured − predicted cost, %</source>
-        <translation>Измеренная − расчётная цель, %</translation>
+        <translation>Изм. − расч. цель, %</translation>
     </message>
     <message>
         <source>Within the threshold</source>

@@ -33,6 +33,7 @@ ReportsPage::ReportsPage(AppContext& context, QWidget* parent)
       m_progress(new QProgressBar(this)),
       m_cancel(new QPushButton(this)),
       m_status(new QLabel(this)),
+      m_statusText(m_status),
       m_stack(new QStackedWidget(this)),
       m_empty(new EmptyState(this)),
       m_views(new ReportViews(this)) {
@@ -87,6 +88,7 @@ void ReportsPage::retranslate() {
     m_csv->setText(tr("CSV…"));
     m_dfq->setText(tr("DFQ…"));
     m_cancel->setText(tr("Cancel"));
+    m_statusText.retranslate();
     if (m_stack->currentWidget() == m_empty) showEmpty();
 }
 
@@ -147,39 +149,39 @@ void ReportsPage::analyse() {
     try {
         settings = m_filter->settings();
     } catch (const std::invalid_argument& e) {
-        m_status->setText(QString::fromStdString(e.what()));
+        m_statusText.setFixed(QString::fromStdString(e.what()));
         return;
     }
     m_analysedOnce = true;
-    m_status->setText(tr("Reading the history…"));
+    m_statusText.set([] { return tr("Reading the history…"); });
     setBusy(true);
     try {
         m_task.analyse(context().data().config(), m_filter->filter(), settings);
     } catch (const std::exception& e) {
         setBusy(false);
-        m_status->setText(QString::fromStdString(e.what()));
+        m_statusText.setFixed(QString::fromStdString(e.what()));
         emit analysed();
     }
 }
 
 void ReportsPage::finished(const runtime::ReportTaskResult& result, bool cancelled) {
     if (cancelled) {
-        m_status->setText(tr("Cancelled."));
+        m_statusText.set([] { return tr("Cancelled."); });
     } else if (!result.error.isEmpty()) {
-        m_status->setText(result.error);
+        m_statusText.setFixed(result.error);
     } else if (!result.writtenFile.isEmpty()) {
-        m_status->setText(tr("Written: %1").arg(result.writtenFile));
+        m_statusText.set([file = result.writtenFile] { return tr("Written: %1").arg(file); });
     } else if (result.points.empty()) {
         m_problem.clear();
         m_views->show({}, {});
         showEmpty();
-        m_status->setText(tr("No measured parts for this choice."));
+        m_statusText.set([] { return tr("No measured parts for this choice."); });
     } else {
         const std::size_t rows = result.rows.size();
         m_runs = result.runs;
         m_views->show(result.rows, result.points, result.adaptationsError);
         m_stack->setCurrentWidget(m_views);
-        m_status->setText(tr("%n readings", nullptr, static_cast<int>(rows)));
+        m_statusText.set([rows] { return tr("%n readings", nullptr, static_cast<int>(rows)); });
     }
     setBusy(false);
     if (m_exportRunning) {
@@ -215,7 +217,7 @@ bool ReportsPage::exportPdf(const QString& path) {
     m_exportingPdf = true;
     m_cancelPdf = false;
     setBusy(true);
-    m_status->setText(tr("Writing the PDF…"));
+    m_statusText.set([] { return tr("Writing the PDF…"); });
     bool written = false;
     try {
         reports::ReportPdf::write(
@@ -225,12 +227,12 @@ bool ReportsPage::exportPdf(const QString& path) {
                 QCoreApplication::processEvents();
                 return !m_cancelPdf;
             });
-        m_status->setText(tr("Written: %1").arg(path));
+        m_statusText.set([path] { return tr("Written: %1").arg(path); });
         written = true;
     } catch (const runtime::ReportCancelled&) {
-        m_status->setText(tr("Cancelled."));
+        m_statusText.set([] { return tr("Cancelled."); });
     } catch (const std::exception& e) {
-        m_status->setText(QString::fromStdString(e.what()));
+        m_statusText.setFixed(QString::fromStdString(e.what()));
     }
     m_exportingPdf = false;
     setBusy(false);
@@ -241,7 +243,7 @@ void ReportsPage::exportFile(const QString& path, bool dfq) {
     if (busy() || m_views->rows().empty()) return;
     m_exportRunning = true;
     setBusy(true);
-    m_status->setText(dfq ? tr("Writing the DFQ file…") : tr("Writing the CSV file…"));
+    m_statusText.set([dfq] { return dfq ? tr("Writing the DFQ file…") : tr("Writing the CSV file…"); });
     m_task.writeFile(m_views->rows(), path, dfq);
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 
-#include "ui/page.h"
 #include "runtime/reports/report_task.h"
+#include "ui/page.h"
+#include "ui/status_text.h"
 
 class QLabel;
 class QProgressBar;
@@ -76,6 +77,7 @@ private:
     QProgressBar* m_progress;
     QPushButton* m_cancel;
     QLabel* m_status;
+    StatusText m_statusText;  ///< m_status's text, made again when the language changes
     QStackedWidget* m_stack;
     EmptyState* m_empty;
     ReportViews* m_views;

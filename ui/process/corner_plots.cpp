@@ -149,7 +149,7 @@ void showDrift(plot::Chart& chart, const core::CornerWorkResult& run, double thr
                     retrainY, kWithout, plot::Chart::Style::Points);
     chart.setSeries(QStringLiteral("refused"), QCoreApplication::translate("CornerPlots", "Retraining refused"),
                     refusedX, refusedY, kBand, plot::Chart::Style::Points);
-    chart.setLegendBelow(4);
+    chart.setLegendBelow(2);  // two rows: the Russian names do not fit in one
     chart.rescale(true);
     chart.setYRange(-3.0 * t, 3.0 * t);
     chart.refresh();

@@ -59,6 +59,7 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_simulate(new QPushButton(this)),
       m_summary(new QLabel(this)),
       m_status(wrapped(this)),
+      m_statusText(m_status),
       m_progress(new QProgressBar(this)),
       m_cancel(new QPushButton(this)),
       m_views(new QTabWidget(this)),
@@ -135,7 +136,7 @@ bool CornerTool::setMachine(const QString& name) {
     m_machine->setCurrentIndex(index);
     m_net.reset();
     m_lastRun.reset();
-    m_lastStatus.clear();
+    m_statusText.clear();
     m_trainingChart->clear();
     m_driftChart->clear();
     m_trainingMoves->setValue(m_scenario.training.moves);
@@ -258,7 +259,7 @@ void CornerTool::buildLayout() {
     m_machine->addItem(QString(), QStringLiteral("1v340-soft-drives"));
     auto* machineBox = new QWidget(this);
     auto* machineRow = new QHBoxLayout(machineBox);
-    machineRow->setContentsMargins(8, 0, 4, 2);
+    machineRow->setContentsMargins(8, 0, 4, 0);
     machineRow->addWidget(m_machineLabel);
     machineRow->addWidget(m_machine);
     auto* left = new QVBoxLayout;
@@ -278,6 +279,7 @@ void CornerTool::buildLayout() {
     m_views->addTab(buildNetworkView(), QString());
     m_views->addTab(buildDriftView(), QString());
     m_views->setCornerWidget(machineBox, Qt::TopRightCorner);
+    machineBox->setMinimumHeight(machineBox->sizeHint().height());  // the tab bar grows to the whole box
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(leftBox);
@@ -309,7 +311,11 @@ void CornerTool::retranslate() {
     m_cornersLabel->setText(tr("Corners"));
     m_run->setText(tr("Run corners"));
     m_retrain->setText(tr("Retrain now"));
-    if (!m_job->running()) m_status->setText(m_lastStatus.isEmpty() ? tr("Nothing running.") : m_lastStatus);
+    if (!m_job->running() && !m_statusText.isSet()) m_statusText.set([] { return tr("Nothing running."); });
+    if (!m_job->running()) m_statusText.retranslate();
+    if (m_lastRun)
+        corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
+                                m_scenario.retraining.monitor.windowCorners);
     showNetworkText();
     showDriftText();
     simulate();
@@ -373,7 +379,7 @@ bool CornerTool::train() {
         const core::AxisPulseSummary best = core::summarisePulses(scenario.pulse.axis, (*result)->examples);
         m_net = CornerNetState{
             (*result)->net, scenario.pulse, core::toNetSamples((*result)->examples), {}, best.reductionPct};
-        m_lastStatus = tr("Network trained.");
+        m_statusText.set([] { return tr("Network trained."); });
         const core::NetTrainingRecord& r = m_net->net.record();
         corner_plots::showTraining(*m_trainingChart, r.trainingLoss, r.validationLoss,
                                    m_net->net.normalisation().outputScale);
@@ -420,7 +426,7 @@ bool CornerTool::runCorners() {
         m_net->net = *net;
         m_net->model = m_lastRun->model;
         m_net->samples = m_lastRun->samples;
-        m_lastStatus = tr("Run finished.");
+        m_statusText.set([] { return tr("Run finished."); });
         corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
                                 m_scenario.retraining.monitor.windowCorners);
         showDriftText();
@@ -447,11 +453,13 @@ bool CornerTool::retrainNow() {
     const int move = static_cast<int>(m_lastRun->moves.size()) - 1;
     m_apply = [this, state, event] {
         m_net = *state;
-        m_lastStatus = event->verdict.accepted
-                           ? tr("Retrained on demand on %n corner(s); identified %1.", nullptr, event->corners)
-                                 .arg(factorsText(event->identified.factors))
-                           : tr("Retraining on demand refused: %1. The network in use is kept.")
-                                 .arg(QString::fromStdString(event->verdict.failure));
+        m_statusText.set([this, event] {
+            return event->verdict.accepted
+                       ? tr("Retrained on demand on %n corner(s); identified %1.", nullptr, event->corners)
+                             .arg(factorsText(event->identified.factors))
+                       : tr("Retraining on demand refused: %1. The network in use is kept.")
+                             .arg(QString::fromStdString(event->verdict.failure));
+        });
         showNetworkText();
         simulate();
     };
@@ -495,13 +503,13 @@ void CornerTool::showProgress(const QString& stage, int done, int total) {
 
 void CornerTool::finishJob(bool cancelled, const QString& error) {
     if (cancelled)
-        m_lastStatus = tr("Cancelled: the network of before is kept.");
+        m_statusText.set([] { return tr("Cancelled: the network of before is kept."); });
     else if (!error.isEmpty())
-        m_lastStatus = tr("Failed: %1").arg(error);
+        m_statusText.set([error] { return tr("Failed: %1").arg(error); });
     else if (m_apply)
         m_apply();
     m_apply = nullptr;
-    m_status->setText(m_lastStatus);
+    m_statusText.retranslate();
     m_progress->setRange(0, 1);
     m_progress->setValue(cancelled || !error.isEmpty() ? 0 : 1);
     updateEnabled();

@@ -10,6 +10,7 @@
 #include "core/sim/feed_drives/corner_work_run.h"
 #include "ui/app_context.h"
 #include "ui/process/process_tool.h"
+#include "ui/status_text.h"
 
 class QCheckBox;
 class QComboBox;
@@ -132,7 +133,6 @@ private:
     std::optional<core::CornerWorkResult> m_lastRun;
     std::shared_ptr<LiveCurve> m_curve;
     std::function<void()> m_apply;  ///< takes the finished job's result (GUI thread)
-    QString m_lastStatus;
     CornerJob* m_job;
 
     QLabel* m_machineLabel;
@@ -141,6 +141,7 @@ private:
     QPushButton* m_simulate;
     QLabel* m_summary;
     QLabel* m_status;
+    StatusText m_statusText;  ///< the last job's outcome on m_status, made again when the language changes
     QProgressBar* m_progress;
     QPushButton* m_cancel;
     QTabWidget* m_views;

@@ -219,6 +219,7 @@ TEST_F(CornerToolTest, OnTheSoftDrivesAnInertiaDriftOfTheCrossSlideIsFoundAndRet
     ASSERT_TRUE(language.apply(QStringLiteral("ru")));
     tool.retranslate();
     EXPECT_EQ(tool.machineBox()->currentText(), QStringLiteral("Мягкие приводы"));
+    EXPECT_EQ(tool.statusLabel()->text(), QStringLiteral("Прогон закончен."));  // the last job's outcome too
     EXPECT_LE(tool.minimumSizeHint().width(), kWidth);
     const QTabBar* tabs = tool.views()->findChild<QTabBar*>();
     ASSERT_NE(tabs, nullptr);

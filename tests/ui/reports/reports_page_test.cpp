@@ -317,6 +317,22 @@ TEST_F(ReportsPageTest, CancelledPdfExportLeavesNoFile) {
     EXPECT_TRUE(QFile::exists(pdf));
 }
 
+TEST_F(ReportsPageTest, TheStatusLineFollowsALanguageSwitch) {
+    MainWindow window(context);
+    ReportsPage* page = showReports(window);
+    ASSERT_NE(page, nullptr);
+    const QString pdf = dir.filePath(QStringLiteral("report.pdf"));
+    ASSERT_TRUE(page->exportPdf(pdf));
+    EXPECT_EQ(page->status()->text().toStdString(), (QStringLiteral("Written: ") + pdf).toStdString());
+    // Before, the line kept the language the work ended in.
+    ASSERT_TRUE(language.apply(QStringLiteral("ru")));
+    QApplication::processEvents();
+    EXPECT_EQ(page->status()->text().toStdString(), (QStringLiteral("Записано: ") + pdf).toStdString());
+    ASSERT_TRUE(language.apply(QStringLiteral("en")));
+    QApplication::processEvents();
+    EXPECT_EQ(page->status()->text().toStdString(), (QStringLiteral("Written: ") + pdf).toStdString());
+}
+
 TEST_F(ReportsPageTest, RussianShowsNoEnglish) {
     ASSERT_TRUE(language.apply(QStringLiteral("ru")));
     MainWindow window(context);
