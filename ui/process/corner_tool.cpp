@@ -311,11 +311,12 @@ void CornerTool::retranslate() {
     m_cornersLabel->setText(tr("Corners"));
     m_run->setText(tr("Run corners"));
     m_retrain->setText(tr("Retrain now"));
-    if (!m_job->running() && !m_statusText.isSet()) m_statusText.set([] { return tr("Nothing running."); });
-    if (!m_job->running()) m_statusText.retranslate();
-    if (m_lastRun)
-        corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
-                                m_scenario.retraining.monitor.windowCorners);
+    if (!m_job->running()) {
+        if (!m_statusText.isSet()) m_statusText.set([] { return tr("Nothing running."); });
+        m_statusText.retranslate();
+        showTrainingChart();  // while training, the live curve is drawn at each epoch
+    }
+    showDriftChart();
     showNetworkText();
     showDriftText();
     simulate();
@@ -380,9 +381,7 @@ bool CornerTool::train() {
         m_net = CornerNetState{
             (*result)->net, scenario.pulse, core::toNetSamples((*result)->examples), {}, best.reductionPct};
         m_statusText.set([] { return tr("Network trained."); });
-        const core::NetTrainingRecord& r = m_net->net.record();
-        corner_plots::showTraining(*m_trainingChart, r.trainingLoss, r.validationLoss,
-                                   m_net->net.normalisation().outputScale);
+        showTrainingChart();
         showNetworkText();
         simulate();
     };
@@ -427,8 +426,8 @@ bool CornerTool::runCorners() {
         m_net->model = m_lastRun->model;
         m_net->samples = m_lastRun->samples;
         m_statusText.set([] { return tr("Run finished."); });
-        corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
-                                m_scenario.retraining.monitor.windowCorners);
+        showDriftChart();
+        showTrainingChart();  // a retraining replaced the curve with its own
         showDriftText();
         showNetworkText();
         simulate();
@@ -460,6 +459,7 @@ bool CornerTool::retrainNow() {
                        : tr("Retraining on demand refused: %1. The network in use is kept.")
                              .arg(QString::fromStdString(event->verdict.failure));
         });
+        showTrainingChart();
         showNetworkText();
         simulate();
     };
@@ -530,6 +530,19 @@ void CornerTool::updateEnabled() {
     m_driftFactor->setEnabled(idle);
     m_corners->setEnabled(idle);
     m_cancel->setEnabled(!idle);
+}
+
+void CornerTool::showTrainingChart() {
+    if (!m_net) return;
+    const core::NetTrainingRecord& r = m_net->net.record();
+    corner_plots::showTraining(*m_trainingChart, r.trainingLoss, r.validationLoss,
+                               m_net->net.normalisation().outputScale);
+}
+
+void CornerTool::showDriftChart() {
+    if (!m_lastRun) return;
+    corner_plots::showDrift(*m_driftChart, *m_lastRun, m_scenario.retraining.monitor.thresholdFraction,
+                            m_scenario.retraining.monitor.windowCorners);
 }
 
 void CornerTool::showNetworkText() {

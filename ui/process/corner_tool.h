@@ -121,6 +121,8 @@ private:
     void updateEnabled();
     void showProgress(const QString& stage, int done, int total);
     void finishJob(bool cancelled, const QString& error);
+    void showTrainingChart();  ///< the network's own training curve (a retraining's after one)
+    void showDriftChart();     ///< the last run's monitor
     void showNetworkText();
     void showDriftText();
     QString retrainText(const core::CornerRetrainEvent& event) const;

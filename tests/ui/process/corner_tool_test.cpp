@@ -156,6 +156,8 @@ TEST_F(CornerToolTest, ARunWhoseZVelocityGainDriftsShowsTheDriftMonitorAndRetrai
     EXPECT_EQ(tool.network()->net.record().retrainings, accepted);  // a refused network never replaced it
     EXPECT_EQ(tool.driftChart()->pointCount(QStringLiteral("retrained")), accepted);
     EXPECT_NEAR(tool.network()->model.z.velocityGain, 1.5, 0.02);  // the controller's model knows it now
+    // The Network tab shows the curve of the network in use: the last accepted retraining's.
+    EXPECT_EQ(tool.trainingChart()->pointCount(QStringLiteral("training")), tool.network()->net.record().epochs);
     EXPECT_TRUE(test::saveScreenshot(tool, QStringLiteral("corner_4_drift_monitor")));
     // Retraining on demand on the corners recorded since: taken or refused, the tool says which.
     ASSERT_TRUE(tool.retrainButton()->isEnabled());
