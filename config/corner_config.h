@@ -34,5 +34,7 @@ core::CornerScenario loadCornerScenario(const QString& nameOrPath);
 
 /// The built-in corrective-pulse preset.
 inline const QString kDefaultCornerPreset = QStringLiteral("1v340-feed-drives");
+/// The same lathe with soft drives, where the inertia moves the best pulse (docs/DECISIONS.md, "Drift kinds").
+inline const QString kSoftDrivesCornerPreset = QStringLiteral("1v340-soft-drives");
 
 }  // namespace tt::config

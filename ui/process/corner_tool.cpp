@@ -84,7 +84,11 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_driftText(wrapped(this)),
       m_driftChart(new plot::Chart(this)) {
     (void)context;  // the tool needs no device and no history: it works on the simulator
-    loadScenario(config::kDefaultCornerPreset);
+    try {
+        m_scenario = config::loadCornerScenario(config::kDefaultCornerPreset);
+    } catch (const std::exception& e) {
+        m_scenarioProblem = QString::fromStdString(e.what());
+    }
     buildLayout();
     m_editor->setPulse(m_scenario.pulse);
     m_editor->setSamples(
@@ -109,30 +113,22 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
 
 CornerTool::~CornerTool() = default;
 
-void CornerTool::loadScenario(const QString& name) {
-    try {
-        m_scenario = config::loadCornerScenario(name);
-        m_scenarioProblem.clear();
-    } catch (const std::exception& e) {
-        m_scenarioProblem = QString::fromStdString(e.what());
-    }
-}
-
 bool CornerTool::setMachine(const QString& name) {
     const int index = m_machine->findData(name);
-    if (busy() || index < 0) {
+    std::optional<core::CornerScenario> scenario;
+    if (!busy() && index >= 0) {
+        try {
+            scenario = config::loadCornerScenario(name);
+        } catch (const std::exception& e) {
+            m_summary->setText(tr("The corner preset cannot be read: %1").arg(QString::fromStdString(e.what())));
+        }
+    }
+    if (!scenario) {  // the machine of before stays
         m_machine->setCurrentIndex(m_machine->findData(QString::fromStdString(m_scenario.name)));
         return false;
     }
-    const core::CornerScenario before = m_scenario;
-    loadScenario(name);
-    if (!m_scenarioProblem.isEmpty()) {
-        m_scenario = before;
-        m_machine->setCurrentIndex(m_machine->findData(QString::fromStdString(before.name)));
-        m_summary->setText(tr("The corner preset cannot be read: %1").arg(m_scenarioProblem));
-        m_scenarioProblem.clear();
-        return false;
-    }
+    m_scenario = std::move(*scenario);
+    m_scenarioProblem.clear();
     m_machine->setCurrentIndex(index);
     m_net.reset();
     m_lastRun.reset();
@@ -255,8 +251,8 @@ void CornerTool::buildLayout() {
     jobRow->addWidget(m_cancel);
     m_machine->setObjectName(QStringLiteral("cornerMachine"));
     m_machine->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    m_machine->addItem(QString(), QStringLiteral("1v340-feed-drives"));
-    m_machine->addItem(QString(), QStringLiteral("1v340-soft-drives"));
+    m_machine->addItem(QString(), config::kDefaultCornerPreset);
+    m_machine->addItem(QString(), config::kSoftDrivesCornerPreset);
     auto* machineBox = new QWidget(this);
     auto* machineRow = new QHBoxLayout(machineBox);
     machineRow->setContentsMargins(8, 0, 4, 0);

@@ -117,7 +117,6 @@ private:
     QWidget* buildNetworkView();
     QWidget* buildDriftView();
     void buildLayout();
-    void loadScenario(const QString& name);
     void updateEnabled();
     void showProgress(const QString& stage, int done, int total);
     void finishJob(bool cancelled, const QString& error);
