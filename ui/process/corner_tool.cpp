@@ -40,6 +40,16 @@ bool nominalFactors(const core::FeedDrivesFactors& f) {
     return true;
 }
 
+/// The corner preset `name`; one that cannot be read gives the engine's defaults and says why in `problem`.
+core::CornerScenario readScenario(const QString& name, QString& problem) {
+    try {
+        return config::loadCornerScenario(name);
+    } catch (const std::exception& e) {
+        problem = QString::fromStdString(e.what());
+        return {};
+    }
+}
+
 QLabel* wrapped(QWidget* parent) {
     auto* label = new QLabel(parent);
     label->setWordWrap(true);
@@ -84,11 +94,7 @@ CornerTool::CornerTool(AppContext& context, QWidget* parent)
       m_driftText(wrapped(this)),
       m_driftChart(new plot::Chart(this)) {
     (void)context;  // the tool needs no device and no history: it works on the simulator
-    try {
-        m_scenario = config::loadCornerScenario(config::kDefaultCornerPreset);
-    } catch (const std::exception& e) {
-        m_scenarioProblem = QString::fromStdString(e.what());
-    }
+    m_scenario = readScenario(config::kDefaultCornerPreset, m_scenarioProblem);
     buildLayout();
     m_editor->setPulse(m_scenario.pulse);
     m_editor->setSamples(
